@@ -1,0 +1,42 @@
+#pragma once
+#include <cstdint>
+
+namespace glrenderer {
+
+// The ten glBegin modes, in GL's enum order (GL_POINTS = 0 ... GL_POLYGON = 9).
+enum class PrimitiveMode : std::uint8_t {
+    Points, Lines, LineLoop, LineStrip, Triangles, TriangleStrip, TriangleFan, Quads, QuadStrip,
+    Polygon
+};
+inline constexpr int kPrimitiveModeCount = 10;
+
+enum class Face : std::uint8_t { Front, Back, FrontAndBack };
+enum class CompareFunc : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual,
+                                        GreaterEqual, Always };
+enum class ShadeModel : std::uint8_t { Flat, Smooth };
+enum class PolygonMode : std::uint8_t { Point, Line, Fill };
+
+struct Viewport {
+    int x = 0, y = 0, width = 0, height = 0;
+    bool operator==(const Viewport&) const = default;
+};
+
+// Everything the pipeline needs to know about GL state for one draw. Plain values, no GL enums.
+struct DrawState {
+    bool cullEnabled = false;
+    Face cullFace = Face::Back;
+    bool frontFaceCCW = true;
+    bool depthTest = false;
+    CompareFunc depthFunc = CompareFunc::Less;
+    bool depthWrite = true;
+    ShadeModel shadeModel = ShadeModel::Smooth;
+    PolygonMode polygonFront = PolygonMode::Fill;
+    PolygonMode polygonBack = PolygonMode::Fill;
+    Viewport viewport;
+    float depthNear = 0.0f, depthFar = 1.0f;
+    float lineWidth = 1.0f;
+    float pointSize = 1.0f;
+    bool operator==(const DrawState&) const = default;
+};
+
+}  // namespace glrenderer

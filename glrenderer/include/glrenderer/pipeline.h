@@ -1,0 +1,42 @@
+#pragma once
+#include <span>
+#include <vector>
+
+#include "glrenderer/draw_state.h"
+#include "glrenderer/framebuffer.h"
+#include "glrenderer/stats.h"
+#include "glrenderer/vertex.h"
+
+namespace glrenderer {
+
+// Turns primitives in clip space into pixels of a Framebuffer.
+//
+// Consecutive submissions of the same mergeable mode (points, lines, triangles, quads) form one
+// batch until endBatch(), as the reference's vertex buffer merges glBegin/glEnd blocks: whether
+// any vertex of the batch needs clipping decides how quads are split, so the batch matters.
+// Pixels are only promised after finish().
+class Pipeline {
+public:
+    explicit Pipeline(Framebuffer& framebuffer);
+
+    void submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
+    void endBatch();
+    void finish();
+
+    // Clears with colors/depth already converted by the caller's rules (see color_convert.h).
+    void clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);
+
+    const Stats& stats() const { return stats_; }
+    void resetStats() { stats_ = {}; }
+
+private:
+    void drawBatch();
+
+    Framebuffer& framebuffer_;
+    Stats stats_;
+    DrawState batchState_;
+    PrimitiveMode batchMode_ = PrimitiveMode::Points;
+    std::vector<Vertex> batch_;
+};
+
+}  // namespace glrenderer
