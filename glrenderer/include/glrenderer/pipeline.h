@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -9,6 +10,10 @@
 
 namespace glrenderer {
 
+struct TriangleIndices;
+struct WindowVertex;
+class ViewportTransform;
+
 // Turns primitives in clip space into pixels of a Framebuffer.
 //
 // Consecutive submissions of the same mergeable mode (points, lines, triangles, quads) form one
@@ -18,6 +23,9 @@ namespace glrenderer {
 class Pipeline {
 public:
     explicit Pipeline(Framebuffer& framebuffer);
+    ~Pipeline();
+    Pipeline(const Pipeline&) = delete;
+    Pipeline& operator=(const Pipeline&) = delete;
 
     void submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
     void endBatch();
@@ -31,12 +39,16 @@ public:
 
 private:
     void drawBatch();
+    void drawTriangle(const TriangleIndices& triangle, const ViewportTransform& viewport);
 
     Framebuffer& framebuffer_;
     Stats stats_;
     DrawState batchState_;
     PrimitiveMode batchMode_ = PrimitiveMode::Points;
     std::vector<Vertex> batch_;
+    // Per batch vertex: which clip planes it is outside of, and its window position.
+    std::vector<std::uint8_t> outcodes_;
+    std::vector<WindowVertex> windowVertices_;
 };
 
 }  // namespace glrenderer

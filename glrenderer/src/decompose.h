@@ -1,0 +1,72 @@
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "glrenderer/draw_state.h"
+
+namespace glrenderer {
+
+// The reference splits quads differently depending on whether the draw goes straight to the
+// rasterizer or through its clipping/unfilled "draw module" stages.
+enum class DecompositionPath { Direct, DrawModule };
+
+// Indices of one triangle into the primitive's vertices. The provoking vertex (the one whose
+// color a flat-shaded triangle takes) is always the last, v[2], as in the reference.
+struct TriangleIndices {
+    std::uint32_t v[3];
+};
+
+// Vertices a mode needs for its first primitive and per further primitive, and the usable count
+// (incomplete trailing primitives dropped, as glEnd does). 0 when nothing can be drawn.
+std::size_t usableVertexCount(PrimitiveMode mode, std::size_t count);
+
+bool isTriangleMode(PrimitiveMode mode);
+
+// Calls emit(TriangleIndices) for each triangle of a triangle-type mode, in the reference's order.
+template <class Emit>
+void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPath path,
+                        ShadeModel shade, Emit&& emit) {
+    switch (mode) {
+    case PrimitiveMode::Triangles:
+        for (std::uint32_t i = 0; i + 2 < count; i += 3) emit(TriangleIndices{{i, i + 1, i + 2}});
+        break;
+    case PrimitiveMode::TriangleStrip:
+        for (std::uint32_t i = 0; i + 2 < count; ++i) {
+            if (i % 2 == 0) emit(TriangleIndices{{i, i + 1, i + 2}});
+            else emit(TriangleIndices{{i + 1, i, i + 2}});
+        }
+        break;
+    case PrimitiveMode::TriangleFan:
+        for (std::uint32_t i = 1; i + 1 < count; ++i) emit(TriangleIndices{{0, i, i + 1}});
+        break;
+    case PrimitiveMode::Quads: {
+        // The direct path keeps the v0-v2 diagonal for smooth quads; flat quads and the draw
+        // module use the v1-v3 diagonal so that both triangles end on the provoking v3.
+        const bool v0v2Diagonal = path == DecompositionPath::Direct && shade == ShadeModel::Smooth;
+        for (std::uint32_t i = 0; i + 3 < count; i += 4) {
+            if (v0v2Diagonal) {
+                emit(TriangleIndices{{i, i + 1, i + 2}});
+                emit(TriangleIndices{{i, i + 2, i + 3}});
+            } else {
+                emit(TriangleIndices{{i, i + 1, i + 3}});
+                emit(TriangleIndices{{i + 1, i + 2, i + 3}});
+            }
+        }
+        break;
+    }
+    case PrimitiveMode::QuadStrip:
+        for (std::uint32_t i = 0; i + 3 < count; i += 2) {
+            emit(TriangleIndices{{i, i + 1, i + 3}});
+            emit(TriangleIndices{{i + 2, i, i + 3}});
+        }
+        break;
+    case PrimitiveMode::Polygon:
+        // A fan around v0 with v0 last: polygons take their flat color from the first vertex.
+        for (std::uint32_t i = 1; i + 1 < count; ++i) emit(TriangleIndices{{i, i + 1, 0}});
+        break;
+    default:
+        break;
+    }
+}
+
+}  // namespace glrenderer

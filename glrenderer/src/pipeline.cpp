@@ -1,0 +1,145 @@
+#include "glrenderer/pipeline.h"
+
+#include <cmath>
+
+#include "clip.h"
+#include "decompose.h"
+#include "raster_triangle.h"
+#include "window_vertex.h"
+
+namespace glrenderer {
+namespace {
+
+// Modes whose consecutive glBegin/glEnd blocks the reference merges into one draw.
+bool isMergeable(PrimitiveMode mode) {
+    return mode == PrimitiveMode::Points || mode == PrimitiveMode::Lines ||
+           mode == PrimitiveMode::Triangles || mode == PrimitiveMode::Quads;
+}
+
+// Window coordinates beyond this are only reachable through degenerate w; such triangles are
+// dropped rather than fed to the fixed-point conversion.
+constexpr float kMaxWindowCoordinate = 1 << 24;
+
+bool isUsable(const WindowVertex& v) {
+    return std::fabs(v.x) < kMaxWindowCoordinate && std::fabs(v.y) < kMaxWindowCoordinate &&
+           std::isfinite(v.z) && std::isfinite(v.invW) && std::isfinite(v.color.r) &&
+           std::isfinite(v.color.g) && std::isfinite(v.color.b) && std::isfinite(v.color.a);
+}
+
+bool isCulled(const DrawState& state, Facing facing) {
+    if (!state.cullEnabled) return false;
+    switch (state.cullFace) {
+    case Face::Front: return facing == Facing::Front;
+    case Face::Back: return facing == Facing::Back;
+    case Face::FrontAndBack: return true;
+    }
+    return false;
+}
+
+// Snaps, culls by the fixed-point area and rasterizes one triangle in window coordinates.
+void setupAndRasterize(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                       const glm::vec4& flatColor, const DrawState& state, Framebuffer& framebuffer,
+                       Stats& stats) {
+    if (!isUsable(v0) || !isUsable(v1) || !isUsable(v2)) {
+        ++stats.clippedAway;
+        return;
+    }
+    SetupTriangle triangle{{v0, v1, v2}, {snap(v0), snap(v1), snap(v2)}, 0, flatColor};
+    triangle.area = fixedArea(triangle.fixed[0], triangle.fixed[1], triangle.fixed[2]);
+    const Facing facing = facingOf(triangle.area, state.frontFaceCCW);
+    if (facing == Facing::ZeroArea) {
+        ++stats.culledZeroArea;
+        return;
+    }
+    if (isCulled(state, facing)) {
+        ++(facing == Facing::Front ? stats.culledFront : stats.culledBack);
+        return;
+    }
+    ++stats.rasterized;
+    rasterizeTriangleExact(triangle, state, framebuffer, stats);
+}
+
+}  // namespace
+
+Pipeline::Pipeline(Framebuffer& framebuffer) : framebuffer_(framebuffer) {}
+Pipeline::~Pipeline() = default;
+
+void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
+    stats_.vertices += vertices.size();
+    ++stats_.primitivesByMode[static_cast<std::size_t>(mode)];
+    const std::size_t usable = usableVertexCount(mode, vertices.size());
+    if (usable == 0) return;
+    if (!batch_.empty() && (mode != batchMode_ || !isMergeable(mode) || !(state == batchState_))) {
+        endBatch();
+    }
+    batchState_ = state;
+    batchMode_ = mode;
+    batch_.insert(batch_.end(), vertices.begin(), vertices.begin() + static_cast<std::ptrdiff_t>(usable));
+    if (!isMergeable(mode)) endBatch();
+}
+
+void Pipeline::endBatch() {
+    if (batch_.empty()) return;
+    drawBatch();
+    batch_.clear();
+}
+
+void Pipeline::finish() { endBatch(); }
+
+void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
+    endBatch();
+    if (color) framebuffer_.clearColor(rgba);
+    if (depth) framebuffer_.clearDepth(depth24);
+}
+
+void Pipeline::drawBatch() {
+    if (!isTriangleMode(batchMode_)) return;  // points and lines: see issue 3
+    const DrawState& state = batchState_;
+    const ViewportTransform viewport(state, framebuffer_.height());
+
+    outcodes_.resize(batch_.size());
+    windowVertices_.resize(batch_.size());
+    std::uint8_t anyOutside = 0;
+    for (std::size_t i = 0; i < batch_.size(); ++i) {
+        outcodes_[i] = clipOutcode(batch_[i].position);
+        anyOutside |= outcodes_[i];
+        windowVertices_[i] = viewport.apply(batch_[i]);
+    }
+    const bool filled = state.polygonFront == PolygonMode::Fill && state.polygonBack == PolygonMode::Fill;
+    const DecompositionPath path =
+        anyOutside == 0 && filled ? DecompositionPath::Direct : DecompositionPath::DrawModule;
+
+    decomposeTriangles(batchMode_, static_cast<std::uint32_t>(batch_.size()), path, state.shadeModel,
+                       [&](const TriangleIndices& t) { drawTriangle(t, viewport); });
+}
+
+void Pipeline::drawTriangle(const TriangleIndices& t, const ViewportTransform& viewport) {
+    const DrawState& state = batchState_;
+    ++stats_.triangles;
+    const glm::vec4& flatColor = batch_[t.v[2]].color;
+    const std::uint8_t outsideAny = outcodes_[t.v[0]] | outcodes_[t.v[1]] | outcodes_[t.v[2]];
+    if (outsideAny == 0) {
+        setupAndRasterize(windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]],
+                          flatColor, state, framebuffer_, stats_);
+        return;
+    }
+    if (outcodes_[t.v[0]] & outcodes_[t.v[1]] & outcodes_[t.v[2]]) {
+        ++stats_.clippedAway;
+        return;
+    }
+    const ClippedPolygon polygon = clipTriangle(batch_[t.v[0]], batch_[t.v[1]], batch_[t.v[2]], outsideAny);
+    if (polygon.count < 3) {
+        ++stats_.clippedAway;
+        return;
+    }
+    stats_.clipCreated += static_cast<std::uint64_t>(polygon.count - 3);
+    const WindowVertex first = viewport.apply(polygon.vertices[0]);
+    WindowVertex previous = viewport.apply(polygon.vertices[1]);
+    for (int i = 2; i < polygon.count; ++i) {
+        const WindowVertex current = viewport.apply(polygon.vertices[static_cast<std::size_t>(i)]);
+        setupAndRasterize(previous, current, first, flatColor, state, framebuffer_, stats_);
+        previous = current;
+    }
+}
+
+}  // namespace glrenderer

@@ -1,0 +1,58 @@
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+#include "window_vertex.h"
+
+namespace glrenderer {
+
+// Sub-pixel precision of the reference (GL_SUBPIXEL_BITS = 8).
+inline constexpr int kSubpixelBits = 8;
+inline constexpr float kSubpixelScale = 256.0f;
+
+// A position snapped to 1/256 pixel with pixel centers on whole numbers, computed as the
+// reference computes it: float((v - 0.5) * 256) rounded to nearest, ties to even.
+struct FixedPoint {
+    std::int64_t x, y;
+};
+
+inline std::int64_t snapToFixed(float windowCoordinate) {
+    return static_cast<std::int64_t>(std::nearbyint((windowCoordinate - 0.5f) * kSubpixelScale));
+}
+
+inline FixedPoint snap(const WindowVertex& v) { return {snapToFixed(v.x), snapToFixed(v.y)}; }
+
+// Twice the signed area of the snapped triangle in internal (y-down) coordinates. Negative means
+// counter-clockwise as seen in GL window coordinates (y up).
+inline std::int64_t fixedArea(const FixedPoint& a, const FixedPoint& b, const FixedPoint& c) {
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+enum class Facing { Front, Back, ZeroArea };
+
+inline Facing facingOf(std::int64_t area, bool frontFaceCCW) {
+    if (area == 0) return Facing::ZeroArea;
+    const bool counterClockwise = area < 0;
+    return counterClockwise == frontFaceCCW ? Facing::Front : Facing::Back;
+}
+
+// A linear function of the pixel position, a(x, y) = a0 + dadx * x + dady * y, evaluated at the
+// pixel's integer coordinates (a0 already holds the half-pixel offset) with the reference's fma.
+struct AttributePlane {
+    float a0 = 0, dadx = 0, dady = 0;
+    float at(float x, float y) const { return std::fma(dady, y, std::fma(dadx, x, a0)); }
+};
+
+// Builds planes through three vertices from their unsnapped window positions, with the
+// reference's order of float operations (the planes are anchored at v0).
+class PlaneBuilder {
+public:
+    PlaneBuilder(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2);
+    AttributePlane plane(float a0, float a1, float a2) const;
+
+private:
+    float dx01_, dy01_, dx20_, dy20_, oneOverArea_;
+    float x0Center_, y0Center_;
+};
+
+}  // namespace glrenderer

@@ -1,0 +1,30 @@
+#include "window_vertex.h"
+
+namespace glrenderer {
+
+ViewportTransform::ViewportTransform(const DrawState& state, int framebufferHeight) {
+    const Viewport& vp = state.viewport;
+    const float halfWidth = static_cast<float>(vp.width) * 0.5f;
+    const float halfHeight = static_cast<float>(vp.height) * 0.5f;
+    scaleX_ = halfWidth;
+    translateX_ = halfWidth + static_cast<float>(vp.x);
+    // y flips: internal y = H - y_gl.
+    scaleY_ = -halfHeight;
+    translateY_ = static_cast<float>(framebufferHeight) - (halfHeight + static_cast<float>(vp.y));
+    const float halfDepth = (state.depthFar - state.depthNear) * 0.5f;
+    scaleZ_ = halfDepth;
+    translateZ_ = state.depthNear + halfDepth;
+}
+
+WindowVertex ViewportTransform::apply(const Vertex& vertex) const {
+    const glm::vec4& p = vertex.position;
+    WindowVertex out;
+    out.invW = 1.0f / p.w;
+    out.x = p.x * out.invW * scaleX_ + translateX_;
+    out.y = p.y * out.invW * scaleY_ + translateY_;
+    out.z = p.z * out.invW * scaleZ_ + translateZ_;
+    out.color = vertex.color;
+    return out;
+}
+
+}  // namespace glrenderer

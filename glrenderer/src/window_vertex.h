@@ -1,0 +1,31 @@
+#pragma once
+#include <glm/vec4.hpp>
+
+#include "glrenderer/draw_state.h"
+#include "glrenderer/vertex.h"
+
+namespace glrenderer {
+
+// A vertex after perspective division and the viewport transform, in the reference's internal
+// orientation: y grows downwards from the top row (OSMesa renders y-down and flips on readback).
+struct WindowVertex {
+    float x = 0, y = 0, z = 0;
+    float invW = 1;  // 1 / w_clip, the perspective weight of the attributes
+    glm::vec4 color;
+};
+
+// glViewport and glDepthRange as a scale and an offset per axis, computed in float as the
+// reference computes them, with the y axis flipped into the internal orientation.
+class ViewportTransform {
+public:
+    ViewportTransform(const DrawState& state, int framebufferHeight);
+
+    // x_window = x_clip * (1 / w) * scale + translate, in that order of float operations.
+    WindowVertex apply(const Vertex& vertex) const;
+
+private:
+    float scaleX_, scaleY_, scaleZ_;
+    float translateX_, translateY_, translateZ_;
+};
+
+}  // namespace glrenderer
