@@ -10,4 +10,3 @@ endif()
 # The reference's arithmetic is reproduced operation by operation; the compiler must not fuse
 # a*b+c into one rounding where the reference does two (or the other way round).
 target_compile_options(mygl_build_flags INTERFACE -ffp-contract=off)
-install(TARGETS mygl_build_flags EXPORT myglTargets)
