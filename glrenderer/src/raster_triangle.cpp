@@ -67,7 +67,7 @@ void rasterize(const SetupTriangle& t, const DrawState& state, Framebuffer& fb, 
     if (minX > maxX || minY > maxY) return;
 
     const Planes planes = buildPlanes(t);
-    const std::uint32_t flatColor = packRgba8(t.flatColor);
+    const std::uint32_t flatColor = fragmentRgba8(t.flatColor);
     const auto color = fb.color();
     const auto depth = fb.depth();
     const std::size_t width = static_cast<std::size_t>(fb.width());
@@ -94,7 +94,7 @@ void rasterize(const SetupTriangle& t, const DrawState& state, Framebuffer& fb, 
                         const float w = 1.0f / planes.invW.at(x, y);
                         const glm::vec4 rgba(planes.color[0].at(x, y) * w, planes.color[1].at(x, y) * w,
                                              planes.color[2].at(x, y) * w, planes.color[3].at(x, y) * w);
-                        color[index] = packRgba8(rgba);
+                        color[index] = fragmentRgba8(rgba);
                     } else {
                         color[index] = flatColor;
                     }
