@@ -5,6 +5,7 @@
 #include "clip.h"
 #include "decompose.h"
 #include "raster_triangle.h"
+#include "tile_rasterizer.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -36,10 +37,13 @@ bool isCulled(const DrawState& state, Facing facing) {
     return false;
 }
 
-// Snaps, culls by the fixed-point area and rasterizes one triangle in window coordinates.
-void setupAndRasterize(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                       const glm::vec4& flatColor, const DrawState& state, Framebuffer& framebuffer,
-                       Stats& stats) {
+}  // namespace
+
+// Snaps, culls by the fixed-point area and queues one triangle in window coordinates.
+void Pipeline::setupTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                             const glm::vec4& flatColor) {
+    const DrawState& state = batchState_;
+    Stats& stats = stats_;
     if (!isUsable(v0) || !isUsable(v1) || !isUsable(v2)) {
         ++stats.clippedAway;
         return;
@@ -56,12 +60,14 @@ void setupAndRasterize(const WindowVertex& v0, const WindowVertex& v1, const Win
         return;
     }
     ++stats.rasterized;
-    rasterizeTriangleExact(triangle, state, framebuffer, stats);
+    RasterTriangle prepared;
+    if (prepareTriangle(triangle, state, framebuffer_.width(), framebuffer_.height(), prepared)) {
+        tiles_->add(prepared);
+    }
 }
 
-}  // namespace
-
-Pipeline::Pipeline(Framebuffer& framebuffer) : framebuffer_(framebuffer) {}
+Pipeline::Pipeline(Framebuffer& framebuffer)
+    : framebuffer_(framebuffer), tiles_(std::make_unique<TileRasterizer>(framebuffer)) {}
 Pipeline::~Pipeline() = default;
 
 void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
@@ -84,10 +90,13 @@ void Pipeline::endBatch() {
     batch_.clear();
 }
 
-void Pipeline::finish() { endBatch(); }
+void Pipeline::finish() {
+    endBatch();
+    tiles_->flush(stats_);
+}
 
 void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
-    endBatch();
+    finish();
     if (color) framebuffer_.clearColor(rgba);
     if (depth) framebuffer_.clearDepth(depth24);
 }
@@ -114,13 +123,11 @@ void Pipeline::drawBatch() {
 }
 
 void Pipeline::drawTriangle(const TriangleIndices& t, const ViewportTransform& viewport) {
-    const DrawState& state = batchState_;
     ++stats_.triangles;
     const glm::vec4& flatColor = batch_[t.v[2]].color;
     const std::uint8_t outsideAny = outcodes_[t.v[0]] | outcodes_[t.v[1]] | outcodes_[t.v[2]];
     if (outsideAny == 0) {
-        setupAndRasterize(windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]],
-                          flatColor, state, framebuffer_, stats_);
+        setupTriangle(windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]], flatColor);
         return;
     }
     if (outcodes_[t.v[0]] & outcodes_[t.v[1]] & outcodes_[t.v[2]]) {
@@ -137,7 +144,7 @@ void Pipeline::drawTriangle(const TriangleIndices& t, const ViewportTransform& v
     WindowVertex previous = viewport.apply(polygon.vertices[1]);
     for (int i = 2; i < polygon.count; ++i) {
         const WindowVertex current = viewport.apply(polygon.vertices[static_cast<std::size_t>(i)]);
-        setupAndRasterize(previous, current, first, flatColor, state, framebuffer_, stats_);
+        setupTriangle(previous, current, first, flatColor);
         previous = current;
     }
 }

@@ -5,13 +5,12 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
-#include "glrenderer/stats.h"
 #include "triangle_setup.h"
 
 namespace glrenderer {
 
-// A triangle ready for rasterization: window vertices in the reference's order, their snapped
-// positions and the nonzero fixed-point area. flatColor is used under flat shading.
+// A triangle ready for snapping and rasterization: window vertices in the reference's order,
+// their snapped positions and the nonzero fixed-point area. flatColor is used under flat shading.
 struct SetupTriangle {
     WindowVertex v[3];
     FixedPoint fixed[3];
@@ -19,9 +18,55 @@ struct SetupTriangle {
     glm::vec4 flatColor;
 };
 
-// The exact method: integer edge functions at 1/256 pixel with the reference's fill rule,
-// perspective-correct color, 24-bit depth. Counts fragments into stats.
-void rasterizeTriangleExact(const SetupTriangle& triangle, const DrawState& state,
-                            Framebuffer& framebuffer, Stats& stats);
+// E(p) = (b - a) x (p - a) for a triangle oriented so that its interior is E > 0, at pixel
+// centers (whole numbers in fixed point). A center exactly on the edge belongs to the triangle
+// only if the edge is a left edge, or a horizontal edge at the bottom in GL's y-up window
+// (interior above): the reference's fill rule, folded into a bias so inside <=> E + bias >= 0.
+struct EdgeFunction {
+    std::int64_t stepX = 0, stepY = 0, valueAtOrigin = 0;  // per pixel, and at pixel (0, 0)
+
+    EdgeFunction() = default;
+    EdgeFunction(const FixedPoint& a, const FixedPoint& b);
+    std::int64_t at(std::int64_t px, std::int64_t py) const {
+        return valueAtOrigin + stepX * px + stepY * py;
+    }
+};
+
+// The per-fragment work a draw's state asks for; a frame pays only for what it enables.
+struct FragmentState {
+    bool depthTest = false;
+    CompareFunc depthFunc = CompareFunc::Less;
+    bool depthWrite = true;
+    bool smooth = true;
+};
+
+// Everything the kernel needs, computed once per triangle so that any tile can draw its part.
+struct RasterTriangle {
+    EdgeFunction edges[3];
+    AttributePlane color[4];  // color / w, only under smooth shading
+    AttributePlane invW;      // 1 / w, only under smooth shading
+    AttributePlane depth;     // window z, only with the depth test
+    std::uint32_t flatColor = 0;
+    FragmentState state;
+    int minX = 0, maxX = -1, minY = 0, maxY = -1;  // inclusive pixel bounds, internal rows
+};
+
+// Builds the edge functions and the planes the state needs, with pixel bounds clipped to the
+// framebuffer. Returns false when no pixel center can be covered.
+bool prepareTriangle(const SetupTriangle& triangle, const DrawState& state, int width, int height,
+                     RasterTriangle& out);
+
+struct PixelRect {
+    int minX, maxX, minY, maxY;  // inclusive
+};
+
+struct FragmentCounts {
+    std::uint64_t fragments = 0, passed = 0;
+};
+
+// The exact method over the part of the triangle inside `rect`: integer edge functions at 1/256
+// pixel, perspective-correct color, 24-bit depth.
+void rasterizeTriangleExact(const RasterTriangle& triangle, const PixelRect& rect,
+                            Framebuffer& framebuffer, FragmentCounts& counts);
 
 }  // namespace glrenderer

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -13,13 +14,15 @@ namespace glrenderer {
 struct TriangleIndices;
 struct WindowVertex;
 class ViewportTransform;
+class TileRasterizer;
 
 // Turns primitives in clip space into pixels of a Framebuffer.
 //
 // Consecutive submissions of the same mergeable mode (points, lines, triangles, quads) form one
 // batch until endBatch(), as the reference's vertex buffer merges glBegin/glEnd blocks: whether
 // any vertex of the batch needs clipping decides how quads are split, so the batch matters.
-// Pixels are only promised after finish().
+// Pixels are only promised after finish(): triangles are queued and drawn in screen tiles by
+// worker threads. Call finish() before resizing the framebuffer.
 class Pipeline {
 public:
     explicit Pipeline(Framebuffer& framebuffer);
@@ -40,6 +43,8 @@ public:
 private:
     void drawBatch();
     void drawTriangle(const TriangleIndices& triangle, const ViewportTransform& viewport);
+    void setupTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                       const glm::vec4& flatColor);
 
     Framebuffer& framebuffer_;
     Stats stats_;
@@ -49,6 +54,7 @@ private:
     // Per batch vertex: which clip planes it is outside of, and its window position.
     std::vector<std::uint8_t> outcodes_;
     std::vector<WindowVertex> windowVertices_;
+    std::unique_ptr<TileRasterizer> tiles_;
 };
 
 }  // namespace glrenderer

@@ -1,0 +1,42 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "glrenderer/framebuffer.h"
+#include "glrenderer/stats.h"
+#include "raster_triangle.h"
+#include "worker_pool.h"
+
+namespace glrenderer {
+
+// Defers rasterization: triangles are binned into screen tiles and drawn at flush(), tiles in
+// parallel, each tile's triangles in submission order. Every pixel is computed exactly as the
+// immediate kernel computes it, so the result does not depend on tiling or threads.
+class TileRasterizer {
+public:
+    explicit TileRasterizer(Framebuffer& framebuffer);
+
+    void add(const RasterTriangle& triangle);
+    // Draws everything queued; adds fragment counts to stats. The framebuffer must keep its size
+    // between add() and flush(); if it changed, the queued triangles are dropped.
+    void flush(Stats& stats);
+    bool empty() const { return triangles_.empty(); }
+
+private:
+    static constexpr int kTileSize = 64;
+    void resetBins();
+
+    struct alignas(64) ThreadCounts {  // one cache line per thread
+        FragmentCounts counts;
+    };
+
+    Framebuffer& framebuffer_;
+    WorkerPool pool_;
+    std::vector<ThreadCounts> threadCounts_;
+    std::vector<RasterTriangle> triangles_;
+    std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into triangles_
+    int tilesX_ = 0, tilesY_ = 0;
+    int binnedWidth_ = 0, binnedHeight_ = 0;
+};
+
+}  // namespace glrenderer

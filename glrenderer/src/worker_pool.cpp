@@ -1,0 +1,57 @@
+#include "worker_pool.h"
+
+namespace glrenderer {
+
+WorkerPool::WorkerPool(unsigned threads) {
+    for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this, i] { workerLoop(i); });
+}
+
+WorkerPool::~WorkerPool() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& worker : workers_) worker.join();
+}
+
+void WorkerPool::drain(unsigned thread) {
+    for (std::size_t i = next_.fetch_add(1); i < count_; i = next_.fetch_add(1)) (*task_)(i, thread);
+}
+
+void WorkerPool::run(std::size_t count, const std::function<void(std::size_t, unsigned)>& task) {
+    if (workers_.empty() || count <= 1) {
+        for (std::size_t i = 0; i < count; ++i) task(i, 0);
+        return;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        task_ = &task;
+        count_ = count;
+        next_ = 0;
+        busy_ = static_cast<unsigned>(workers_.size());
+        ++generation_;
+    }
+    wake_.notify_all();
+    drain(0);
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [this] { return busy_ == 0; });
+    task_ = nullptr;
+}
+
+void WorkerPool::workerLoop(unsigned thread) {
+    unsigned seen = 0;
+    for (;;) {
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+            if (stopping_) return;
+            seen = generation_;
+        }
+        drain(thread);
+        std::lock_guard lock(mutex_);
+        if (--busy_ == 0) done_.notify_one();
+    }
+}
+
+}  // namespace glrenderer
