@@ -4,8 +4,10 @@
 
 #include "clip.h"
 #include "decompose.h"
+#include "points_lines.h"
 #include "raster_triangle.h"
 #include "tile_rasterizer.h"
+#include "unfilled.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -102,7 +104,11 @@ void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t d
 }
 
 void Pipeline::drawBatch() {
-    if (!isTriangleMode(batchMode_)) return;  // points and lines: see issue 3
+    if (!isTriangleMode(batchMode_)) {
+        tiles_->flush(stats_);  // points and lines are drawn at once: queued triangles first
+        drawPointsAndLines(batchMode_, batch_, batchState_, framebuffer_, stats_);
+        return;
+    }
     const DrawState& state = batchState_;
     const ViewportTransform viewport(state, framebuffer_.height());
 
@@ -117,6 +123,15 @@ void Pipeline::drawBatch() {
     const bool filled = state.polygonFront == PolygonMode::Fill && state.polygonBack == PolygonMode::Fill;
     const DecompositionPath path =
         anyOutside == 0 && filled ? DecompositionPath::Direct : DecompositionPath::DrawModule;
+    if (!filled) {
+        const UnfilledTarget target{
+            [&](const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                const glm::vec4& flatColor) { setupTriangle(v0, v1, v2, flatColor); },
+            [&] { tiles_->flush(stats_); }};
+        drawUnfilledBatch(batchMode_, batch_, outcodes_, windowVertices_, viewport, state, framebuffer_,
+                          stats_, target);
+        return;
+    }
 
     decomposeTriangles(batchMode_, static_cast<std::uint32_t>(batch_.size()), path, state.shadeModel,
                        [&](const TriangleIndices& t) { drawTriangle(t, viewport); });

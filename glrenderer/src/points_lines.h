@@ -1,0 +1,18 @@
+#pragma once
+#include <span>
+
+#include "glrenderer/draw_state.h"
+#include "glrenderer/framebuffer.h"
+#include "glrenderer/stats.h"
+#include "glrenderer/vertex.h"
+
+namespace glrenderer {
+
+// Draws a batch of GL_POINTS, GL_LINES, GL_LINE_STRIP or GL_LINE_LOOP vertices (clip space) as
+// the reference does: points are kept or dropped by their center, segments (i, i+1) in
+// submission order, a loop closed by (last, first), each clipped to the view volume and
+// rasterized with the reference's direction-dependent line rule.
+void drawPointsAndLines(PrimitiveMode mode, std::span<const Vertex> vertices, const DrawState& state,
+                        Framebuffer& framebuffer, Stats& stats);
+
+}  // namespace glrenderer

@@ -1,0 +1,310 @@
+#include "raster_line.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+#include "depth_test.h"
+#include "glrenderer/color_convert.h"
+#include "round_half_away.h"
+#include "triangle_setup.h"
+
+namespace glrenderer {
+namespace {
+
+// Ends beyond this many pixels cannot come out of clipping against a real viewport; refusing
+// them keeps every fixed-point product below 2^62.
+constexpr float kMaxLineCoordinate = 1 << 22;
+// The reference's maximum line width.
+constexpr float kMaxLineWidth = 255.0f;
+
+// Fixed point at 1/256 pixel, rounded as the reference's lines and points round (unlike its
+// triangles): add or subtract a half in float, then truncate. Halves go away from zero.
+std::int64_t toFixed(float pixels) {
+    return roundHalfAway(pixels * kSubpixelScale);
+}
+
+// The reference's sign test counts zero as positive.
+bool nonNegative(float v) { return v >= 0.0f; }
+float fraction(float v) { return v - std::floor(v); }
+
+// The four corners of the parallelogram the reference rasterizes, in fixed point relative to
+// pixel centers, wound so that the interior is on the positive side of each edge function.
+struct LineQuad {
+    std::int64_t x[4], y[4];
+};
+
+// How far, in pixels, each end of the segment is moved along the major axis.
+struct EndOffsets {
+    float startMajor = 0, startMinor = 0, endMajor = 0, endMinor = 0;
+};
+
+// Diamond-exit rule: a line lights the pixel holding an end only if it leaves that pixel's
+// diamond (|dx| + |dy| < 1/2 around the center). The tests below are the reference's, per
+// major axis; `*diff` are the ends' offsets from their pixel centers, (dx, dy) = start - end.
+bool xMajorDrawsStart(float x1diff, float y1diff, float y1, float dx, float dy, float dydx) {
+    if (std::fabs(x1diff) + std::fabs(y1diff) < 0.5f) return true;
+    if (nonNegative(x1diff) == nonNegative(-dx)) return false;
+    if (nonNegative(-y1diff) != nonNegative(dy)) return true;
+    const float intersect = fraction(y1) + x1diff * dydx;
+    return intersect < 1.0f && intersect > 0.0f;
+}
+
+bool xMajorDrawsEnd(float x2diff, float y2diff, float y2, float dx, float dy, float dydx) {
+    if (std::fabs(x2diff) + std::fabs(y2diff) < 0.5f) return false;
+    if (nonNegative(x2diff) != nonNegative(-dx)) return false;
+    if (nonNegative(-y2diff) == nonNegative(dy)) return true;
+    const float intersect = fraction(y2) + x2diff * dydx;
+    return intersect < 1.0f && intersect > 0.0f;
+}
+
+bool yMajorDrawsStart(float x1diff, float y1diff, float x1, float dx, float dy, float dxdy) {
+    if (std::fabs(x1diff) + std::fabs(y1diff) < 0.5f) return true;
+    if (nonNegative(-y1diff) == nonNegative(dy)) return false;
+    if (nonNegative(x1diff) != nonNegative(-dx)) return true;
+    const float intersect = fraction(x1) + y1diff * dxdy;
+    return intersect < 1.0f && intersect > 0.0f;
+}
+
+// Unlike the x-major end test, the low bound of the intersection is inclusive here.
+bool yMajorDrawsEnd(float x2diff, float y2diff, float x2, float dx, float dy, float dxdy) {
+    if (std::fabs(x2diff) + std::fabs(y2diff) < 0.5f) return false;
+    if (nonNegative(-y2diff) != nonNegative(dy)) return false;
+    if (nonNegative(x2diff) == nonNegative(-dx)) return true;
+    const float intersect = fraction(x2) + y2diff * dxdy;
+    return intersect < 1.0f && intersect >= 0.0f;
+}
+
+// Builds the quad for start (x1, y1) -> end (x2, y2) with an integer width in fixed point.
+LineQuad buildQuad(float x1, float y1, float x2, float y2, std::int64_t fixedWidth) {
+    const float dx = x1 - x2;
+    const float dy = y1 - y2;
+    const float x1diff = x1 - std::floor(x1) - 0.5f;
+    const float y1diff = y1 - std::floor(y1) - 0.5f;
+    float x2diff = x2 - std::floor(x2) - 0.5f;
+    float y2diff = y2 - std::floor(y2) - 0.5f;
+    const std::int64_t half = fixedWidth / 2;
+    LineQuad q;
+    if (std::fabs(dx) >= std::fabs(dy)) {
+        const float dydx = dy / dx;
+        if (y2diff == -0.5f && dy < 0.0f) y2diff = 0.5f;
+        const bool drawStart = xMajorDrawsStart(x1diff, y1diff, y1, dx, dy, dydx);
+        const bool drawEnd = xMajorDrawsEnd(x2diff, y2diff, y2, dx, dy, dydx);
+        // The quad spans from the left end to the right end; which pixel an end lights
+        // without offsets depends on which side of its pixel center it lies.
+        float xOffset = 0, yOffset = 0, xOffsetEnd = 0, yOffsetEnd = 0;
+        float leftX = x1, leftY = y1, rightX = x2, rightY = y2;
+        if (dx < 0.0f) {
+            // Start is the left end: the quad's "first" corner pair belongs to the right end.
+            std::swap(leftX, rightX);
+            std::swap(leftY, rightY);
+            if ((x1diff <= 0.0f) != drawStart) {
+                xOffsetEnd = -x1diff - 0.5f;
+                yOffsetEnd = xOffsetEnd * dydx;
+            }
+            if ((x2diff >= 0.0f) != drawEnd) {  // an end on a pixel center counts as drawn
+                xOffset = -x2diff - 0.5f;
+                yOffset = xOffset * dydx;
+            }
+        } else {
+            if ((x1diff > 0.0f) != drawStart) {
+                xOffset = -x1diff + 0.5f;
+                yOffset = xOffset * dydx;
+            }
+            if ((x2diff <= 0.0f) != drawEnd) {
+                xOffsetEnd = -x2diff + 0.5f;
+                yOffsetEnd = xOffsetEnd * dydx;
+            }
+        }
+        // After the swap (leftX, leftY) is the reference's "v1": the right end when dx < 0.
+        const std::int64_t ax = toFixed(leftX + xOffset - 0.5f);
+        const std::int64_t bx = toFixed(rightX + xOffsetEnd - 0.5f);
+        const std::int64_t ay = toFixed(leftY + yOffset - 0.5f);
+        const std::int64_t by = toFixed(rightY + yOffsetEnd - 0.5f);
+        q = {{ax, bx, bx, ax}, {ay - half, by - half, by + half, ay + half}};
+    } else {
+        const float dxdy = dx / dy;
+        if (x2diff == -0.5f && dx < 0.0f) x2diff = 0.5f;
+        const bool drawStart = yMajorDrawsStart(x1diff, y1diff, x1, dx, dy, dxdy);
+        const bool drawEnd = yMajorDrawsEnd(x2diff, y2diff, x2, dx, dy, dxdy);
+        float xOffset = 0, yOffset = 0, xOffsetEnd = 0, yOffsetEnd = 0;
+        float topX = x1, topY = y1, bottomX = x2, bottomY = y2;
+        if (dy > 0.0f) {
+            std::swap(topX, bottomX);
+            std::swap(topY, bottomY);
+            if ((y1diff >= 0.0f) != drawStart) {
+                yOffsetEnd = -y1diff + 0.5f;
+                xOffsetEnd = yOffsetEnd * dxdy;
+            }
+            if ((y2diff <= 0.0f) != drawEnd) {  // an end on a pixel center counts as drawn
+                yOffset = -y2diff + 0.5f;
+                xOffset = yOffset * dxdy;
+            }
+        } else {
+            if ((y1diff < 0.0f) != drawStart) {
+                yOffset = -y1diff - 0.5f;
+                xOffset = yOffset * dxdy;
+            }
+            if ((y2diff >= 0.0f) != drawEnd) {
+                yOffsetEnd = -y2diff - 0.5f;
+                xOffsetEnd = yOffsetEnd * dxdy;
+            }
+        }
+        const std::int64_t ax = toFixed(topX + xOffset - 0.5f);
+        const std::int64_t bx = toFixed(bottomX + xOffsetEnd - 0.5f);
+        const std::int64_t ay = toFixed(topY + yOffset - 0.5f);
+        const std::int64_t by = toFixed(bottomY + yOffsetEnd - 0.5f);
+        q = {{ax - half, bx - half, bx + half, ax + half}, {ay, by, by, ay}};
+    }
+    return q;
+}
+
+// One edge of the quad as the reference evaluates it: value(p) = c - dcdx*px + dcdy*py in
+// fixed point, inside when > 0. Left edges and, under the bottom-edge rule, edges with the
+// interior above them in GL own the pixel centers on them (c is one larger).
+struct LineEdge {
+    std::int64_t dcdx, dcdy, c;
+    LineEdge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by)
+        : dcdx(ay - by), dcdy(ax - bx), c(dcdx * ax - dcdy * ay) {
+        if (dcdx < 0 || (dcdx == 0 && dcdy < 0)) ++c;
+    }
+};
+
+std::int64_t floorDiv(std::int64_t n, std::int64_t d) {  // d > 0
+    const std::int64_t q = n / d;
+    return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+// The attribute planes of a line, built from the unsnapped ends as the reference builds them:
+// the gradient lies along the major axis only ("wide line" interpolation), anchored at `start`.
+class LinePlaneBuilder {
+public:
+    LinePlaneBuilder(const WindowVertex& start, const WindowVertex& end)
+        : x1Center_(start.x - 0.5f), y1Center_(start.y - 0.5f) {
+        const float dx = start.x - end.x;
+        const float dy = start.y - end.y;
+        oneOverLengthSquared_ = 1.0f / (dx * dx + dy * dy);
+        if (std::fabs(dx) >= std::fabs(dy)) {
+            const float dydx = dy / dx;
+            dx_ = dx * (1.0f + dydx * dydx);
+            dy_ = 0.0f;
+        } else {
+            const float dxdy = dx / dy;
+            dx_ = 0.0f;
+            dy_ = dy * (1.0f + dxdy * dxdy);
+        }
+    }
+    AttributePlane plane(float a1, float a2) const {
+        const float da21 = a1 - a2;
+        AttributePlane p;
+        p.dadx = da21 * dx_ * oneOverLengthSquared_;
+        p.dady = da21 * dy_ * oneOverLengthSquared_;
+        p.a0 = a1 - (p.dadx * x1Center_ + p.dady * y1Center_);
+        return p;
+    }
+
+private:
+    float dx_, dy_, oneOverLengthSquared_, x1Center_, y1Center_;
+};
+
+struct LinePlanes {
+    AttributePlane color[4];
+    AttributePlane invW;
+    AttributePlane depth;
+};
+
+template <bool DepthTest, bool Smooth>
+void fillQuad(const LineQuad& q, const LinePlanes& planes, const glm::vec4& flatColor,
+              const DrawState& state, Framebuffer& fb, Stats& stats) {
+    const LineEdge edges[4] = {LineEdge(q.x[0], q.y[0], q.x[1], q.y[1]),
+                               LineEdge(q.x[1], q.y[1], q.x[2], q.y[2]),
+                               LineEdge(q.x[2], q.y[2], q.x[3], q.y[3]),
+                               LineEdge(q.x[3], q.y[3], q.x[0], q.y[0])};
+    // The reference's bounding box (rounded for the bottom-left convention), then the buffer.
+    const std::int64_t one = 1 << kSubpixelBits;
+    const std::int64_t minX = std::max<std::int64_t>((std::min({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits, 0);
+    const std::int64_t maxX = std::min<std::int64_t>(((std::max({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits) - 1, fb.width() - 1);
+    const std::int64_t minY = std::max<std::int64_t>((std::min({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits, 0);
+    const std::int64_t maxY = std::min<std::int64_t>(((std::max({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits) - 1, fb.height() - 1);
+    if (minX > maxX || minY > maxY) return;
+
+    const std::uint32_t flat = fragmentRgba8(flatColor);
+    const auto color = fb.color();
+    const auto depth = fb.depth();
+    const std::size_t width = static_cast<std::size_t>(fb.width());
+    std::uint64_t fragments = 0, passed = 0;
+    for (std::int64_t py = minY; py <= maxY; ++py) {
+        // Each edge bounds the row's span: value(px) = a * px + b > 0.
+        std::int64_t first = minX, last = maxX;
+        for (const LineEdge& e : edges) {
+            const std::int64_t a = -e.dcdx * one;
+            const std::int64_t b = e.c + e.dcdy * py * one;
+            if (a > 0) first = std::max(first, floorDiv(-b, a) + 1);
+            else if (a < 0) last = std::min(last, -floorDiv(-b, -a) - 1);
+            else if (b <= 0) last = first - 1;
+        }
+        const std::size_t row = static_cast<std::size_t>(fb.height() - 1 - py) * width;
+        const float y = static_cast<float>(py);
+        for (std::int64_t px = first; px <= last; ++px) {
+            ++fragments;
+            const std::size_t index = row + static_cast<std::size_t>(px);
+            const float x = static_cast<float>(px);
+            if constexpr (DepthTest) {
+                const std::uint32_t z = toDepth24(planes.depth.at(x, y));
+                if (!depthPasses(state.depthFunc, z, depth[index])) continue;
+                if (state.depthWrite) depth[index] = z;
+            }
+            ++passed;
+            if constexpr (Smooth) {
+                const float w = 1.0f / planes.invW.at(x, y);
+                const glm::vec4 rgba(planes.color[0].at(x, y) * w, planes.color[1].at(x, y) * w,
+                                     planes.color[2].at(x, y) * w, planes.color[3].at(x, y) * w);
+                color[index] = fragmentRgba8(rgba);
+            } else {
+                color[index] = flat;
+            }
+        }
+    }
+    stats.fragments += fragments;
+    stats.fragmentsPassed += passed;
+    stats.pixelsWritten += passed;
+}
+
+bool isUsable(const WindowVertex& v) {
+    return std::fabs(v.x) < kMaxLineCoordinate && std::fabs(v.y) < kMaxLineCoordinate &&
+           std::isfinite(v.z) && std::isfinite(v.invW);
+}
+
+}  // namespace
+
+void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor,
+                   const DrawState& state, Framebuffer& framebuffer, Stats& stats) {
+    if (!isUsable(start) || !isUsable(end)) return;
+    if (start.x == end.x && start.y == end.y) return;  // zero length draws nothing
+    // Width rounded to an integer (halves up), at least one pixel.
+    const float width = std::min(std::max(state.lineWidth, 1.0f), kMaxLineWidth);
+    const std::int64_t fixedWidth = roundHalfAway(width) << kSubpixelBits;
+    const LineQuad quad = buildQuad(start.x, start.y, end.x, end.y, fixedWidth);
+
+    const LinePlaneBuilder builder(start, end);
+    LinePlanes planes;
+    const bool smooth = state.shadeModel == ShadeModel::Smooth;
+    if (smooth) {
+        for (int c = 0; c < 4; ++c) {
+            planes.color[c] = builder.plane(start.color[c] * start.invW, end.color[c] * end.invW);
+        }
+        planes.invW = builder.plane(start.invW, end.invW);
+    }
+    if (state.depthTest) planes.depth = builder.plane(start.z, end.z);
+
+    if (state.depthTest) {
+        if (smooth) fillQuad<true, true>(quad, planes, flatColor, state, framebuffer, stats);
+        else fillQuad<true, false>(quad, planes, flatColor, state, framebuffer, stats);
+    } else {
+        if (smooth) fillQuad<false, true>(quad, planes, flatColor, state, framebuffer, stats);
+        else fillQuad<false, false>(quad, planes, flatColor, state, framebuffer, stats);
+    }
+}
+
+}  // namespace glrenderer

@@ -1,0 +1,20 @@
+#pragma once
+#include <glm/vec4.hpp>
+
+#include "glrenderer/draw_state.h"
+#include "glrenderer/framebuffer.h"
+#include "glrenderer/stats.h"
+#include "window_vertex.h"
+
+namespace glrenderer {
+
+// Rasterizes the segment from `start` to `end` (window coordinates, internal y-down, already
+// inside the view volume) as the reference's non-antialiased lines: a parallelogram of the
+// integer-rounded width whose ends are moved by the diamond-exit test, so that the pixels lit
+// depend on the direction of the segment. Smooth colors are interpolated along the major axis
+// from the unsnapped ends; flat lines take `flatColor` (the second vertex's, provoking last).
+// Segments with a non-finite or huge end draw nothing.
+void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor,
+                   const DrawState& state, Framebuffer& framebuffer, Stats& stats);
+
+}  // namespace glrenderer

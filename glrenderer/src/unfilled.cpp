@@ -1,0 +1,240 @@
+#include "unfilled.h"
+
+#include <array>
+#include <cmath>
+
+#include "clip.h"
+#include "raster_line.h"
+#include "raster_point.h"
+
+namespace glrenderer {
+namespace {
+
+// Which edges of a decomposed triangle are polygon edges: bit k is the edge v[k] -> v[k+1].
+constexpr std::uint8_t kEdge0 = 1, kEdge1 = 2, kEdge2 = 4, kAllEdges = 7;
+
+// The draw module's decomposition (provoking vertex last) with edge flags.
+template <class Emit>
+void decomposeWithEdges(PrimitiveMode mode, std::uint32_t n, Emit&& emit) {
+    switch (mode) {
+    case PrimitiveMode::Triangles:
+        for (std::uint32_t i = 0; i + 2 < n; i += 3) emit(i, i + 1, i + 2, kAllEdges);
+        break;
+    case PrimitiveMode::TriangleStrip:
+        for (std::uint32_t i = 0; i + 2 < n; ++i) {
+            if (i % 2 == 0) emit(i, i + 1, i + 2, kAllEdges);
+            else emit(i + 1, i, i + 2, kAllEdges);
+        }
+        break;
+    case PrimitiveMode::TriangleFan:
+        for (std::uint32_t i = 1; i + 1 < n; ++i) emit(0, i, i + 1, kAllEdges);
+        break;
+    case PrimitiveMode::Quads:
+        for (std::uint32_t i = 0; i + 3 < n; i += 4) {
+            emit(i, i + 1, i + 3, kEdge0 | kEdge2);
+            emit(i + 1, i + 2, i + 3, kEdge0 | kEdge1);
+        }
+        break;
+    case PrimitiveMode::QuadStrip:
+        for (std::uint32_t i = 0; i + 3 < n; i += 2) {
+            emit(i + 2, i, i + 3, kEdge0 | kEdge2);
+            emit(i, i + 1, i + 3, kEdge0 | kEdge1);
+        }
+        break;
+    case PrimitiveMode::Polygon:
+        // Fan (i+1, i+2, 0): the outer edge i+1 -> i+2, plus 0 -> 1 first and n-1 -> 0 last.
+        for (std::uint32_t i = 0; i + 2 < n; ++i) {
+            std::uint8_t edges = kEdge0;
+            if (i == 0) edges |= kEdge2;
+            if (i + 3 == n) edges |= kEdge1;
+            emit(i + 1, i + 2, 0, edges);
+        }
+        break;
+    default:
+        break;
+    }
+}
+
+// A vertex of a (possibly clipped) polygon: clip and window position, its own edge flag, and
+// whether the polygon edge starting at it is drawn.
+struct PolygonVertex {
+    Vertex clip;
+    WindowVertex window;
+    bool edgeFlag;
+    bool edgeVisible;
+};
+
+struct Polygon {
+    std::array<PolygonVertex, kMaxClippedVertices> v;
+    int count = 0;
+};
+
+// Distance to the draw module's planes, in its order: x <= w, x >= -w, y <= w, y >= -w,
+// z >= -w, z <= w (the order decides where new vertices land).
+float planeDistance(const glm::vec4& p, int plane) {
+    switch (plane) {
+    case 0: return p.w - p.x;
+    case 1: return p.x + p.w;
+    case 2: return p.w - p.y;
+    case 3: return p.y + p.w;
+    case 4: return p.z + p.w;
+    default: return p.w - p.z;
+    }
+}
+// clipOutcode's bit for each of those planes.
+constexpr int kOutcodeBit[kClipPlaneCount] = {1, 0, 3, 2, 4, 5};
+
+// The crossing point, interpolated from the end nearer the plane (the inside one on a tie) as
+// the reference does.
+Vertex crossing(const Vertex& a, float da, const Vertex& b, float db) {
+    const bool fromA = std::fabs(da) < std::fabs(db) || (std::fabs(da) == std::fabs(db) && da >= 0.0f);
+    const Vertex& from = fromA ? a : b;
+    const Vertex& to = fromA ? b : a;
+    const float t = fromA ? da / (da - db) : db / (db - da);
+    Vertex v;
+    v.position = from.position + t * (to.position - from.position);
+    v.color = from.color + t * (to.color - from.color);
+    return v;
+}
+
+// Sutherland-Hodgman in the reference's plane order, carrying edge flags: an edge cut by a
+// view-volume plane keeps its flag up to the cut, the new edge along the plane is hidden.
+// Returns false if the polygon vanished or a distance is not finite.
+bool clipPolygon(Polygon& polygon, std::uint8_t outcodeUnion, const ViewportTransform& viewport) {
+    Polygon out;
+    for (int plane = 0; plane < kClipPlaneCount; ++plane) {
+        if (!(outcodeUnion & (1u << kOutcodeBit[plane]))) continue;
+        out.count = 0;
+        const int n = polygon.count;
+        for (int i = 0; i < n; ++i) {
+            const PolygonVertex& prev = polygon.v[static_cast<std::size_t>(i)];
+            const PolygonVertex& next = polygon.v[static_cast<std::size_t>((i + 1) % n)];
+            const float dPrev = planeDistance(prev.clip.position, plane);
+            const float dNext = planeDistance(next.clip.position, plane);
+            if (!std::isfinite(dPrev) || !std::isfinite(dNext)) return false;
+            if (dPrev >= 0.0f) out.v[static_cast<std::size_t>(out.count++)] = prev;
+            if ((dPrev >= 0.0f) == (dNext >= 0.0f)) continue;
+            PolygonVertex cut;
+            cut.clip = crossing(prev.clip, dPrev, next.clip, dNext);
+            cut.window = viewport.apply(cut.clip);
+            // Leaving, the edge from the cut runs along the plane: hidden by the cut's own flag.
+            const bool leaving = dNext < 0.0f;
+            cut.edgeFlag = leaving ? false : prev.edgeFlag;
+            cut.edgeVisible = prev.edgeVisible;
+            out.v[static_cast<std::size_t>(out.count++)] = cut;
+        }
+        polygon = out;
+        if (polygon.count < 3) return false;
+    }
+    return true;
+}
+
+class UnfilledDrawer {
+public:
+    UnfilledDrawer(const DrawState& state, Framebuffer& framebuffer, Stats& stats,
+                   const UnfilledTarget& target)
+        : state_(state), framebuffer_(framebuffer), stats_(stats), target_(target) {}
+
+    // One triangle out of the clipper (provoking vertex last) with its edge bits.
+    void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c,
+                  std::uint8_t edges, const glm::vec4& flatColor) {
+        const WindowVertex& w0 = a.window;
+        const WindowVertex& w1 = b.window;
+        const WindowVertex& w2 = c.window;
+        const float ex = w0.x - w2.x, ey = w0.y - w2.y;
+        const float fx = w1.x - w2.x, fy = w1.y - w2.y;
+        const float det = ex * fy - ey * fx;
+        // det < 0 is counter-clockwise in GL's window; zero area counts as back-facing.
+        const bool front = det != 0.0f && (det < 0.0f) == state_.frontFaceCCW;
+        if (state_.cullEnabled &&
+            (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front)) {
+            ++(front ? stats_.culledFront : stats_.culledBack);
+            return;
+        }
+        // The mode follows the facing. A zero determinant is back-facing when culling is on;
+        // with culling off it counts as clockwise (measured: the back mode under GL_CCW, the
+        // front mode under GL_CW).
+        const bool useFront = det == 0.0f ? !state_.cullEnabled && !state_.frontFaceCCW : front;
+        const PolygonMode mode = useFront ? state_.polygonFront : state_.polygonBack;
+        if (mode == PolygonMode::Fill) {
+            target_.fill(w0, w1, w2, flatColor);
+            return;
+        }
+        ++stats_.rasterized;
+        target_.beforeLinesOrPoints();
+        const bool flat = state_.shadeModel == ShadeModel::Flat;
+        if (mode == PolygonMode::Line) {
+            if ((edges & kEdge2) && c.edgeFlag) line(w2, w0, flatColor);
+            if ((edges & kEdge0) && a.edgeFlag) line(w0, w1, flatColor);
+            if ((edges & kEdge1) && b.edgeFlag) line(w1, w2, flatColor);
+        } else {
+            if ((edges & kEdge0) && a.edgeFlag) point(w0, flat, flatColor);
+            if ((edges & kEdge1) && b.edgeFlag) point(w1, flat, flatColor);
+            if ((edges & kEdge2) && c.edgeFlag) point(w2, flat, flatColor);
+        }
+    }
+
+private:
+    void line(const WindowVertex& from, const WindowVertex& to, const glm::vec4& flatColor) {
+        rasterizeLine(from, to, flatColor, state_, framebuffer_, stats_);
+    }
+    void point(const WindowVertex& p, bool flat, const glm::vec4& flatColor) {
+        if (!flat) {
+            rasterizePoint(p, state_, framebuffer_, stats_);
+            return;
+        }
+        WindowVertex colored = p;
+        colored.color = flatColor;
+        rasterizePoint(colored, state_, framebuffer_, stats_);
+    }
+
+    const DrawState& state_;
+    Framebuffer& framebuffer_;
+    Stats& stats_;
+    const UnfilledTarget& target_;
+};
+
+}  // namespace
+
+void drawUnfilledBatch(PrimitiveMode mode, std::span<const Vertex> vertices,
+                       std::span<const std::uint8_t> outcodes,
+                       std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
+                       const DrawState& state, Framebuffer& framebuffer, Stats& stats,
+                       const UnfilledTarget& target) {
+    UnfilledDrawer drawer(state, framebuffer, stats, target);
+    const auto count = static_cast<std::uint32_t>(vertices.size());
+    decomposeWithEdges(mode, count, [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2,
+                                        std::uint8_t edges) {
+        ++stats.triangles;
+        const std::uint32_t index[3] = {i0, i1, i2};
+        const glm::vec4 flatColor = vertices[i2].color;
+        Polygon polygon;
+        polygon.count = 3;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vertex& v = vertices[index[k]];
+            polygon.v[k] = {v, windowVertices[index[k]], v.edgeFlag, (edges >> k & 1u) != 0};
+        }
+        const std::uint8_t outside = outcodes[i0] | outcodes[i1] | outcodes[i2];
+        if (outside == 0) {
+            drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, flatColor);
+            return;
+        }
+        if ((outcodes[i0] & outcodes[i1] & outcodes[i2]) || !clipPolygon(polygon, outside, viewport)) {
+            ++stats.clippedAway;
+            return;
+        }
+        stats.clipCreated += static_cast<std::uint64_t>(polygon.count - 3);
+        // Fan (p[i-1], p[i], p[0]) with p[0] last; inner diagonals hidden.
+        for (int i = 2; i < polygon.count; ++i) {
+            const PolygonVertex& a = polygon.v[static_cast<std::size_t>(i - 1)];
+            const PolygonVertex& b = polygon.v[static_cast<std::size_t>(i)];
+            const PolygonVertex& first = polygon.v[0];
+            std::uint8_t fanEdges = a.edgeVisible ? kEdge0 : 0;
+            if (i == 2 && first.edgeVisible) fanEdges |= kEdge2;
+            if (i == polygon.count - 1 && b.edgeVisible) fanEdges |= kEdge1;
+            drawer.triangle(a, b, first, fanEdges, flatColor);
+        }
+    });
+}
+
+}  // namespace glrenderer

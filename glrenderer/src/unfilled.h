@@ -1,0 +1,37 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <span>
+
+#include <glm/vec4.hpp>
+
+#include "glrenderer/draw_state.h"
+#include "glrenderer/framebuffer.h"
+#include "glrenderer/stats.h"
+#include "glrenderer/vertex.h"
+#include "window_vertex.h"
+
+namespace glrenderer {
+
+// Where the unfilled stage sends what it does not draw itself.
+struct UnfilledTarget {
+    // A triangle of a face whose polygon mode is FILL, already clipped, to snap, cull and fill.
+    std::function<void(const WindowVertex&, const WindowVertex&, const WindowVertex&, const glm::vec4&)> fill;
+    // Called before lines or points are drawn, so that filled triangles queued earlier land first.
+    std::function<void()> beforeLinesOrPoints;
+};
+
+// Draws a batch of a triangle mode under glPolygonMode LINE/POINT for at least one face, as the
+// reference's draw module does: triangles decomposed with edge flags that hide the interior
+// edges of quads, quad strips and polygons; clipped (frontier edges hidden); culled by a float
+// determinant of window coordinates (zero area is back-facing); then each face drawn in its
+// mode, edges as lines (v2->v0, v0->v1, v1->v2) or vertices as points where the edge flag of
+// the primitive and of the edge's first vertex (glEdgeFlag) are both set. Flat shading uses the
+// triangle's provoking vertex color for all of it.
+void drawUnfilledBatch(PrimitiveMode mode, std::span<const Vertex> vertices,
+                       std::span<const std::uint8_t> outcodes,
+                       std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
+                       const DrawState& state, Framebuffer& framebuffer, Stats& stats,
+                       const UnfilledTarget& target);
+
+}  // namespace glrenderer
