@@ -13,7 +13,7 @@ constexpr std::size_t kParallelThreshold = 64;
 
 TileRasterizer::TileRasterizer(Framebuffer& framebuffer)
     : framebuffer_(framebuffer), pool_(std::max(1u, std::thread::hardware_concurrency())),
-      threadCounts_(pool_.threadCount()) {}
+      threadCounts_(pool_.threadCount()), shader_(cpuHasAvx2Fma() ? shadeSpanAvx2 : shadeSpanScalar) {}
 
 void TileRasterizer::resetBins() {
     binnedWidth_ = framebuffer_.width();
@@ -45,7 +45,7 @@ void TileRasterizer::flush(Stats& stats) {
         const PixelRect rect{tx * kTileSize, std::min((tx + 1) * kTileSize, binnedWidth_) - 1,
                              ty * kTileSize, std::min((ty + 1) * kTileSize, binnedHeight_) - 1};
         for (std::uint32_t index : bins_[tile])
-            rasterizeTriangleExact(triangles_[index], rect, framebuffer_, threadCounts_[thread].counts);
+            rasterizeTriangleSpans(triangles_[index], rect, framebuffer_, threadCounts_[thread].counts, shader_);
     };
     if (triangles_.size() < kParallelThreshold) {
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawTile(tile, 0);

@@ -4,7 +4,7 @@
 
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
-#include "raster_triangle.h"
+#include "raster_span.h"
 #include "worker_pool.h"
 
 namespace glrenderer {
@@ -33,6 +33,7 @@ private:
     Framebuffer& framebuffer_;
     WorkerPool pool_;
     std::vector<ThreadCounts> threadCounts_;
+    SpanShader shader_;
     std::vector<RasterTriangle> triangles_;
     std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into triangles_
     int tilesX_ = 0, tilesY_ = 0;

@@ -1,0 +1,79 @@
+#include "raster_span.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "depth_test.h"
+#include "glrenderer/color_convert.h"
+
+namespace glrenderer {
+namespace {
+
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) {  // b > 0
+    const std::int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+std::int64_t ceilDiv(std::int64_t a, std::int64_t b) { return -floorDiv(-a, b); }  // b > 0
+
+}  // namespace
+
+Span coveredSpan(const RasterTriangle& t, int row, int minX, int maxX) {
+    std::int64_t begin = minX, end = maxX;
+    for (const EdgeFunction& edge : t.edges) {
+        // Inside where value + stepX * x >= 0.
+        const std::int64_t value = edge.valueAtOrigin + edge.stepY * row;
+        if (edge.stepX > 0) begin = std::max(begin, ceilDiv(-value, edge.stepX));
+        else if (edge.stepX < 0) end = std::min(end, floorDiv(value, -edge.stepX));
+        else if (value < 0) return {1, 0};
+    }
+    if (begin > end) return {1, 0};
+    return {static_cast<int>(begin), static_cast<int>(end)};
+}
+
+void shadeSpanScalar(const RasterTriangle& t, int row, int begin, int end, Framebuffer& fb,
+                     FragmentCounts& counts) {
+    const std::size_t offset = static_cast<std::size_t>(fb.height() - 1 - row) * static_cast<std::size_t>(fb.width());
+    std::uint32_t* color = fb.color().data() + offset;
+    std::uint32_t* depth = fb.depth().data() + offset;
+    const float y = static_cast<float>(row);
+    std::uint64_t passed = 0;
+    for (int px = begin; px <= end; ++px) {
+        const float x = static_cast<float>(px);
+        if (t.state.depthTest) {
+            const std::uint32_t z = toDepth24(t.depth.at(x, y));
+            if (!depthPasses(t.state.depthFunc, z, depth[px])) continue;
+            if (t.state.depthWrite) depth[px] = z;
+        }
+        ++passed;
+        if (t.state.smooth) {
+            const float w = 1.0f / t.invW.at(x, y);
+            color[px] = fragmentRgba8({t.color[0].at(x, y) * w, t.color[1].at(x, y) * w,
+                                       t.color[2].at(x, y) * w, t.color[3].at(x, y) * w});
+        } else {
+            color[px] = t.flatColor;
+        }
+    }
+    counts.fragments += static_cast<std::uint64_t>(end - begin + 1);
+    counts.passed += passed;
+}
+
+void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb,
+                            FragmentCounts& counts, SpanShader shader) {
+    const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
+    const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
+    for (int row = minY; row <= maxY; ++row) {
+        const Span span = coveredSpan(t, row, minX, maxX);
+        if (span.begin <= span.end) shader(t, row, span.begin, span.end, fb, counts);
+    }
+}
+
+bool cpuHasAvx2Fma() {
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    return has;
+#else
+    return false;
+#endif
+}
+
+}  // namespace glrenderer
