@@ -5,38 +5,29 @@
 namespace glrenderer {
 namespace {
 
-// Signed distance to plane `plane` (>= 0 inside), in the reference's plane order.
-float planeDistance(const glm::vec4& p, int plane) {
-    switch (plane) {
-    case 0: return p.x + p.w;
-    case 1: return p.w - p.x;
-    case 2: return p.y + p.w;
-    case 3: return p.w - p.y;
-    case 4: return p.z + p.w;
-    default: return p.w - p.z;
-    }
-}
-
-// The point at parameter t from `outside` towards `inside`, position and color alike.
-Vertex interpolate(const Vertex& outside, const Vertex& inside, float t) {
-    Vertex v;
-    v.position = outside.position + t * (inside.position - outside.position);
-    v.color = outside.color + t * (inside.color - outside.color);
-    v.edgeFlag = true;
-    return v;
-}
-
 bool isFinite(const glm::vec4& p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
 }  // namespace
 
+Vertex clipCrossing(const Vertex& a, float distanceA, const Vertex& b, float distanceB) {
+    const bool fromA = std::fabs(distanceA) < std::fabs(distanceB) ||
+                       (std::fabs(distanceA) == std::fabs(distanceB) && distanceA >= 0.0f);
+    const Vertex& from = fromA ? a : b;
+    const Vertex& to = fromA ? b : a;
+    const float t = fromA ? distanceA / (distanceA - distanceB) : distanceB / (distanceB - distanceA);
+    Vertex v;
+    v.position = from.position + t * (to.position - from.position);
+    v.color = from.color + t * (to.color - from.color);
+    return v;
+}
+
 std::uint8_t clipOutcode(const glm::vec4& p) {
     std::uint8_t code = 0;
     for (int plane = 0; plane < kClipPlaneCount; ++plane) {
         // Written so that NaN lands outside.
-        if (!(planeDistance(p, plane) >= 0.0f)) code |= static_cast<std::uint8_t>(1u << plane);
+        if (!(clipPlaneDistance(p, plane) >= 0.0f)) code |= static_cast<std::uint8_t>(1u << plane);
     }
     return code;
 }
@@ -44,9 +35,9 @@ std::uint8_t clipOutcode(const glm::vec4& p) {
 ClippedPolygon clipTriangle(const Vertex& v0, const Vertex& v1, const Vertex& v2,
                             std::uint8_t outcodeUnion) {
     ClippedPolygon polygons[2];
-    polygons[0].vertices[0] = v2;
-    polygons[0].vertices[1] = v0;
-    polygons[0].vertices[2] = v1;
+    polygons[0].vertices[0] = v0;
+    polygons[0].vertices[1] = v1;
+    polygons[0].vertices[2] = v2;
     polygons[0].count = 3;
     int current = 0;
     for (int plane = 0; plane < kClipPlaneCount; ++plane) {
@@ -61,13 +52,12 @@ ClippedPolygon clipTriangle(const Vertex& v0, const Vertex& v1, const Vertex& v2
             const Vertex& previous = in.vertices[static_cast<std::size_t>(i - 1)];
             const Vertex& vertex = in.vertices[static_cast<std::size_t>(i % in.count)];
             if (!isFinite(vertex.position)) return ClippedPolygon{};
-            const float previousDistance = planeDistance(previous.position, plane);
-            const float distance = planeDistance(vertex.position, plane);
+            const float previousDistance = clipPlaneDistance(previous.position, plane);
+            const float distance = clipPlaneDistance(vertex.position, plane);
             if (previousDistance >= 0.0f) out.vertices[static_cast<std::size_t>(out.count++)] = previous;
             if ((previousDistance >= 0.0f) != (distance >= 0.0f)) {
-                out.vertices[static_cast<std::size_t>(out.count++)] = distance < 0.0f
-                    ? interpolate(vertex, previous, distance / (distance - previousDistance))
-                    : interpolate(previous, vertex, previousDistance / (previousDistance - distance));
+                out.vertices[static_cast<std::size_t>(out.count++)] =
+                    clipCrossing(previous, previousDistance, vertex, distance);
             }
         }
         current = 1 - current;

@@ -8,11 +8,28 @@
 
 namespace glrenderer {
 
-// One bit per view-volume plane a clip-space position is outside of: x >= -w, x <= w, y >= -w,
-// y <= w, z >= -w, z <= w, in the reference's plane order. A non-finite position is outside all.
+inline constexpr int kClipPlaneCount = 6;
+
+// Signed distance of a clip-space position to view-volume plane `plane` (>= 0 inside), in the
+// reference's order: x <= w, x >= -w, y <= w, y >= -w, z >= -w (near), z <= w (far).
+inline float clipPlaneDistance(const glm::vec4& p, int plane) {
+    switch (plane) {
+    case 0: return p.w - p.x;
+    case 1: return p.x + p.w;
+    case 2: return p.w - p.y;
+    case 3: return p.y + p.w;
+    case 4: return p.z + p.w;
+    default: return p.w - p.z;
+    }
+}
+
+// Bit `plane` set for each plane the position is outside of. A non-finite position is outside all.
 std::uint8_t clipOutcode(const glm::vec4& position);
 
-inline constexpr int kClipPlaneCount = 6;
+// Where the edge a-b crosses a plane, given both ends' distances to it (of opposite signs):
+// interpolated in clip space from the end nearer the plane (the inside one on a tie), as the
+// reference does.
+Vertex clipCrossing(const Vertex& a, float distanceA, const Vertex& b, float distanceB);
 // A triangle clipped by six planes gains at most one vertex per plane.
 inline constexpr int kMaxClippedVertices = 3 + kClipPlaneCount;
 
@@ -21,10 +38,9 @@ struct ClippedPolygon {
     int count = 0;
 };
 
-// Clips triangle (v0, v1, v2) in clip space against the view volume (Sutherland-Hodgman, new
-// vertices interpolated in clip space). The polygon starts at the provoking vertex v2, so that
-// the fan (p[i-1], p[i], p[0]) keeps it last, as the reference emits it. Fewer than three
-// vertices means nothing is left.
+// Clips triangle (v0, v1, v2) in clip space against the view volume (Sutherland-Hodgman, plane
+// by plane in the reference's order). The polygon starts at v0 and is drawn as the fan
+// (p[i-1], p[i], p[0]), as the reference emits it. Fewer than three vertices: nothing is left.
 ClippedPolygon clipTriangle(const Vertex& v0, const Vertex& v1, const Vertex& v2,
                             std::uint8_t outcodeUnion);
 

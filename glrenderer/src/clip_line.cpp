@@ -8,18 +8,6 @@
 namespace glrenderer {
 namespace {
 
-// Distance to plane `plane` (>= 0 inside) in the order of clipOutcode's bits.
-float planeDistance(const glm::vec4& p, int plane) {
-    switch (plane) {
-    case 0: return p.x + p.w;
-    case 1: return p.w - p.x;
-    case 2: return p.y + p.w;
-    case 3: return p.w - p.y;
-    case 4: return p.z + p.w;
-    default: return p.w - p.z;
-    }
-}
-
 // `from` moved by fraction t towards `to`.
 Vertex moveTowards(const Vertex& from, const Vertex& to, float t) {
     Vertex v = from;
@@ -37,8 +25,8 @@ bool clipLine(Vertex& a, Vertex& b, std::uint8_t outcodeA, std::uint8_t outcodeB
     float tA = 0.0f, tB = 0.0f;
     for (int plane = 0; plane < kClipPlaneCount; ++plane) {
         if (!(planes & (1u << plane))) continue;
-        const float da = planeDistance(a.position, plane);
-        const float db = planeDistance(b.position, plane);
+        const float da = clipPlaneDistance(a.position, plane);
+        const float db = clipPlaneDistance(b.position, plane);
         if (!std::isfinite(da) || !std::isfinite(db)) return false;
         if (db < 0.0f) tB = std::max(tB, db / (db - da));
         if (da < 0.0f) tA = std::max(tA, da / (da - db));

@@ -155,10 +155,10 @@ void Pipeline::drawTriangle(const TriangleIndices& t, const ViewportTransform& v
         return;
     }
     stats_.clipCreated += static_cast<std::uint64_t>(polygon.count - 3);
-    const WindowVertex first = viewport.apply(polygon.vertices[0]);
-    WindowVertex previous = viewport.apply(polygon.vertices[1]);
+    const WindowVertex first = viewport.applyToClipped(polygon.vertices[0]);
+    WindowVertex previous = viewport.applyToClipped(polygon.vertices[1]);
     for (int i = 2; i < polygon.count; ++i) {
-        const WindowVertex current = viewport.apply(polygon.vertices[static_cast<std::size_t>(i)]);
+        const WindowVertex current = viewport.applyToClipped(polygon.vertices[static_cast<std::size_t>(i)]);
         setupTriangle(previous, current, first, flatColor);
         previous = current;
     }

@@ -12,9 +12,14 @@ namespace {
 void drawSegment(const Vertex& start, const Vertex& end, const ViewportTransform& viewport,
                  const DrawState& state, Framebuffer& framebuffer, Stats& stats) {
     Vertex a = start, b = end;
-    if (!clipLine(a, b, clipOutcode(a.position), clipOutcode(b.position))) return;
+    const std::uint8_t outcodeA = clipOutcode(a.position), outcodeB = clipOutcode(b.position);
+    if (!clipLine(a, b, outcodeA, outcodeB)) return;
+    // An end that was outside has been moved by the clipper, which maps it unfused.
+    const auto toWindow = [&](const Vertex& v, std::uint8_t outcode) {
+        return outcode == 0 ? viewport.apply(v) : viewport.applyToClipped(v);
+    };
     // Flat lines take the second vertex's color even when that end was clipped.
-    rasterizeLine(viewport.apply(a), viewport.apply(b), end.color, state, framebuffer, stats);
+    rasterizeLine(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color, state, framebuffer, stats);
 }
 
 }  // namespace

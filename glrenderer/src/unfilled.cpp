@@ -69,54 +69,26 @@ struct Polygon {
     int count = 0;
 };
 
-// Distance to the draw module's planes, in its order: x <= w, x >= -w, y <= w, y >= -w,
-// z >= -w, z <= w (the order decides where new vertices land).
-float planeDistance(const glm::vec4& p, int plane) {
-    switch (plane) {
-    case 0: return p.w - p.x;
-    case 1: return p.x + p.w;
-    case 2: return p.w - p.y;
-    case 3: return p.y + p.w;
-    case 4: return p.z + p.w;
-    default: return p.w - p.z;
-    }
-}
-// clipOutcode's bit for each of those planes.
-constexpr int kOutcodeBit[kClipPlaneCount] = {1, 0, 3, 2, 4, 5};
-
-// The crossing point, interpolated from the end nearer the plane (the inside one on a tie) as
-// the reference does.
-Vertex crossing(const Vertex& a, float da, const Vertex& b, float db) {
-    const bool fromA = std::fabs(da) < std::fabs(db) || (std::fabs(da) == std::fabs(db) && da >= 0.0f);
-    const Vertex& from = fromA ? a : b;
-    const Vertex& to = fromA ? b : a;
-    const float t = fromA ? da / (da - db) : db / (db - da);
-    Vertex v;
-    v.position = from.position + t * (to.position - from.position);
-    v.color = from.color + t * (to.color - from.color);
-    return v;
-}
-
 // Sutherland-Hodgman in the reference's plane order, carrying edge flags: an edge cut by a
 // view-volume plane keeps its flag up to the cut, the new edge along the plane is hidden.
 // Returns false if the polygon vanished or a distance is not finite.
 bool clipPolygon(Polygon& polygon, std::uint8_t outcodeUnion, const ViewportTransform& viewport) {
     Polygon out;
     for (int plane = 0; plane < kClipPlaneCount; ++plane) {
-        if (!(outcodeUnion & (1u << kOutcodeBit[plane]))) continue;
+        if (!(outcodeUnion & (1u << plane))) continue;
         out.count = 0;
         const int n = polygon.count;
         for (int i = 0; i < n; ++i) {
             const PolygonVertex& prev = polygon.v[static_cast<std::size_t>(i)];
             const PolygonVertex& next = polygon.v[static_cast<std::size_t>((i + 1) % n)];
-            const float dPrev = planeDistance(prev.clip.position, plane);
-            const float dNext = planeDistance(next.clip.position, plane);
+            const float dPrev = clipPlaneDistance(prev.clip.position, plane);
+            const float dNext = clipPlaneDistance(next.clip.position, plane);
             if (!std::isfinite(dPrev) || !std::isfinite(dNext)) return false;
             if (dPrev >= 0.0f) out.v[static_cast<std::size_t>(out.count++)] = prev;
             if ((dPrev >= 0.0f) == (dNext >= 0.0f)) continue;
             PolygonVertex cut;
-            cut.clip = crossing(prev.clip, dPrev, next.clip, dNext);
-            cut.window = viewport.apply(cut.clip);
+            cut.clip = clipCrossing(prev.clip, dPrev, next.clip, dNext);
+            cut.window = viewport.applyToClipped(cut.clip);
             // Leaving, the edge from the cut runs along the plane: hidden by the cut's own flag.
             const bool leaving = dNext < 0.0f;
             cut.edgeFlag = leaving ? false : prev.edgeFlag;

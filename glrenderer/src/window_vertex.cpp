@@ -1,5 +1,7 @@
 #include "window_vertex.h"
 
+#include <cmath>
+
 namespace glrenderer {
 
 ViewportTransform::ViewportTransform(const DrawState& state, int framebufferHeight) {
@@ -17,6 +19,17 @@ ViewportTransform::ViewportTransform(const DrawState& state, int framebufferHeig
 }
 
 WindowVertex ViewportTransform::apply(const Vertex& vertex) const {
+    const glm::vec4& p = vertex.position;
+    WindowVertex out;
+    out.invW = 1.0f / p.w;
+    out.x = std::fma(p.x * out.invW, scaleX_, translateX_);
+    out.y = std::fma(p.y * out.invW, scaleY_, translateY_);
+    out.z = std::fma(p.z * out.invW, scaleZ_, translateZ_);
+    out.color = vertex.color;
+    return out;
+}
+
+WindowVertex ViewportTransform::applyToClipped(const Vertex& vertex) const {
     const glm::vec4& p = vertex.position;
     WindowVertex out;
     out.invW = 1.0f / p.w;

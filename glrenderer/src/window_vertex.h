@@ -20,8 +20,12 @@ class ViewportTransform {
 public:
     ViewportTransform(const DrawState& state, int framebufferHeight);
 
-    // x_window = x_clip * (1 / w) * scale + translate, in that order of float operations.
+    // A vertex from the program: x_window = fma(x_clip * (1 / w), scale, translate), as the
+    // reference's vertex stage computes it (one rounding for the multiply-add).
     WindowVertex apply(const Vertex& vertex) const;
+    // A vertex made by clipping: the same formula with a separate multiply and add, as the
+    // reference's clipper computes it.
+    WindowVertex applyToClipped(const Vertex& vertex) const;
 
 private:
     float scaleX_, scaleY_, scaleZ_;

@@ -89,10 +89,14 @@ TEST(Clipping, TriangleThroughTheNearPlaneBecomesAQuadrilateral) {
     const glrenderer::Vertex c{{0, 0.5f, 0, 1}, {0, 0, 1, 1}};
     const std::uint8_t codes = glrenderer::clipOutcode(a.position) | glrenderer::clipOutcode(b.position) |
                                glrenderer::clipOutcode(c.position);
-    EXPECT_EQ(codes, 1u << 4);
+    EXPECT_EQ(codes, 1u << 4);  // the near plane
     const auto polygon = glrenderer::clipTriangle(a, b, c, codes);
     ASSERT_EQ(polygon.count, 4);
-    EXPECT_EQ(polygon.vertices[0].position, c.position);  // starts at the provoking vertex
+    // Walking from v0 (outside): the cut on a-b, then b, c, and the cut on c-a.
+    EXPECT_FLOAT_EQ(polygon.vertices[0].position.z, -polygon.vertices[0].position.w);
+    EXPECT_EQ(polygon.vertices[1].position, b.position);
+    EXPECT_EQ(polygon.vertices[2].position, c.position);
+    EXPECT_FLOAT_EQ(polygon.vertices[3].position.z, -polygon.vertices[3].position.w);
     for (int i = 0; i < polygon.count; ++i) {
         const glm::vec4& p = polygon.vertices[static_cast<std::size_t>(i)].position;
         EXPECT_GE(p.z, -p.w - 1e-6f);
