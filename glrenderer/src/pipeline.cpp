@@ -63,7 +63,7 @@ void Pipeline::setupTriangle(const WindowVertex& v0, const WindowVertex& v1, con
     }
     ++stats.rasterized;
     RasterTriangle prepared;
-    if (prepareTriangle(triangle, state, framebuffer_.width(), framebuffer_.height(), prepared)) {
+    if (prepareTriangle(triangle, state, methods_, framebuffer_.width(), framebuffer_.height(), prepared)) {
         tiles_->add(prepared);
     }
 }

@@ -62,16 +62,24 @@ EdgeFunction::EdgeFunction(const FixedPoint& a, const FixedPoint& b) {
     valueAtOrigin = -(dy * a.y + dx * a.x) + (ownsCenters ? 0 : -1);
 }
 
-bool prepareTriangle(const SetupTriangle& t, const DrawState& state, int width, int height,
-                     RasterTriangle& out) {
+bool prepareTriangle(const SetupTriangle& t, const DrawState& state, const Methods& methods,
+                     int width, int height, RasterTriangle& out) {
     // Orient the edges so that the interior is positive; the planes keep the original order.
     const FixedPoint& a = t.fixed[0];
     const FixedPoint& b = t.area > 0 ? t.fixed[1] : t.fixed[2];
     const FixedPoint& c = t.area > 0 ? t.fixed[2] : t.fixed[1];
-    out.minX = static_cast<int>(std::max<std::int64_t>(ceilToPixel(std::min({a.x, b.x, c.x})), 0));
-    out.maxX = static_cast<int>(std::min<std::int64_t>(floorToPixel(std::max({a.x, b.x, c.x})), width - 1));
-    out.minY = static_cast<int>(std::max<std::int64_t>(ceilToPixel(std::min({a.y, b.y, c.y})), 0));
-    out.maxY = static_cast<int>(std::min<std::int64_t>(floorToPixel(std::max({a.y, b.y, c.y})), height - 1));
+    std::int64_t minX = ceilToPixel(std::min({a.x, b.x, c.x})), maxX = floorToPixel(std::max({a.x, b.x, c.x}));
+    std::int64_t minY = ceilToPixel(std::min({a.y, b.y, c.y})), maxY = floorToPixel(std::max({a.y, b.y, c.y}));
+    out.method = methods.raster;
+    if (methods.raster == RasterMethod::Scanline || methods.raster == RasterMethod::BoundingBoxFloat) {
+        // Float methods may reach a pixel past the snapped bounds.
+        --minX, ++maxX, --minY, ++maxY;
+        for (int i = 0; i < 3; ++i) out.windowX[i] = t.v[i].x, out.windowY[i] = t.v[i].y;
+    }
+    out.minX = static_cast<int>(std::max<std::int64_t>(minX, 0));
+    out.maxX = static_cast<int>(std::min<std::int64_t>(maxX, width - 1));
+    out.minY = static_cast<int>(std::max<std::int64_t>(minY, 0));
+    out.maxY = static_cast<int>(std::min<std::int64_t>(maxY, height - 1));
     if (out.minX > out.maxX || out.minY > out.maxY) return false;
     out.edges[0] = EdgeFunction(a, b);
     out.edges[1] = EdgeFunction(b, c);
@@ -84,7 +92,10 @@ bool prepareTriangle(const SetupTriangle& t, const DrawState& state, int width, 
         return true;
     }
     const PlaneBuilder planes(t.v[0], t.v[1], t.v[2]);
-    if (out.state.smooth) {
+    if (out.state.smooth && methods.interpolation == Interpolation::ScreenLinear) {
+        for (int i = 0; i < 4; ++i) out.color[i] = planes.plane(t.v[0].color[i], t.v[1].color[i], t.v[2].color[i]);
+        out.invW = {1.0f, 0.0f, 0.0f};
+    } else if (out.state.smooth) {
         for (int i = 0; i < 4; ++i) {
             out.color[i] = planes.plane(t.v[0].color[i] * t.v[0].invW, t.v[1].color[i] * t.v[1].invW,
                                         t.v[2].color[i] * t.v[2].invW);

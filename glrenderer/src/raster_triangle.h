@@ -5,6 +5,7 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/methods.h"
 #include "triangle_setup.h"
 
 namespace glrenderer {
@@ -48,13 +49,15 @@ struct RasterTriangle {
     AttributePlane depth;     // window z, only with the depth test
     std::uint32_t flatColor = 0;
     FragmentState state;
+    RasterMethod method = RasterMethod::Exact;
+    float windowX[3] = {}, windowY[3] = {};  // unsnapped, for the float methods
     int minX = 0, maxX = -1, minY = 0, maxY = -1;  // inclusive pixel bounds, internal rows
 };
 
 // Builds the edge functions and the planes the state needs, with pixel bounds clipped to the
 // framebuffer. Returns false when no pixel center can be covered.
-bool prepareTriangle(const SetupTriangle& triangle, const DrawState& state, int width, int height,
-                     RasterTriangle& out);
+bool prepareTriangle(const SetupTriangle& triangle, const DrawState& state, const Methods& methods,
+                     int width, int height, RasterTriangle& out);
 
 struct PixelRect {
     int minX, maxX, minY, maxY;  // inclusive

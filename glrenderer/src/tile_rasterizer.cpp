@@ -1,5 +1,7 @@
 #include "tile_rasterizer.h"
 
+#include "raster_float_methods.h"
+
 #include <algorithm>
 #include <thread>
 
@@ -45,7 +47,7 @@ void TileRasterizer::flush(Stats& stats) {
         const PixelRect rect{tx * kTileSize, std::min((tx + 1) * kTileSize, binnedWidth_) - 1,
                              ty * kTileSize, std::min((ty + 1) * kTileSize, binnedHeight_) - 1};
         for (std::uint32_t index : bins_[tile])
-            rasterizeTriangleSpans(triangles_[index], rect, framebuffer_, threadCounts_[thread].counts, shader_);
+            rasterizeWithMethod(triangles_[index], rect, framebuffer_, threadCounts_[thread].counts, shader_);
     };
     if (triangles_.size() < kParallelThreshold) {
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawTile(tile, 0);

@@ -52,7 +52,7 @@ TEST(SpanKernels, MatchThePerPixelKernelBitForBit) {
         state.depthWrite = coin(random);
         state.shadeModel = coin(random) ? ShadeModel::Smooth : ShadeModel::Flat;
         RasterTriangle triangle;
-        if (!prepareTriangle(setup, state, kWidth, kHeight, triangle)) continue;
+        if (!prepareTriangle(setup, state, Methods{}, kWidth, kHeight, triangle)) continue;
         ++drawn;
 
         std::vector<std::uint32_t> initialDepth(kWidth * kHeight);

@@ -6,6 +6,7 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/methods.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
 
@@ -37,6 +38,13 @@ public:
     // Clears with colors/depth already converted by the caller's rules (see color_convert.h).
     void clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);
 
+    // Takes effect for primitives submitted after the call.
+    void setMethods(const Methods& methods) {
+        endBatch();
+        methods_ = methods;
+    }
+    const Methods& methods() const { return methods_; }
+
     const Stats& stats() const { return stats_; }
     void resetStats() { stats_ = {}; }
 
@@ -48,6 +56,7 @@ private:
 
     Framebuffer& framebuffer_;
     Stats stats_;
+    Methods methods_;
     DrawState batchState_;
     PrimitiveMode batchMode_ = PrimitiveMode::Points;
     std::vector<Vertex> batch_;
