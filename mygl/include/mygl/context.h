@@ -37,8 +37,8 @@ public:
     // glFinish, then the color buffer as RGBA8, bottom row first (the OSMesa buffer's layout).
     std::vector<std::uint8_t> readPixels();
 
-    // Counters since the last glClear of the color buffer (or resetStats()).
-    const Stats& stats() const;
+    // Counters since the last glClear of the color buffer (or resetStats()); finishes the frame.
+    const Stats& stats();
     void resetStats();
 
     struct State;  // the GL state machine; defined in mygl/src

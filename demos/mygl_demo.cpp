@@ -1,0 +1,92 @@
+// mygl-demo: renders the demo scenes headless on MyGL, OSMesa or both, writes PNGs and, with
+// both, a diff image and a comparison row per scene.
+#include <reference/compare.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render.h"
+
+namespace {
+
+struct Options {
+    std::string scene = "all";
+    std::string backend = "both";
+    int width = 320, height = 240, frame = 0;
+    std::string out = "out";
+    bool list = false;
+};
+
+[[noreturn]] void usage(const std::string& error) {
+    std::fprintf(stderr,
+                 "mygl-demo: %s\n"
+                 "usage: mygl-demo [--scene NAME|all] [--backend mygl|osmesa|both] [--size WxH]\n"
+                 "                 [--frame N] [--out DIR] [--list]\n",
+                 error.c_str());
+    std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) usage("missing value after " + arg);
+            return argv[++i];
+        };
+        if (arg == "--scene") o.scene = value();
+        else if (arg == "--backend") o.backend = value();
+        else if (arg == "--out") o.out = value();
+        else if (arg == "--frame") o.frame = std::atoi(value().c_str());
+        else if (arg == "--list") o.list = true;
+        else if (arg == "--size") {
+            const std::string size = value();
+            if (std::sscanf(size.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1 ||
+                o.width > mygl::Context::kMaxSize || o.height > mygl::Context::kMaxSize)
+                usage("bad --size '" + size + "' (expected WxH, e.g. 320x240)");
+        } else usage("unknown argument '" + arg + "'");
+    }
+    if (o.backend != "both" && !scenes::parseBackend(o.backend)) usage("unknown backend '" + o.backend + "'");
+    if (o.scene != "all" && !scenes::findScene(o.scene)) usage("unknown scene '" + o.scene + "' (see --list)");
+    return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const Options options = parse(argc, argv);
+    if (options.list) {
+        for (const scenes::Scene& scene : scenes::allScenes())
+            std::printf("%-28s %s\n", scene.name.c_str(), scene.description.c_str());
+        return 0;
+    }
+    std::vector<const scenes::Scene*> selected;
+    for (const scenes::Scene& scene : scenes::allScenes())
+        if (options.scene == "all" || scene.name == options.scene) selected.push_back(&scene);
+    std::filesystem::create_directories(options.out);
+    const bool both = options.backend == "both";
+    if (both) std::printf("%-28s %9s %9s %7s %4s\n", "scene", "pixels", "differing", ">1", "max");
+    for (const scenes::Scene* scene : selected) {
+        const std::string base = options.out + "/" + scene->name;
+        if (both || options.backend == "mygl") {
+            const scenes::Frame ours = scenes::render(scenes::Backend::MyGL, *scene, options.width, options.height, options.frame);
+            reference::writePng(base + "-mygl.png", ours.image);
+            if (both) {
+                const scenes::Frame theirs = scenes::render(scenes::Backend::OSMesa, *scene, options.width, options.height, options.frame);
+                reference::writePng(base + "-osmesa.png", theirs.image);
+                reference::writePng(base + "-diff.png", reference::diffImage(ours.image, theirs.image));
+                const reference::Comparison c = reference::compareImages(ours.image, theirs.image);
+                std::printf("%-28s %9lld %9lld %7lld %4d\n", scene->name.c_str(), c.pixels, c.differing,
+                            c.differingMoreThan1, c.maxChannelDifference);
+            }
+        } else {
+            reference::writePng(base + "-osmesa.png",
+                                scenes::render(scenes::Backend::OSMesa, *scene, options.width, options.height, options.frame).image);
+        }
+    }
+    std::printf("images written to %s/\n", options.out.c_str());
+    return 0;
+}

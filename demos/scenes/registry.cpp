@@ -1,0 +1,35 @@
+#include <vector>
+
+#include "primitive_scenes.h"
+#include "scene.h"
+#include "seed_scenes.h"
+
+namespace scenes {
+
+std::span<const Scene> allScenes() {
+    static const std::vector<Scene> scenes{
+        {"cube", "rotating cube, six colored faces, back-face culling and depth test", drawRotatingCube},
+        {"two-cubes", "two cubes at different depths, depth test on", drawTwoCubesDepth},
+        {"two-cubes-nodepth", "two cubes, depth test off: the far one paints over the near one", drawTwoCubesNoDepth},
+        {"concave-hexahedron", "a hexahedron whose faces overlap, culling and depth test", drawConcaveHexahedronDepth},
+        {"concave-hexahedron-nodepth", "the concave hexahedron with culling only", drawConcaveHexahedronNoDepth},
+        {"xmutual", "two intersecting quads, depth test on", drawIntersectingQuadsDepth},
+        {"xmutual-nodepth", "two intersecting quads, depth test off", drawIntersectingQuadsNoDepth},
+        {"smooth-fan", "a smooth-shaded triangle fan", drawSmoothFan},
+        {"polygon5", "a red 5-vertex GL_POLYGON", drawPolygon5},
+        {"near-plane", "a quad mesh crossing the near plane, perspective and depth", drawNearPlaneMesh},
+        {"modes-flat", "every triangle mode, flat shading", drawAllModesFlat},
+        {"modes-smooth", "every triangle mode, smooth shading", drawAllModesSmooth},
+        {"lines-points", "line strips of widths 1-3, a line loop, points of sizes 1-4", drawLinesAndPoints},
+        {"wireframe-cube", "the cube in glPolygonMode GL_LINE with culling", drawWireframeCube},
+    };
+    return scenes;
+}
+
+const Scene* findScene(std::string_view name) {
+    for (const Scene& scene : allScenes())
+        if (scene.name == name) return &scene;
+    return nullptr;
+}
+
+}  // namespace scenes

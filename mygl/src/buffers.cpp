@@ -1,0 +1,93 @@
+// glClear, glFlush, glFinish and glReadPixels.
+#include <cstring>
+
+#include <glrenderer/color_convert.h>
+
+#include "entry_points.h"
+
+namespace mygl {
+namespace {
+
+void clear(GLbitfield mask) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    constexpr GLbitfield kKnown = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+    if (mask & ~kKnown) return setError(*s, GL_INVALID_VALUE);
+    const bool color = mask & GL_COLOR_BUFFER_BIT;
+    const bool depth = mask & GL_DEPTH_BUFFER_BIT;
+    s->pipeline.clear(color, glrenderer::clearColorRgba8(s->clearColor), depth,
+                      glrenderer::toDepth24(static_cast<float>(s->clearDepth)));
+    if (color) s->pipeline.resetStats();  // a frame's counts start at its clear, as the course did
+}
+
+// Bytes of one pixel in `format`/`type`, or 0 if the pair is not supported.
+int bytesPerPixel(GLenum format, GLenum type) {
+    if (type == GL_UNSIGNED_BYTE && format == GL_RGBA) return 4;
+    if (type == GL_UNSIGNED_BYTE && format == GL_RGB) return 3;
+    if (format == GL_DEPTH_COMPONENT && (type == GL_FLOAT || type == GL_UNSIGNED_INT)) return 4;
+    return 0;
+}
+
+bool isKnownFormat(GLenum format) {
+    return format == GL_RGBA || format == GL_RGB || format == GL_DEPTH_COMPONENT || format == GL_RED ||
+           format == GL_GREEN || format == GL_BLUE || format == GL_ALPHA || format == GL_LUMINANCE ||
+           format == GL_LUMINANCE_ALPHA;
+}
+
+bool isKnownType(GLenum type) {
+    return type == GL_UNSIGNED_BYTE || type == GL_BYTE || type == GL_UNSIGNED_SHORT || type == GL_SHORT ||
+           type == GL_UNSIGNED_INT || type == GL_INT || type == GL_FLOAT;
+}
+
+void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, void* pixels) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (!isKnownFormat(format) || !isKnownType(type)) return setError(*s, GL_INVALID_ENUM);
+    if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
+    const int pixelBytes = bytesPerPixel(format, type);
+    if (pixelBytes == 0) return setError(*s, GL_INVALID_OPERATION);  // valid in GL, not offered here
+    if (!pixels || width == 0 || height == 0) return;
+    s->pipeline.finish();
+    const auto& fb = s->framebuffer;
+    const std::size_t align = static_cast<std::size_t>(s->packAlignment);
+    const std::size_t rowBytes = (static_cast<std::size_t>(width) * static_cast<std::size_t>(pixelBytes) + align - 1) / align * align;
+    auto* out = static_cast<std::uint8_t*>(pixels);
+    // Only the part inside the window is written; the rest of the caller's memory is untouched.
+    for (GLint row = std::max(0, -y); row < height && y + row < fb.height(); ++row) {
+        for (GLint column = std::max(0, -x); column < width && x + column < fb.width(); ++column) {
+            const std::size_t source = static_cast<std::size_t>(y + row) * static_cast<std::size_t>(fb.width()) + static_cast<std::size_t>(x + column);
+            std::uint8_t* target = out + static_cast<std::size_t>(row) * rowBytes + static_cast<std::size_t>(column) * static_cast<std::size_t>(pixelBytes);
+            if (format == GL_DEPTH_COMPONENT) {
+                const std::uint32_t depth24 = fb.depth()[source];
+                if (type == GL_FLOAT) {
+                    const float value = static_cast<float>(depth24) / static_cast<float>(glrenderer::kDepthMax24);
+                    std::memcpy(target, &value, sizeof value);
+                } else {
+                    const std::uint32_t value = (depth24 << 8) | (depth24 >> 16);  // 24 to 32 bits
+                    std::memcpy(target, &value, sizeof value);
+                }
+            } else {
+                std::memcpy(target, &fb.color()[source], static_cast<std::size_t>(pixelBytes));
+            }
+        }
+    }
+}
+
+const EntryPoint kEntryPoints[] = {
+    {"glClear", entry(+[](GLbitfield mask) { clear(mask); })},
+    {"glFlush", entry(+[] {
+         if (Context::State* s = stateOutsideBeginEnd()) s->pipeline.endBatch();
+     })},
+    {"glFinish", entry(+[] {
+         if (Context::State* s = stateOutsideBeginEnd()) s->pipeline.finish();
+     })},
+    {"glReadPixels", entry(+[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
+         readPixels(x, y, w, h, format, type, pixels);
+     })},
+};
+
+}  // namespace
+
+std::span<const EntryPoint> bufferEntryPoints() { return kEntryPoints; }
+
+}  // namespace mygl

@@ -1,0 +1,87 @@
+#pragma once
+// The GL state machine behind mygl::Context: what the gl* entry points read and change.
+#include <glad/gl.h>
+
+#include <glrenderer/framebuffer.h>
+#include <glrenderer/pipeline.h>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "matrix_math.h"
+#include "mygl/context.h"
+
+namespace mygl {
+
+class MatrixStack {
+public:
+    explicit MatrixStack(std::size_t maxDepth) : maxDepth_(maxDepth) { stack_.reserve(maxDepth); stack_.push_back(kIdentity); }
+    Matrix& top() { return stack_.back(); }
+    const Matrix& top() const { return stack_.back(); }
+    std::size_t depth() const { return stack_.size(); }
+    std::size_t maxDepth() const { return maxDepth_; }
+    bool push() {
+        if (stack_.size() == maxDepth_) return false;
+        stack_.push_back(stack_.back());
+        return true;
+    }
+    bool pop() {
+        if (stack_.size() == 1) return false;
+        stack_.pop_back();
+        return true;
+    }
+
+private:
+    std::size_t maxDepth_;
+    std::vector<Matrix> stack_;
+};
+
+struct Context::State {
+    State(int width, int height) : framebuffer(width, height), pipeline(framebuffer) {
+        draw.viewport = {0, 0, width, height};
+        vertices.reserve(1024);
+    }
+
+    glrenderer::Framebuffer framebuffer;
+    glrenderer::Pipeline pipeline;
+    GLenum error = GL_NO_ERROR;
+
+    // glBegin/glEnd assembly.
+    bool insideBeginEnd = false;
+    glrenderer::PrimitiveMode mode = glrenderer::PrimitiveMode::Points;
+    std::vector<glrenderer::Vertex> vertices;
+    glm::vec4 color{1, 1, 1, 1};
+    glm::vec3 normal{0, 0, 1};
+    glm::vec4 texCoord{0, 0, 0, 1};
+    bool edgeFlag = true;
+
+    // Matrices; the combined projection * modelview is recomputed when either changes.
+    MatrixStack modelview{32}, projection{32}, texture{10};
+    GLenum matrixMode = GL_MODELVIEW;
+    Matrix modelviewProjection = kIdentity;
+    bool modelviewProjectionStale = false;
+
+    // Fixed-function state, kept as GL values where glGet returns them.
+    glrenderer::DrawState draw;
+    GLenum cullFaceMode = GL_BACK;
+    GLenum frontFace = GL_CCW;
+    GLenum depthFunc = GL_LESS;
+    GLenum shadeModel = GL_SMOOTH;
+    GLenum polygonModeFront = GL_FILL, polygonModeBack = GL_FILL;
+    std::vector<GLenum> otherEnabled;  // accepted capabilities that change nothing here
+    glm::vec4 clearColor{0, 0, 0, 0};
+    double clearDepth = 1.0;
+    int packAlignment = 4, unpackAlignment = 4;
+
+    MatrixStack& currentStack() {
+        return matrixMode == GL_PROJECTION ? projection : matrixMode == GL_TEXTURE ? texture : modelview;
+    }
+};
+
+// The context that receives gl* calls on this thread, or nullptr.
+Context::State* currentState();
+
+// Records `error` unless one is pending (the first error wins until glGetError reads it).
+void setError(Context::State& state, GLenum error);
+
+}  // namespace mygl

@@ -1,0 +1,34 @@
+#pragma once
+// Our GL entry points, gathered per area and looked up by name in entry_points.cpp. They are
+// captureless lambdas with the exact parameter types of glad's PFNGL...PROC typedefs (the GL
+// calling convention is the C one on the platforms we build for).
+#include <span>
+
+#include "context_state.h"
+
+namespace mygl {
+
+struct EntryPoint {
+    const char* name;
+    ProcAddress proc;
+};
+
+template <class Function>
+ProcAddress entry(Function* function) {
+    return reinterpret_cast<ProcAddress>(function);
+}
+
+std::span<const EntryPoint> beginEndEntryPoints();
+std::span<const EntryPoint> matrixEntryPoints();
+std::span<const EntryPoint> stateEntryPoints();
+std::span<const EntryPoint> getEntryPoints();
+std::span<const EntryPoint> bufferEntryPoints();
+
+// The current context if a call that is not allowed between glBegin and glEnd may proceed:
+// nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.
+Context::State* stateOutsideBeginEnd();
+
+// Called before a state change: the reference's vertex buffer flushes there, ending the batch.
+inline void endBatch(Context::State& state) { state.pipeline.endBatch(); }
+
+}  // namespace mygl

@@ -1,0 +1,112 @@
+// glGet* and glGetString: every query is answered once, as doubles, then converted to the
+// caller's type the way the GL spec converts state values.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "entry_points.h"
+
+namespace mygl {
+namespace {
+
+struct Value {
+    std::vector<double> numbers;
+    bool isColorOrNormalized = false;  // integer queries map [-1, 1] to the full integer range
+    bool isBoolean = false;
+};
+
+Value query(const Context::State& s, GLenum name) {
+    auto one = [](double v) { return Value{{v}}; };
+    auto flag = [](bool v) { return Value{{v ? 1.0 : 0.0}, false, true}; };
+    auto matrix = [](const Matrix& m) {
+        Value v;
+        for (float f : m) v.numbers.push_back(f);
+        return v;
+    };
+    const auto& d = s.draw;
+    switch (name) {
+    case GL_VIEWPORT: return Value{{double(d.viewport.x), double(d.viewport.y), double(d.viewport.width), double(d.viewport.height)}};
+    case GL_MODELVIEW_MATRIX: return matrix(s.modelview.top());
+    case GL_PROJECTION_MATRIX: return matrix(s.projection.top());
+    case GL_TEXTURE_MATRIX: return matrix(s.texture.top());
+    case GL_MATRIX_MODE: return one(s.matrixMode);
+    case GL_MODELVIEW_STACK_DEPTH: return one(double(s.modelview.depth()));
+    case GL_PROJECTION_STACK_DEPTH: return one(double(s.projection.depth()));
+    case GL_TEXTURE_STACK_DEPTH: return one(double(s.texture.depth()));
+    case GL_MAX_MODELVIEW_STACK_DEPTH: return one(double(s.modelview.maxDepth()));
+    case GL_MAX_PROJECTION_STACK_DEPTH: return one(double(s.projection.maxDepth()));
+    case GL_MAX_TEXTURE_STACK_DEPTH: return one(double(s.texture.maxDepth()));
+    case GL_MAX_VIEWPORT_DIMS: return Value{{double(Context::kMaxSize), double(Context::kMaxSize)}};
+    case GL_CULL_FACE: return flag(d.cullEnabled);
+    case GL_DEPTH_TEST: return flag(d.depthTest);
+    case GL_CULL_FACE_MODE: return one(s.cullFaceMode);
+    case GL_FRONT_FACE: return one(s.frontFace);
+    case GL_DEPTH_FUNC: return one(s.depthFunc);
+    case GL_DEPTH_WRITEMASK: return flag(d.depthWrite);
+    case GL_SHADE_MODEL: return one(s.shadeModel);
+    case GL_POLYGON_MODE: return Value{{double(s.polygonModeFront), double(s.polygonModeBack)}};
+    case GL_LINE_WIDTH: return one(d.lineWidth);
+    case GL_POINT_SIZE: return one(d.pointSize);
+    case GL_DEPTH_RANGE: return Value{{d.depthNear, d.depthFar}, true};
+    case GL_COLOR_CLEAR_VALUE: return Value{{s.clearColor.r, s.clearColor.g, s.clearColor.b, s.clearColor.a}, true};
+    case GL_DEPTH_CLEAR_VALUE: return Value{{s.clearDepth}, true};
+    case GL_CURRENT_COLOR: return Value{{s.color.r, s.color.g, s.color.b, s.color.a}, true};
+    case GL_CURRENT_NORMAL: return Value{{s.normal.x, s.normal.y, s.normal.z}, true};
+    case GL_CURRENT_TEXTURE_COORDS: return Value{{s.texCoord.s, s.texCoord.t, s.texCoord.p, s.texCoord.q}};
+    case GL_EDGE_FLAG: return flag(s.edgeFlag);
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: return one(8);
+    case GL_DEPTH_BITS: return one(24);
+    case GL_STENCIL_BITS: return one(0);
+    case GL_SUBPIXEL_BITS: return one(8);
+    case GL_PACK_ALIGNMENT: return one(s.packAlignment);
+    case GL_UNPACK_ALIGNMENT: return one(s.unpackAlignment);
+    case GL_DOUBLEBUFFER: return flag(false);
+    default: return {};
+    }
+}
+
+// Answers the query into `out` converted by `convert`, or records GL_INVALID_ENUM.
+template <class T, class Convert>
+void get(GLenum name, T* out, Convert convert) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s || !out) return;
+    const Value value = query(*s, name);
+    if (value.numbers.empty()) return setError(*s, GL_INVALID_ENUM);
+    for (std::size_t i = 0; i < value.numbers.size(); ++i) out[i] = convert(value, value.numbers[i]);
+}
+
+GLint toInteger(const Value& v, double x) {
+    if (v.isColorOrNormalized) {  // [-1, 1] maps linearly onto the integer range
+        return static_cast<GLint>(std::lround(std::clamp(x, -1.0, 1.0) * 2147483647.0));
+    }
+    return static_cast<GLint>(std::lround(std::clamp(x, -2147483648.0, 2147483647.0)));
+}
+
+const EntryPoint kEntryPoints[] = {
+    {"glGetDoublev", entry(+[](GLenum name, GLdouble* out) { get(name, out, [](const Value&, double x) { return x; }); })},
+    {"glGetFloatv", entry(+[](GLenum name, GLfloat* out) {
+         get(name, out, [](const Value&, double x) { return static_cast<GLfloat>(x); });
+     })},
+    {"glGetIntegerv", entry(+[](GLenum name, GLint* out) { get(name, out, toInteger); })},
+    {"glGetBooleanv", entry(+[](GLenum name, GLboolean* out) {
+         get(name, out, [](const Value&, double x) -> GLboolean { return x != 0.0 ? GL_TRUE : GL_FALSE; });
+     })},
+    {"glGetString", entry(+[](GLenum name) -> const GLubyte* {
+         Context::State* s = stateOutsideBeginEnd();
+         if (!s) return nullptr;
+         const char* text = name == GL_VENDOR ? "MyGL"
+                          : name == GL_RENDERER ? "MyGL software rasterizer"
+                          : name == GL_VERSION ? "1.1 MyGL"
+                          : name == GL_EXTENSIONS ? ""
+                          : nullptr;
+         if (!text) setError(*s, GL_INVALID_ENUM);
+         return reinterpret_cast<const GLubyte*>(text);
+     })},
+};
+
+}  // namespace
+
+std::span<const EntryPoint> getEntryPoints() { return kEntryPoints; }
+
+}  // namespace mygl

@@ -1,0 +1,42 @@
+#pragma once
+// 4x4 float matrices, column-major as GL stores them, with the reference's float arithmetic:
+// products summed left to right, one rounding per operation (the build disables contraction).
+#include <array>
+#include <cmath>
+
+#include <glm/vec4.hpp>
+
+namespace mygl {
+
+using Matrix = std::array<float, 16>;
+
+inline constexpr Matrix kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+// Element at `row`, `column`.
+inline float& at(Matrix& m, int row, int column) { return m[static_cast<std::size_t>(column * 4 + row)]; }
+inline float at(const Matrix& m, int row, int column) { return m[static_cast<std::size_t>(column * 4 + row)]; }
+
+// a * b.
+Matrix multiply(const Matrix& a, const Matrix& b);
+
+// The matrices glTranslate, glScale, glRotate, glFrustum and glOrtho multiply onto the current
+// one, built in float as the reference builds them.
+Matrix translation(float x, float y, float z);
+Matrix scaling(float x, float y, float z);
+Matrix rotation(float angleDegrees, float x, float y, float z);
+Matrix frustum(float left, float right, float bottom, float top, float nearVal, float farVal);
+Matrix ortho(float left, float right, float bottom, float top, float nearVal, float farVal);
+
+// The vertex transform of the reference's vertex stage: one column at a time, each step fused.
+inline glm::vec4 transform(const Matrix& m, const glm::vec4& v) {
+    glm::vec4 r;
+    for (int row = 0; row < 4; ++row) {
+        float sum = at(m, row, 0) * v.x;
+        sum = std::fma(at(m, row, 1), v.y, sum);
+        sum = std::fma(at(m, row, 2), v.z, sum);
+        r[row] = std::fma(at(m, row, 3), v.w, sum);
+    }
+    return r;
+}
+
+}  // namespace mygl

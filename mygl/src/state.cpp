@@ -1,0 +1,186 @@
+// Enables and fixed-function state, translated into the pipeline's DrawState.
+#include <algorithm>
+
+#include <glm/common.hpp>
+
+#include "entry_points.h"
+
+namespace mygl {
+namespace {
+
+using glrenderer::CompareFunc;
+using glrenderer::Face;
+using glrenderer::PolygonMode;
+
+// Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
+// and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
+constexpr GLenum kInertCapabilities[] = {
+    GL_ALPHA_TEST, GL_BLEND, GL_COLOR_MATERIAL, GL_DITHER, GL_FOG, GL_LIGHTING, GL_LIGHT0, GL_LIGHT1,
+    GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH, GL_LINE_STIPPLE,
+    GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE,
+    GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
+};
+
+bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
+
+void setCapability(GLenum cap, bool enabled) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (cap == GL_CULL_FACE || cap == GL_DEPTH_TEST) {
+        bool& flag = cap == GL_CULL_FACE ? s->draw.cullEnabled : s->draw.depthTest;
+        if (flag != enabled) endBatch(*s);
+        flag = enabled;
+        return;
+    }
+    if (!isInert(cap)) return setError(*s, GL_INVALID_ENUM);
+    auto& list = s->otherEnabled;
+    const auto found = std::find(list.begin(), list.end(), cap);
+    if (enabled && found == list.end()) list.push_back(cap);
+    if (!enabled && found != list.end()) list.erase(found);
+}
+
+GLboolean isEnabled(GLenum cap) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return GL_FALSE;
+    if (cap == GL_CULL_FACE) return s->draw.cullEnabled;
+    if (cap == GL_DEPTH_TEST) return s->draw.depthTest;
+    if (!isInert(cap)) {
+        setError(*s, GL_INVALID_ENUM);
+        return GL_FALSE;
+    }
+    return std::find(s->otherEnabled.begin(), s->otherEnabled.end(), cap) != s->otherEnabled.end();
+}
+
+// Sets a state value after validation, ending the batch only when the value really changes.
+template <class T, class U>
+void assign(Context::State& s, T& field, U value) {
+    if (field != static_cast<T>(value)) endBatch(s);
+    field = static_cast<T>(value);
+}
+
+void cullFace(GLenum mode) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return setError(*s, GL_INVALID_ENUM);
+    s->cullFaceMode = mode;
+    assign(*s, s->draw.cullFace, mode == GL_FRONT ? Face::Front : mode == GL_BACK ? Face::Back : Face::FrontAndBack);
+}
+
+void frontFace(GLenum mode) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (mode != GL_CW && mode != GL_CCW) return setError(*s, GL_INVALID_ENUM);
+    s->frontFace = mode;
+    assign(*s, s->draw.frontFaceCCW, mode == GL_CCW);
+}
+
+void depthFunc(GLenum func) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (func < GL_NEVER || func > GL_ALWAYS) return setError(*s, GL_INVALID_ENUM);
+    s->depthFunc = func;
+    assign(*s, s->draw.depthFunc, static_cast<CompareFunc>(func - GL_NEVER));
+}
+
+void shadeModel(GLenum mode) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (mode != GL_FLAT && mode != GL_SMOOTH) return setError(*s, GL_INVALID_ENUM);
+    s->shadeModel = mode;
+    assign(*s, s->draw.shadeModel, mode == GL_FLAT ? glrenderer::ShadeModel::Flat : glrenderer::ShadeModel::Smooth);
+}
+
+void polygonMode(GLenum face, GLenum mode) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) || mode < GL_POINT || mode > GL_FILL)
+        return setError(*s, GL_INVALID_ENUM);
+    const auto value = static_cast<PolygonMode>(mode - GL_POINT);
+    if (face != GL_BACK) {
+        s->polygonModeFront = mode;
+        assign(*s, s->draw.polygonFront, value);
+    }
+    if (face != GL_FRONT) {
+        s->polygonModeBack = mode;
+        assign(*s, s->draw.polygonBack, value);
+    }
+}
+
+void positiveSize(float& field, GLfloat size) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (!(size > 0.0f)) return setError(*s, GL_INVALID_VALUE);
+    assign(*s, field, size);
+}
+
+constexpr int kMaxViewportDimension = Context::kMaxSize;
+
+void viewport(GLint x, GLint y, GLsizei width, GLsizei height) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
+    // Sizes clamp to GL_MAX_VIEWPORT_DIMS; the origin to the bounds the reference keeps it in.
+    const int bound = 2 * kMaxViewportDimension;
+    const glrenderer::Viewport v{std::clamp(x, -bound, bound - 1), std::clamp(y, -bound, bound - 1),
+                                 std::min(width, kMaxViewportDimension), std::min(height, kMaxViewportDimension)};
+    assign(*s, s->draw.viewport, v);
+}
+
+void depthRange(GLdouble nearVal, GLdouble farVal) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    assign(*s, s->draw.depthNear, static_cast<float>(std::clamp(nearVal, 0.0, 1.0)));
+    assign(*s, s->draw.depthFar, static_cast<float>(std::clamp(farVal, 0.0, 1.0)));
+}
+
+void pixelStore(GLenum name, GLint value) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (name != GL_PACK_ALIGNMENT && name != GL_UNPACK_ALIGNMENT) return setError(*s, GL_INVALID_ENUM);
+    if (value != 1 && value != 2 && value != 4 && value != 8) return setError(*s, GL_INVALID_VALUE);
+    (name == GL_PACK_ALIGNMENT ? s->packAlignment : s->unpackAlignment) = value;
+}
+
+const EntryPoint kEntryPoints[] = {
+    {"glEnable", entry(+[](GLenum cap) { setCapability(cap, true); })},
+    {"glDisable", entry(+[](GLenum cap) { setCapability(cap, false); })},
+    {"glIsEnabled", entry(+[](GLenum cap) { return isEnabled(cap); })},
+    {"glCullFace", entry(+[](GLenum mode) { cullFace(mode); })},
+    {"glFrontFace", entry(+[](GLenum mode) { frontFace(mode); })},
+    {"glDepthFunc", entry(+[](GLenum func) { depthFunc(func); })},
+    {"glDepthMask", entry(+[](GLboolean flag) {
+         if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.depthWrite, flag != GL_FALSE);
+     })},
+    {"glShadeModel", entry(+[](GLenum mode) { shadeModel(mode); })},
+    {"glPolygonMode", entry(+[](GLenum face, GLenum mode) { polygonMode(face, mode); })},
+    {"glLineWidth", entry(+[](GLfloat width) {
+         if (Context::State* s = currentState()) positiveSize(s->draw.lineWidth, width);
+     })},
+    {"glPointSize", entry(+[](GLfloat size) {
+         if (Context::State* s = currentState()) positiveSize(s->draw.pointSize, size);
+     })},
+    {"glViewport", entry(+[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); })},
+    {"glDepthRange", entry(+[](GLdouble n, GLdouble f) { depthRange(n, f); })},
+    {"glClearColor", entry(+[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+         if (Context::State* s = stateOutsideBeginEnd())
+             s->clearColor = glm::clamp(glm::vec4(r, g, b, a), glm::vec4(0.0f), glm::vec4(1.0f));
+     })},
+    {"glClearDepth", entry(+[](GLdouble depth) {
+         if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = std::clamp(depth, 0.0, 1.0);
+     })},
+    {"glPixelStorei", entry(+[](GLenum name, GLint value) { pixelStore(name, value); })},
+    {"glHint", entry(+[](GLenum, GLenum) { stateOutsideBeginEnd(); })},
+    {"glGetError", entry(+[]() -> GLenum {
+         Context::State* s = stateOutsideBeginEnd();
+         if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)
+         const GLenum error = s->error;
+         s->error = GL_NO_ERROR;
+         return error;
+     })},
+};
+
+}  // namespace
+
+std::span<const EntryPoint> stateEntryPoints() { return kEntryPoints; }
+
+}  // namespace mygl
