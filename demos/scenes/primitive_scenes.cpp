@@ -74,6 +74,7 @@ void drawPolygon5(int width, int height, int) {
     beginFrame(width, height, false, false);
     pixelOrtho(width, height);
     const float w = static_cast<float>(width), h = static_cast<float>(height);
+    glShadeModel(GL_FLAT);
     glColor3f(1.0f, 0.0f, 0.0f);
     glBegin(GL_POLYGON);
     glVertex2f(0.2f * w, 0.15f * h);
@@ -146,6 +147,7 @@ void drawWireframeCube(int width, int height, int frame) {
     static const float colors[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.25f, 0.35f, 0.95f},
                                        {0.95f, 0.85f, 0.2f}, {0.85f, 0.3f, 0.85f}, {0.2f, 0.85f, 0.85f}};
     beginFrame(width, height, true, true);
+    glShadeModel(GL_FLAT);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glMatrixMode(GL_PROJECTION);
     gluPerspective(45.0, static_cast<double>(width) / height, 1.0, 50.0);

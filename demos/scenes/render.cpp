@@ -1,8 +1,20 @@
 #include "render.h"
 
+#include <glad/gl.h>
 #include <reference/osmesa_context.h>
 
 namespace scenes {
+namespace {
+
+// The depth buffer through the loaded GL table, scaled to 32 bits as GL returns it.
+std::vector<std::uint32_t> readDepth(int width, int height) {
+    std::vector<std::uint32_t> depth(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
+    return depth;
+}
+
+}  // namespace
 
 std::optional<Backend> parseBackend(std::string_view name) {
     if (name == "mygl") return Backend::MyGL;
@@ -19,12 +31,14 @@ Frame render(Backend backend, const Scene& scene, int width, int height, int fra
         context.makeCurrent();
         scene.draw(width, height, frame);
         result.image.rgba = context.readPixels();
+        result.depth = readDepth(width, height);
         result.stats = context.stats();
     } else {
         reference::OsmesaContext context(width, height);
         context.makeCurrent();
         scene.draw(width, height, frame);
         result.image.rgba = context.readPixels();
+        result.depth = readDepth(width, height);
     }
     return result;
 }

@@ -3,7 +3,9 @@
 #include <mygl/context.h>
 #include <reference/image.h>
 
+#include <cstdint>
 #include <optional>
+#include <vector>
 #include <string_view>
 
 #include "scene.h"
@@ -15,6 +17,7 @@ std::optional<Backend> parseBackend(std::string_view name);
 
 struct Frame {
     reference::Image image;
+    std::vector<std::uint32_t> depth;  // glReadPixels(GL_DEPTH_COMPONENT, GL_UNSIGNED_INT), bottom row first
     mygl::Stats stats;  // MyGL's counters; zero for OSMesa
 };
 

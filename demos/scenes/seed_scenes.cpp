@@ -15,7 +15,9 @@ namespace {
 constexpr float kFaceColors[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.25f, 0.35f, 0.95f},
                                      {0.95f, 0.85f, 0.2f}, {0.85f, 0.3f, 0.85f}, {0.2f, 0.85f, 0.85f}};
 
+// The seed scenes color each face: flat shading, as the course drew them.
 void perspective(int width, int height) {
+    glShadeModel(GL_FLAT);
     glMatrixMode(GL_PROJECTION);
     gluPerspective(45.0, static_cast<double>(width) / height, 1.0, 50.0);
     glMatrixMode(GL_MODELVIEW);

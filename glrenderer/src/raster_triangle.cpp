@@ -87,12 +87,14 @@ bool prepareTriangle(const SetupTriangle& t, const DrawState& state, const Metho
 
     out.state = {state.depthTest, state.depthFunc, state.depthWrite,
                  state.shadeModel == ShadeModel::Smooth};
-    if (!out.state.smooth && !out.state.depthTest) {
+    const bool perspective = methods.interpolation == Interpolation::PerspectiveCorrect;
+    // Flat shading is a constant in the reference, not an interpolation of equal colors.
+    if (!out.state.smooth) {
         out.flatColor = fragmentRgba8(t.flatColor);
-        return true;
+        if (!out.state.depthTest) return true;
     }
     const PlaneBuilder planes(t.v[0], t.v[1], t.v[2]);
-    if (out.state.smooth && methods.interpolation == Interpolation::ScreenLinear) {
+    if (out.state.smooth && !perspective) {
         for (int i = 0; i < 4; ++i) out.color[i] = planes.plane(t.v[0].color[i], t.v[1].color[i], t.v[2].color[i]);
         out.invW = {1.0f, 0.0f, 0.0f};
     } else if (out.state.smooth) {
@@ -101,8 +103,6 @@ bool prepareTriangle(const SetupTriangle& t, const DrawState& state, const Metho
                                         t.v[2].color[i] * t.v[2].invW);
         }
         out.invW = planes.plane(t.v[0].invW, t.v[1].invW, t.v[2].invW);
-    } else {
-        out.flatColor = fragmentRgba8(t.flatColor);
     }
     if (out.state.depthTest) out.depth = planes.plane(t.v[0].z, t.v[1].z, t.v[2].z);
     return true;

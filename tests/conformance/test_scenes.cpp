@@ -1,0 +1,95 @@
+// Every demo scene rendered live by MyGL and by OSMesa in the test, compared pixel by pixel
+// under the accuracy contract (../shared/DESIGN.md section 4). Never against stored images.
+#include <gtest/gtest.h>
+
+#include <reference/compare.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "render.h"
+
+namespace {
+
+// Scenes drawn with glShadeModel(GL_FLAT): no color is interpolated, so the frames must be
+// identical bit for bit. The others interpolate colors (even equal ones, perspective-correct),
+// where the reference itself moves by one step between CPUs: within 1 per channel, with exact
+// coverage (a coverage difference shows up as a pixel differing by far more than 1).
+const std::set<std::string> kFlatScenes = {
+    "cube", "two-cubes", "two-cubes-nodepth", "concave-hexahedron", "concave-hexahedron-nodepth",
+    "xmutual", "xmutual-nodepth", "polygon5", "modes-flat", "wireframe-cube",
+};
+
+struct Case {
+    const scenes::Scene* scene;
+    int frame;
+};
+
+std::vector<Case> cases() {
+    std::vector<Case> all;
+    for (const scenes::Scene& scene : scenes::allScenes()) {
+        all.push_back({&scene, 0});
+        if (scene.name == "cube" || scene.name == "wireframe-cube")
+            for (int frame : {3, 11, 29}) all.push_back({&scene, frame});
+    }
+    return all;
+}
+
+class SceneConformance : public testing::TestWithParam<Case> {};
+
+void writeFailureImages(const std::string& name, const reference::Image& ours, const reference::Image& theirs) {
+    const std::filesystem::path dir = MYGL_FAILURE_DIR;
+    std::filesystem::create_directories(dir);
+    reference::writePng((dir / (name + "-mygl.png")).string(), ours);
+    reference::writePng((dir / (name + "-osmesa.png")).string(), theirs);
+    reference::writePng((dir / (name + "-diff.png")).string(), reference::diffImage(ours, theirs));
+}
+
+// Pixels whose colors differ while both depth buffers hold the same depth within one unit of
+// the 24-bit buffer: two surfaces tie there, and which one wins is decided by the last bit of
+// the depth interpolation (DESIGN.md section 4 excludes them).
+// Counts the pixels differing by more than `tolerance` in some channel that are such ties.
+long long depthTies(const scenes::Frame& ours, const scenes::Frame& theirs, int tolerance) {
+    long long ties = 0;
+    for (std::size_t i = 0; i < ours.depth.size(); ++i) {
+        int difference = 0;
+        for (std::size_t c = 0; c < 4; ++c)
+            difference = std::max(difference, std::abs(int{ours.image.rgba[i * 4 + c]} - int{theirs.image.rgba[i * 4 + c]}));
+        const long long a = ours.depth[i] >> 8, b = theirs.depth[i] >> 8;
+        const bool written = a != 0xFFFFFF;  // not the cleared far value: a surface is there
+        ties += difference > tolerance && written && std::llabs(a - b) <= 1;
+    }
+    return ties;
+}
+
+TEST_P(SceneConformance, MatchesOsmesa) {
+    const auto [scene, frame] = GetParam();
+    for (const auto& [width, height] : {std::pair{320, 240}, std::pair{173, 97}}) {
+        const scenes::Frame oursFrame = scenes::render(scenes::Backend::MyGL, *scene, width, height, frame);
+        const scenes::Frame theirsFrame = scenes::render(scenes::Backend::OSMesa, *scene, width, height, frame);
+        const auto& ours = oursFrame.image;
+        const auto& theirs = theirsFrame.image;
+        const reference::Comparison c = reference::compareImages(ours, theirs);
+        const bool flat = kFlatScenes.contains(scene->name);
+        const long long ties = depthTies(oursFrame, theirsFrame, flat ? 0 : 1);
+        const bool pass = (flat ? c.differing : c.differingMoreThan1) - ties == 0;
+        if (!pass) writeFailureImages(scene->name + "-" + std::to_string(frame) + "-" + std::to_string(width), ours, theirs);
+        EXPECT_TRUE(pass) << scene->name << " frame " << frame << " at " << width << "x" << height << ": "
+                          << reference::toString(c) << " depth-ties=" << ties << (flat ? " (bit-exact required)" : " (within 1 required)")
+                          << "; images in " << MYGL_FAILURE_DIR;
+    }
+}
+
+std::string caseName(const testing::TestParamInfo<Case>& info) {
+    std::string name = info.param.scene->name + "_frame" + std::to_string(info.param.frame);
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllScenes, SceneConformance, testing::ValuesIn(cases()), caseName);
+
+}  // namespace
