@@ -77,8 +77,8 @@ void get(GLenum name, T* out, Convert convert) {
 }
 
 GLint toInteger(const Value& v, double x) {
-    if (v.isColorOrNormalized) {  // [-1, 1] maps linearly onto the integer range
-        return static_cast<GLint>(std::lround(std::clamp(x, -1.0, 1.0) * 2147483647.0));
+    if (v.isColorOrNormalized) {  // [-1, 1] maps linearly onto the integer range, truncated as the reference does
+        return static_cast<GLint>(std::clamp(x, -1.0, 1.0) * 2147483647.0);
     }
     return static_cast<GLint>(std::lround(std::clamp(x, -2147483648.0, 2147483647.0)));
 }

@@ -1,0 +1,125 @@
+// GL errors on misuse, checked against what the GL spec says and against what OSMesa reports
+// for the very same calls; the offending call must have no other effect.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "backends.h"
+
+using testing_support::onBothBackends;
+
+namespace {
+
+struct Misuse {
+    std::string name;
+    GLenum expected;
+    std::function<void()> calls;
+    // Set where the reference departs from the spec: what it reports instead, and why.
+    GLenum referenceReports = GL_NO_ERROR;
+    const char* referenceDeparture = nullptr;
+};
+
+std::vector<Misuse> misuses() {
+    return {
+        {"glBegin with a bad mode", GL_INVALID_ENUM, [] { glBegin(0x20); }},
+        {"glBegin inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_TRIANGLES); glBegin(GL_TRIANGLES); glEnd(); }},
+        {"glEnd without glBegin", GL_INVALID_OPERATION, [] { glEnd(); }},
+        {"glClear inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_POINTS); glClear(GL_COLOR_BUFFER_BIT); glEnd(); }},
+        {"glEnable inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_LINES); glEnable(GL_CULL_FACE); glEnd(); }},
+        {"glLoadIdentity inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_QUADS); glLoadIdentity(); glEnd(); }},
+        {"glFinish inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_QUADS); glFinish(); glEnd(); }},
+        {"glEnable of an unknown capability", GL_INVALID_ENUM, [] { glEnable(0x1234); }},
+        {"glCullFace with a bad face", GL_INVALID_ENUM, [] { glCullFace(GL_TRIANGLES); }},
+        {"glFrontFace with a bad mode", GL_INVALID_ENUM, [] { glFrontFace(GL_LINE); }},
+        {"glDepthFunc with a bad function", GL_INVALID_ENUM, [] { glDepthFunc(GL_FRONT); }},
+        {"glShadeModel with a bad mode", GL_INVALID_ENUM, [] { glShadeModel(GL_FILL); }},
+        {"glPolygonMode with a bad mode", GL_INVALID_ENUM, [] { glPolygonMode(GL_FRONT_AND_BACK, GL_TRIANGLES); }},
+        {"glMatrixMode with a bad mode", GL_INVALID_ENUM, [] { glMatrixMode(GL_LINE); }},
+        {"glGetIntegerv of an unknown name", GL_INVALID_ENUM, [] { GLint v[16]; glGetIntegerv(0x9999, v); }},
+        {"glReadPixels with a bad format", GL_INVALID_ENUM, [] { GLubyte p[64]; glReadPixels(0, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, p); },
+         GL_INVALID_OPERATION, "Mesa validates the format/type pair first and reports the pair"},
+        {"glViewport with a negative width", GL_INVALID_VALUE, [] { glViewport(0, 0, -1, 5); }},
+        {"glLineWidth of zero", GL_INVALID_VALUE, [] { glLineWidth(0.0f); }},
+        {"glPointSize below zero", GL_INVALID_VALUE, [] { glPointSize(-1.0f); }},
+        {"glFrustum with near = 0", GL_INVALID_VALUE, [] { glFrustum(-1, 1, -1, 1, 0, 10); }},
+        {"glFrustum with left = right", GL_INVALID_VALUE, [] { glFrustum(1, 1, -1, 1, 1, 10); }},
+        {"glOrtho with near = far", GL_INVALID_VALUE, [] { glOrtho(-1, 1, -1, 1, 2, 2); }},
+        {"glClear with unknown bits", GL_INVALID_VALUE, [] { glClear(0x1); }},
+        {"glReadPixels with a negative size", GL_INVALID_VALUE, [] { GLubyte p[64]; glReadPixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p); }},
+        {"glPixelStorei with alignment 3", GL_INVALID_VALUE, [] { glPixelStorei(GL_PACK_ALIGNMENT, 3); }},
+        {"glPopMatrix on an empty stack", GL_STACK_UNDERFLOW, [] { glPopMatrix(); }},
+        {"glPushMatrix past the modelview depth", GL_STACK_OVERFLOW, [] { for (int i = 0; i < 32; ++i) glPushMatrix(); }},
+        {"the first error is kept", GL_INVALID_ENUM, [] { glEnable(0x1234); glViewport(0, 0, -1, -1); }},
+    };
+}
+
+}  // namespace
+
+TEST(GlErrors, MisuseReportsTheSpecErrorLikeTheReference) {
+    for (const Misuse& misuse : misuses()) {
+        const auto errors = onBothBackends<std::vector<GLenum>>([&] {
+            const GLenum before = glGetError();
+            misuse.calls();
+            const GLenum first = glGetError();
+            const GLenum second = glGetError();  // reading clears it
+            return std::vector<GLenum>{before, first, second};
+        });
+        EXPECT_EQ(errors.mygl, (std::vector<GLenum>{GL_NO_ERROR, misuse.expected, GL_NO_ERROR})) << misuse.name;
+        const GLenum referenceExpected = misuse.referenceDeparture ? misuse.referenceReports : misuse.expected;
+        EXPECT_EQ(errors.osmesa, (std::vector<GLenum>{GL_NO_ERROR, referenceExpected, GL_NO_ERROR})) << misuse.name;
+    }
+}
+
+TEST(GlErrors, OffendingCallsChangeNothing) {
+    const auto state = onBothBackends<std::vector<GLint>>([] {
+        glCullFace(GL_FRONT);
+        glCullFace(GL_TRIANGLES);
+        glDepthFunc(GL_GREATER);
+        glDepthFunc(GL_FRONT);
+        glViewport(1, 2, 3, 4);
+        glViewport(0, 0, -1, 5);
+        glMatrixMode(GL_PROJECTION);
+        glMatrixMode(GL_LINE);
+        glBegin(GL_TRIANGLES);
+        glShadeModel(GL_FLAT);  // not allowed inside glBegin/glEnd
+        glEnd();
+        std::vector<GLint> v(8);
+        glGetIntegerv(GL_CULL_FACE_MODE, &v[0]);
+        glGetIntegerv(GL_DEPTH_FUNC, &v[1]);
+        glGetIntegerv(GL_VIEWPORT, &v[2]);
+        glGetIntegerv(GL_MATRIX_MODE, &v[6]);
+        glGetIntegerv(GL_SHADE_MODEL, &v[7]);
+        return v;
+    });
+    EXPECT_EQ(state.mygl, (std::vector<GLint>{GL_FRONT, GL_GREATER, 1, 2, 3, 4, GL_PROJECTION, GL_SMOOTH}));
+    EXPECT_EQ(state.mygl, state.osmesa);
+}
+
+TEST(GlErrors, CallsWithoutACurrentContextDoNothing) {
+    {
+        mygl::Context context(8, 8);
+        context.makeCurrent();
+    }  // destroyed: the table still points at MyGL, but no context is current
+    EXPECT_EQ(mygl::Context::current(), nullptr);
+    glBegin(GL_TRIANGLES);
+    glVertex3f(0, 0, 0);
+    glEnd();
+    glClear(GL_COLOR_BUFFER_BIT);
+    GLint viewport[4] = {7, 7, 7, 7};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    EXPECT_EQ(viewport[0], 7);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+TEST(GlErrors, UnknownEntryPointsAreNull) {
+    EXPECT_EQ(mygl::getProcAddress("glNoSuchFunction"), nullptr);
+    EXPECT_EQ(mygl::getProcAddress(nullptr), nullptr);
+    EXPECT_NE(mygl::getProcAddress("glBegin"), nullptr);
+}
+
+TEST(Context, RejectsBadSizes) {
+    EXPECT_THROW(mygl::Context(0, 10), std::invalid_argument);
+    EXPECT_THROW(mygl::Context(10, -1), std::invalid_argument);
+    EXPECT_THROW(mygl::Context(mygl::Context::kMaxSize + 1, 1), std::invalid_argument);
+}
