@@ -1,0 +1,83 @@
+// The reference backend itself and the image tools the comparisons rely on.
+#include <gtest/gtest.h>
+
+#include <glad/gl.h>
+#include <reference/compare.h>
+#include <reference/osmesa_context.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace {
+
+int coveredPixels(const std::vector<std::uint8_t>& rgba) {
+    int covered = 0;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) covered += rgba[i] != 0;
+    return covered;
+}
+
+}  // namespace
+
+TEST(OsmesaContext, RightTriangleCovers378PixelsWithRowZeroAtTheBottom) {
+    reference::OsmesaContext context(32, 32);
+    context.makeCurrent();
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glOrtho(0, 32, 0, 32, -1, 1);
+    glColor3f(1, 0, 0);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(2, 2);
+    glVertex2f(30, 2);
+    glVertex2f(2, 30);
+    glEnd();
+    const auto pixels = context.readPixels();
+    EXPECT_EQ(coveredPixels(pixels), 378);
+    EXPECT_EQ(pixels[(2 * 32 + 28) * 4], 255);  // row 2 counted from the bottom, column 28: covered
+    EXPECT_EQ(pixels[(29 * 32 + 28) * 4], 0);   // the same column near the top: outside
+}
+
+TEST(OsmesaContext, TwoContextsKeepTheirOwnBuffers) {
+    reference::OsmesaContext red(4, 4), blue(4, 4);
+    red.makeCurrent();
+    glClearColor(1, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    blue.makeCurrent();
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    EXPECT_EQ(red.readPixels()[0], 255);
+    EXPECT_EQ(blue.readPixels()[2], 255);
+    EXPECT_EQ(blue.readPixels()[0], 0);
+}
+
+TEST(OsmesaContext, RejectsBadSizes) { EXPECT_THROW(reference::OsmesaContext(0, 4), std::runtime_error); }
+
+TEST(Images, PngRoundTripKeepsPixelsAndOrientation) {
+    reference::Image image{3, 2, {}};
+    for (int i = 0; i < 3 * 2 * 4; ++i) image.rgba.push_back(static_cast<std::uint8_t>(i * 10));
+    const std::string path = (std::filesystem::temp_directory_path() / "mygl_roundtrip.png").string();
+    reference::writePng(path, image);
+    const reference::Image back = reference::readPng(path);
+    std::remove(path.c_str());
+    EXPECT_EQ(back.width, 3);
+    EXPECT_EQ(back.height, 2);
+    EXPECT_EQ(back.rgba, image.rgba);
+}
+
+TEST(Images, ComparisonCountsAndDiffImage) {
+    reference::Image a{2, 2, std::vector<std::uint8_t>(16, 100)};
+    reference::Image b = a;
+    b.rgba[0] = 101;  // pixel 0 differs by 1
+    b.rgba[6] = 140;  // pixel 1 differs by 40
+    const reference::Comparison c = reference::compareImages(a, b);
+    EXPECT_EQ(c.pixels, 4);
+    EXPECT_EQ(c.differing, 2);
+    EXPECT_EQ(c.differingMoreThan1, 1);
+    EXPECT_EQ(c.maxChannelDifference, 40);
+    const reference::Image diff = reference::diffImage(a, b);
+    EXPECT_EQ(diff.rgba[0], diff.rgba[1]);  // within 1: gray
+    EXPECT_GT(diff.rgba[4], 128);           // more than 1: red
+    EXPECT_EQ(diff.rgba[5], 0);
+    EXPECT_EQ(diff.rgba[8], 0);             // equal: black
+    EXPECT_THROW(reference::compareImages(a, reference::Image{1, 1, std::vector<std::uint8_t>(4)}), std::invalid_argument);
+}
