@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
+#include <mygl/context.h>
+#include <reference/call_recorder.h>
 #include <reference/compare.h>
 #include <reference/osmesa_context.h>
 
@@ -80,4 +82,55 @@ TEST(Images, ComparisonCountsAndDiffImage) {
     EXPECT_EQ(diff.rgba[5], 0);
     EXPECT_EQ(diff.rgba[8], 0);             // equal: black
     EXPECT_THROW(reference::compareImages(a, reference::Image{1, 1, std::vector<std::uint8_t>(4)}), std::invalid_argument);
+}
+
+TEST(CallRecorder, AFrameRecordedOnMyglReplaysIdenticallyOnBothBackends) {
+    // A program whose display code advances its own animation counter: replaying its calls is
+    // the only way to show both backends the same frame.
+    static int counter = 0;
+    const auto display = [] {
+        ++counter;
+        glViewport(0, 0, 64, 48);
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glFrustum(-1, 1, -0.75, 0.75, 1, 10);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glTranslatef(0, 0, -3);
+        glRotatef(static_cast<float>(counter) * 17.0f, 0.3f, 1.0f, 0.0f);
+        const GLfloat corner[3] = {0.5f, -0.8f, 0.2f};
+        glBegin(GL_TRIANGLES);
+        glColor3f(1, 0, 0);
+        glVertex3f(-1, -1, 0);
+        glColor3ub(0, 255, 0);
+        glVertex3fv(corner);
+        glColor3d(0, 0, 1);
+        glVertex3f(0, 1, -0.5f);
+        glEnd();
+    };
+    reference::CallRecorder recorder;
+    mygl::Context original(64, 48);
+    original.makeCurrent();
+    recorder.start();
+    display();
+    recorder.stop();
+    const auto recordedFrame = original.readPixels();
+    EXPECT_EQ(counter, 1);
+    EXPECT_GT(recorder.size(), 15u);
+
+    mygl::Context again(64, 48);
+    again.makeCurrent();
+    recorder.replay();
+    EXPECT_EQ(again.readPixels(), recordedFrame);
+
+    reference::OsmesaContext osmesa(64, 48);
+    osmesa.makeCurrent();
+    recorder.replay();
+    const reference::Image ours{64, 48, recordedFrame}, theirs{64, 48, osmesa.readPixels()};
+    EXPECT_EQ(reference::compareImages(ours, theirs).differingMoreThan1, 0);
+    EXPECT_GT(coveredPixels(theirs.rgba), 100);
+    EXPECT_EQ(counter, 1);  // replay never runs the program's code
 }
