@@ -19,12 +19,6 @@ constexpr float kMaxLineCoordinate = 1 << 22;
 // The reference's maximum line width.
 constexpr float kMaxLineWidth = 255.0f;
 
-// Fixed point at 1/256 pixel, rounded as the reference's lines and points round (unlike its
-// triangles): add or subtract a half in float, then truncate. Halves go away from zero.
-std::int64_t toFixed(float pixels) {
-    return roundHalfAway(pixels * kSubpixelScale);
-}
-
 // The reference's sign test counts zero as positive.
 bool nonNegative(float v) { return v >= 0.0f; }
 float fraction(float v) { return v - std::floor(v); }
@@ -118,10 +112,10 @@ LineQuad buildQuad(float x1, float y1, float x2, float y2, std::int64_t fixedWid
             }
         }
         // After the swap (leftX, leftY) is the reference's "v1": the right end when dx < 0.
-        const std::int64_t ax = toFixed(leftX + xOffset - 0.5f);
-        const std::int64_t bx = toFixed(rightX + xOffsetEnd - 0.5f);
-        const std::int64_t ay = toFixed(leftY + yOffset - 0.5f);
-        const std::int64_t by = toFixed(rightY + yOffsetEnd - 0.5f);
+        const std::int64_t ax = toFixedHalfAway(leftX + xOffset - 0.5f);
+        const std::int64_t bx = toFixedHalfAway(rightX + xOffsetEnd - 0.5f);
+        const std::int64_t ay = toFixedHalfAway(leftY + yOffset - 0.5f);
+        const std::int64_t by = toFixedHalfAway(rightY + yOffsetEnd - 0.5f);
         q = {{ax, bx, bx, ax}, {ay - half, by - half, by + half, ay + half}};
     } else {
         const float dxdy = dx / dy;
@@ -151,10 +145,10 @@ LineQuad buildQuad(float x1, float y1, float x2, float y2, std::int64_t fixedWid
                 xOffsetEnd = yOffsetEnd * dxdy;
             }
         }
-        const std::int64_t ax = toFixed(topX + xOffset - 0.5f);
-        const std::int64_t bx = toFixed(bottomX + xOffsetEnd - 0.5f);
-        const std::int64_t ay = toFixed(topY + yOffset - 0.5f);
-        const std::int64_t by = toFixed(bottomY + yOffsetEnd - 0.5f);
+        const std::int64_t ax = toFixedHalfAway(topX + xOffset - 0.5f);
+        const std::int64_t bx = toFixedHalfAway(bottomX + xOffsetEnd - 0.5f);
+        const std::int64_t ay = toFixedHalfAway(topY + yOffset - 0.5f);
+        const std::int64_t by = toFixedHalfAway(bottomY + yOffsetEnd - 0.5f);
         q = {{ax - half, bx - half, bx + half, ax + half}, {ay, by, by, ay}};
     }
     return q;

@@ -16,12 +16,6 @@ constexpr float kMaxPointCoordinate = 1 << 22;
 // The reference's maximum point size.
 constexpr float kMaxPointSize = 255.0f;
 
-// Fixed point at 1/256 pixel, rounded as the reference's lines and points round (unlike its
-// triangles): add or subtract a half in float, then truncate. Halves go away from zero.
-std::int64_t toFixed(float pixels) {
-    return roundHalfAway(pixels * kSubpixelScale);
-}
-
 struct PixelBox {
     std::int64_t x0, y0, x1, y1;  // inclusive
 };
@@ -31,9 +25,9 @@ struct PixelBox {
 // in GL coordinates. Size 1 takes the pixel holding the center, odd sizes grow around it, even
 // sizes around the nearest pixel corner. Sizes round to an integer with halves going down.
 PixelBox pointBox(const WindowVertex& v, float size) {
-    const std::int64_t x = toFixed(v.x);
-    const std::int64_t y = toFixed(v.y) - 1;
-    const std::int64_t rounded = (toFixed(size) + (1 << kSubpixelBits) / 2 - 1) >> kSubpixelBits;
+    const std::int64_t x = toFixedHalfAway(v.x);
+    const std::int64_t y = toFixedHalfAway(v.y) - 1;
+    const std::int64_t rounded = (toFixedHalfAway(size) + (1 << kSubpixelBits) / 2 - 1) >> kSubpixelBits;
     const std::int64_t s = std::max<std::int64_t>(rounded, 1);
     std::int64_t x0, y0;
     if (s % 2 == 1) {
