@@ -55,9 +55,12 @@ void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPa
         break;
     }
     case PrimitiveMode::QuadStrip:
+        // The same two triangles on both paths, emitted in opposite orders (which shows where a
+        // strip folds over itself without the depth test).
         for (std::uint32_t i = 0; i + 3 < count; i += 2) {
-            emit(TriangleIndices{{i, i + 1, i + 3}});
-            emit(TriangleIndices{{i + 2, i, i + 3}});
+            const TriangleIndices first{{i, i + 1, i + 3}}, second{{i + 2, i, i + 3}};
+            if (path == DecompositionPath::Direct) emit(first), emit(second);
+            else emit(second), emit(first);
         }
         break;
     case PrimitiveMode::Polygon:

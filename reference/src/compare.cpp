@@ -36,6 +36,21 @@ Comparison compareImages(const Image& ours, const Image& reference) {
     return result;
 }
 
+long long depthTies(const Image& ours, const Image& reference, const std::vector<std::uint32_t>& oursDepth,
+                    const std::vector<std::uint32_t>& referenceDepth, int tolerance) {
+    requireSameSize(ours, reference);
+    if (oursDepth.size() != ours.rgba.size() / 4 || referenceDepth.size() != oursDepth.size()) {
+        throw std::invalid_argument("depth buffers do not match the images");
+    }
+    long long ties = 0;
+    for (std::size_t p = 0; p < oursDepth.size(); ++p) {
+        const long long a = oursDepth[p] >> 8, b = referenceDepth[p] >> 8;
+        const bool written = a != 0xFFFFFF;  // not the cleared far value: a surface is there
+        ties += pixelDifference(ours, reference, p) > tolerance && written && std::llabs(a - b) <= 1;
+    }
+    return ties;
+}
+
 Image diffImage(const Image& ours, const Image& reference) {
     requireSameSize(ours, reference);
     Image diff{ours.width, ours.height, std::vector<std::uint8_t>(ours.rgba.size(), 0)};

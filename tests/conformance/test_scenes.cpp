@@ -48,23 +48,6 @@ void writeFailureImages(const std::string& name, const reference::Image& ours, c
     reference::writePng((dir / (name + "-diff.png")).string(), reference::diffImage(ours, theirs));
 }
 
-// Pixels whose colors differ while both depth buffers hold the same depth within one unit of
-// the 24-bit buffer: two surfaces tie there, and which one wins is decided by the last bit of
-// the depth interpolation (DESIGN.md section 4 excludes them).
-// Counts the pixels differing by more than `tolerance` in some channel that are such ties.
-long long depthTies(const scenes::Frame& ours, const scenes::Frame& theirs, int tolerance) {
-    long long ties = 0;
-    for (std::size_t i = 0; i < ours.depth.size(); ++i) {
-        int difference = 0;
-        for (std::size_t c = 0; c < 4; ++c)
-            difference = std::max(difference, std::abs(int{ours.image.rgba[i * 4 + c]} - int{theirs.image.rgba[i * 4 + c]}));
-        const long long a = ours.depth[i] >> 8, b = theirs.depth[i] >> 8;
-        const bool written = a != 0xFFFFFF;  // not the cleared far value: a surface is there
-        ties += difference > tolerance && written && std::llabs(a - b) <= 1;
-    }
-    return ties;
-}
-
 TEST_P(SceneConformance, MatchesOsmesa) {
     const auto [scene, frame] = GetParam();
     for (const auto& [width, height] : {std::pair{320, 240}, std::pair{173, 97}}) {
@@ -74,7 +57,7 @@ TEST_P(SceneConformance, MatchesOsmesa) {
         const auto& theirs = theirsFrame.image;
         const reference::Comparison c = reference::compareImages(ours, theirs);
         const bool flat = kFlatScenes.contains(scene->name);
-        const long long ties = depthTies(oursFrame, theirsFrame, flat ? 0 : 1);
+        const long long ties = reference::depthTies(ours, theirs, oursFrame.depth, theirsFrame.depth, flat ? 0 : 1);
         const bool pass = (flat ? c.differing : c.differingMoreThan1) - ties == 0;
         if (!pass) writeFailureImages(scene->name + "-" + std::to_string(frame) + "-" + std::to_string(width), ours, theirs);
         EXPECT_TRUE(pass) << scene->name << " frame " << frame << " at " << width << "x" << height << ": "

@@ -1,5 +1,7 @@
 #pragma once
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "reference/image.h"
 
@@ -15,6 +17,12 @@ struct Comparison {
 
 // Throws std::invalid_argument if the sizes differ.
 Comparison compareImages(const Image& ours, const Image& reference);
+
+// Pixels differing by more than `tolerance` in some channel where both depth buffers (as
+// glReadPixels returns GL_UNSIGNED_INT depth) hold a written value equal within one unit of
+// the 24-bit buffer: two surfaces tie there and the last bit of depth decides (DESIGN.md 4).
+long long depthTies(const Image& ours, const Image& reference, const std::vector<std::uint32_t>& oursDepth,
+                    const std::vector<std::uint32_t>& referenceDepth, int tolerance);
 
 // Black where equal, gray where within 1, red (scaled by the difference) where more than 1.
 Image diffImage(const Image& ours, const Image& reference);

@@ -1,0 +1,254 @@
+#include "cases.h"
+
+#include <glad/gl.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+
+namespace conformance {
+namespace {
+
+// Where a mode's shape sits: inside the window, across its edge, or across the near plane.
+enum class Placement { Inside, CrossingViewport, CrossingNear };
+
+struct ModeCase {
+    GLenum mode;
+    bool flat;
+    int cull;  // 0 off, then GL_BACK, GL_FRONT, GL_FRONT_AND_BACK
+    bool frontCCW;
+    bool depth;
+    GLenum polygonMode;
+    Placement placement;
+};
+
+const char* modeName(GLenum mode) {
+    static const char* names[] = {"points", "lines", "lineloop", "linestrip", "triangles",
+                                  "tristrip", "trifan", "quads", "quadstrip", "polygon"};
+    return names[mode];
+}
+
+void resetState(int width, int height) {
+    glViewport(0, 0, width, height);
+    glClearColor(0, 0, 0, 0);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glFrontFace(GL_CCW);
+    glShadeModel(GL_SMOOTH);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+}
+
+void color(int i) {
+    const float t = static_cast<float>(i) * 0.61f;
+    glColor3f(0.5f + 0.45f * std::sin(t), 0.5f + 0.45f * std::sin(t + 2.0f), 0.5f + 0.45f * std::sin(t + 4.0f));
+}
+
+// Twelve vertices of a ring (star-shaped, so fans and polygons are concave in places), folded
+// so that strips and quads get both windings.
+void emitModeShape(const ModeCase& c) {
+    for (int i = 0; i < 12; ++i) {
+        color(i);
+        const float angle = static_cast<float>(i) * 0.5236f + 0.1f;
+        const float radius = (i % 3 == 1) ? 0.45f : 0.85f;
+        float x = radius * std::cos(angle), y = radius * std::sin(angle);
+        if (c.mode == GL_TRIANGLE_STRIP || c.mode == GL_QUAD_STRIP) {
+            x = -0.9f + 0.16f * static_cast<float>(i);
+            y = (i % 2 ? 0.7f : -0.6f) + (i > 6 ? 0.3f : 0.0f) * static_cast<float>(i % 2 ? -1 : 1);
+        }
+        // Depth varies over the shape so the depth test has something to decide.
+        const float z = 0.4f * std::sin(static_cast<float>(i) * 1.3f);
+        glVertex3f(x, y, z);
+    }
+}
+
+void drawModeCase(const ModeCase& c, int width, int height) {
+    resetState(width, height);
+    glShadeModel(c.flat ? GL_FLAT : GL_SMOOTH);
+    if (c.cull) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(static_cast<GLenum>(c.cull));
+    }
+    glFrontFace(c.frontCCW ? GL_CCW : GL_CW);
+    if (c.depth) glEnable(GL_DEPTH_TEST);
+    glPolygonMode(GL_FRONT_AND_BACK, c.polygonMode);
+    glMatrixMode(GL_PROJECTION);
+    if (c.placement == Placement::CrossingNear) {
+        glFrustum(-0.6, 0.6, -0.45, 0.45, 1.0, 10.0);
+        glMatrixMode(GL_MODELVIEW);
+        glTranslatef(0.0f, 0.0f, -1.6f);
+        glRotatef(70.0f, 1.0f, 0.0f, 0.0f);  // tilted so that part of the shape is nearer than 1
+        glScalef(1.3f, 1.3f, 1.3f);
+    } else {
+        glMatrixMode(GL_MODELVIEW);
+        if (c.placement == Placement::CrossingViewport) {
+            glTranslatef(0.55f, -0.4f, 0.0f);
+            glScalef(1.3f, 1.3f, 1.0f);
+        }
+    }
+    // Two blocks of the same mode: mergeable modes join into one draw, as in the reference.
+    glBegin(c.mode);
+    emitModeShape(c);
+    glEnd();
+    glTranslatef(0.05f, 0.03f, -0.1f);
+    glBegin(c.mode);
+    emitModeShape(c);
+    glEnd();
+}
+
+void addModeCases(std::vector<Case>& out) {
+    const std::array<std::pair<Placement, const char*>, 3> placements{
+        {{Placement::Inside, "inside"}, {Placement::CrossingViewport, "viewport"}, {Placement::CrossingNear, "near"}}};
+    const std::array<std::pair<GLenum, const char*>, 3> polygonModes{{{GL_FILL, "fill"}, {GL_LINE, "line"}, {GL_POINT, "point"}}};
+    const std::array<std::pair<int, const char*>, 4> culls{
+        {{0, "nocull"}, {GL_BACK, "cullback"}, {GL_FRONT, "cullfront"}, {GL_FRONT_AND_BACK, "cullboth"}}};
+    for (GLenum mode = GL_POINTS; mode <= GL_POLYGON; ++mode)
+        for (bool flat : {true, false})
+            for (const auto& [cull, cullName] : culls)
+                for (bool ccw : {true, false})
+                    for (bool depth : {false, true})
+                        for (const auto& [polygonMode, polygonName] : polygonModes)
+                            for (const auto& [placement, placementName] : placements) {
+                                const bool triangles = mode >= GL_TRIANGLES;
+                                // Culling, winding and polygon mode only matter to triangles.
+                                if (!triangles && (cull != 0 || !ccw || polygonMode != GL_FILL)) continue;
+                                const ModeCase c{mode, flat, cull, ccw, depth, polygonMode, placement};
+                                std::string name = std::string(modeName(mode)) + "_" + (flat ? "flat" : "smooth") + "_" +
+                                                   cullName + "_" + (ccw ? "ccw" : "cw") + "_" + (depth ? "depth" : "nodepth") +
+                                                   "_" + polygonName + "_" + placementName;
+                                out.push_back({"modes", name, flat, [c](int w, int h) { drawModeCase(c, w, h); }});
+                            }
+}
+
+// One triangle per case from a fixed seed, in window pixels (sub-pixel positions), smooth.
+void addRandomTriangles(std::vector<Case>& out) {
+    std::mt19937 random(2024);
+    std::uniform_real_distribution<float> x(-8.0f, kWidth + 8.0f), y(-8.0f, kHeight + 8.0f), c(0.0f, 1.0f), z(-0.9f, 0.9f);
+    for (int i = 0; i < 400; ++i) {
+        std::array<float, 15> v;
+        for (int k = 0; k < 3; ++k) v[static_cast<std::size_t>(k * 5)] = x(random), v[static_cast<std::size_t>(k * 5 + 1)] = y(random),
+            v[static_cast<std::size_t>(k * 5 + 2)] = c(random), v[static_cast<std::size_t>(k * 5 + 3)] = c(random), v[static_cast<std::size_t>(k * 5 + 4)] = z(random);
+        const bool flat = i % 4 == 0;
+        out.push_back({"random", "random_" + std::to_string(i), flat, [v, flat](int w, int h) {
+                           resetState(w, h);
+                           glShadeModel(flat ? GL_FLAT : GL_SMOOTH);
+                           glMatrixMode(GL_PROJECTION);
+                           glOrtho(0, w, 0, h, -1, 1);
+                           glMatrixMode(GL_MODELVIEW);
+                           glBegin(GL_TRIANGLES);
+                           for (std::size_t k = 0; k < 15; k += 5) {
+                               glColor3f(v[k + 2], v[k + 3], 0.5f);
+                               glVertex3f(v[k], v[k + 1], v[k + 4]);
+                           }
+                           glEnd();
+                       }});
+    }
+}
+
+// Long thin triangles, triangles smaller than a pixel, and triangles far larger than the window.
+void addSpecialTriangles(std::vector<Case>& out) {
+    std::mt19937 random(77);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int i = 0; i < 60; ++i) {
+        const float x0 = u(random) * kWidth, y0 = u(random) * kHeight, angle = u(random) * 6.2832f;
+        const float length = 20.0f + u(random) * 60.0f, width = 0.01f + u(random) * 0.6f;
+        const float dx = std::cos(angle) * length, dy = std::sin(angle) * length;
+        const float nx = -std::sin(angle) * width, ny = std::cos(angle) * width;
+        out.push_back({"slivers", "sliver_" + std::to_string(i), true, [=](int w, int h) {
+                           resetState(w, h);
+                           glShadeModel(GL_FLAT);
+                           glMatrixMode(GL_PROJECTION);
+                           glOrtho(0, w, 0, h, -1, 1);
+                           glColor3f(1.0f, 0.6f, 0.2f);
+                           glBegin(GL_TRIANGLES);
+                           glVertex2f(x0, y0);
+                           glVertex2f(x0 + dx, y0 + dy);
+                           glVertex2f(x0 + dx * 0.5f + nx, y0 + dy * 0.5f + ny);
+                           glEnd();
+                       }});
+    }
+    for (int i = 0; i < 60; ++i) {
+        const float x0 = u(random) * kWidth, y0 = u(random) * kHeight, s = 0.05f + u(random) * 1.2f;
+        out.push_back({"tiny", "tiny_" + std::to_string(i), true, [=](int w, int h) {
+                           resetState(w, h);
+                           glShadeModel(GL_FLAT);
+                           glMatrixMode(GL_PROJECTION);
+                           glOrtho(0, w, 0, h, -1, 1);
+                           glColor3f(0.3f, 1.0f, 0.4f);
+                           glBegin(GL_TRIANGLES);
+                           for (int k = 0; k < 4; ++k) {  // four tiny triangles around the point
+                               const float ox = static_cast<float>(k % 2) * 3.3f, oy = static_cast<float>(k / 2) * 2.7f;
+                               glVertex2f(x0 + ox, y0 + oy);
+                               glVertex2f(x0 + ox + s, y0 + oy + s * 0.3f);
+                               glVertex2f(x0 + ox + s * 0.2f, y0 + oy + s);
+                           }
+                           glEnd();
+                       }});
+    }
+    for (int i = 0; i < 30; ++i) {
+        const float scale = std::pow(10.0f, 1.0f + static_cast<float>(i % 6)), a = u(random) * 6.2832f;
+        out.push_back({"huge", "huge_" + std::to_string(i), false, [=](int w, int h) {
+                           resetState(w, h);
+                           glBegin(GL_TRIANGLES);
+                           for (int k = 0; k < 3; ++k) {
+                               color(k + i);
+                               const float angle = a + static_cast<float>(k) * 2.0944f;
+                               glVertex3f(scale * std::cos(angle), scale * std::sin(angle), 0.2f * static_cast<float>(k) - 0.2f);
+                           }
+                           glEnd();
+                       }});
+    }
+}
+
+// Meshes of jittered vertices whose triangles share edges, drawn over each other's colors.
+void addSharedEdgeMeshes(std::vector<Case>& out) {
+    for (int seed = 0; seed < 20; ++seed) {
+        out.push_back({"shared-edges", "mesh_" + std::to_string(seed), seed % 2 == 0, [seed](int w, int h) {
+                           std::mt19937 random(static_cast<unsigned>(seed));
+                           std::uniform_real_distribution<float> jitter(-1.7f, 1.7f);
+                           resetState(w, h);
+                           glShadeModel(seed % 2 == 0 ? GL_FLAT : GL_SMOOTH);
+                           glMatrixMode(GL_PROJECTION);
+                           glOrtho(0, w, 0, h, -1, 1);
+                           constexpr int kGrid = 6;
+                           float px[kGrid + 1][kGrid + 1], py[kGrid + 1][kGrid + 1];
+                           for (int j = 0; j <= kGrid; ++j)
+                               for (int i = 0; i <= kGrid; ++i) {
+                                   px[j][i] = 2.0f + static_cast<float>(i) * (static_cast<float>(w) - 4.0f) / kGrid + jitter(random);
+                                   py[j][i] = 2.0f + static_cast<float>(j) * (static_cast<float>(h) - 4.0f) / kGrid + jitter(random);
+                               }
+                           glBegin(GL_TRIANGLES);
+                           for (int j = 0; j < kGrid; ++j)
+                               for (int i = 0; i < kGrid; ++i) {
+                                   color(i * 7 + j);
+                                   glVertex2f(px[j][i], py[j][i]);
+                                   glVertex2f(px[j][i + 1], py[j][i + 1]);
+                                   glVertex2f(px[j + 1][i + 1], py[j + 1][i + 1]);
+                                   color(i * 7 + j + 3);
+                                   glVertex2f(px[j][i], py[j][i]);
+                                   glVertex2f(px[j + 1][i + 1], py[j + 1][i + 1]);
+                                   glVertex2f(px[j + 1][i], py[j + 1][i]);
+                               }
+                           glEnd();
+                       }});
+    }
+}
+
+}  // namespace
+
+std::vector<Case> allCases() {
+    std::vector<Case> cases;
+    addModeCases(cases);
+    addRandomTriangles(cases);
+    addSpecialTriangles(cases);
+    addSharedEdgeMeshes(cases);
+    return cases;
+}
+
+}  // namespace conformance

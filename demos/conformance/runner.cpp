@@ -1,0 +1,51 @@
+#include "runner.h"
+
+#include <glad/gl.h>
+
+#include <fstream>
+#include <vector>
+
+namespace conformance {
+namespace {
+
+std::vector<std::uint32_t> readDepth() {
+    std::vector<std::uint32_t> depth(static_cast<std::size_t>(kWidth) * kHeight);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
+    return depth;
+}
+
+}  // namespace
+
+Runner::Runner() : mygl_(kWidth, kHeight), osmesa_(kWidth, kHeight) {}
+
+Result Runner::run(const Case& c) {
+    Result result;
+    mygl_.makeCurrent();
+    c.draw(kWidth, kHeight);
+    result.ours = {kWidth, kHeight, mygl_.readPixels()};
+    const auto oursDepth = readDepth();
+    osmesa_.makeCurrent();
+    c.draw(kWidth, kHeight);
+    result.theirs = {kWidth, kHeight, osmesa_.readPixels()};
+    const auto theirsDepth = readDepth();
+    result.comparison = reference::compareImages(result.ours, result.theirs);
+    const int tolerance = c.flat ? 0 : 1;
+    result.depthTies = reference::depthTies(result.ours, result.theirs, oursDepth, theirsDepth, tolerance);
+    const long long over = c.flat ? result.comparison.differing : result.comparison.differingMoreThan1;
+    result.passed = over - result.depthTies == 0;
+    return result;
+}
+
+std::map<std::string, std::string> readExpectedDifferences(const std::string& path) {
+    std::map<std::string, std::string> expected;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        const auto colon = line.find(':');
+        expected[line.substr(0, colon)] = colon == std::string::npos ? "" : line.substr(colon + 1);
+    }
+    return expected;
+}
+
+}  // namespace conformance
