@@ -240,6 +240,34 @@ void addSharedEdgeMeshes(std::vector<Case>& out) {
     }
 }
 
+// Consecutive glBegin/glEnd blocks with no state change between them are one draw in the
+// reference: when one block crosses the window edge, the whole draw is clipped, which changes
+// how the quads of the other block are split.
+void addMergedBlocks(std::vector<Case>& out) {
+    for (GLenum mode : {GL_QUADS, GL_TRIANGLES, GL_POLYGON, GL_QUAD_STRIP})
+        for (bool secondCrosses : {false, true}) {
+            const std::string name = std::string("merged_") + modeName(mode) + (secondCrosses ? "_crossing" : "_inside");
+            out.push_back({"merged-blocks", name, false, [mode, secondCrosses](int w, int h) {
+                               resetState(w, h);
+                               const float shift = secondCrosses ? 1.5f : 0.3f;
+                               // Ring order (corner by corner) for quads and polygons, zigzag for strips.
+                               const bool ring = mode == GL_QUADS || mode == GL_POLYGON;
+                               static const float ringX[8] = {0, 0.3f, 0.35f, 0.02f, 0.4f, 0.7f, 0.72f, 0.38f};
+                               static const float ringY[8] = {-0.5f, -0.45f, 0.55f, 0.4f, -0.6f, -0.5f, 0.45f, 0.5f};
+                               for (int block = 0; block < 2; ++block) {
+                                   glBegin(mode);
+                                   for (int i = 0; i < 8; ++i) {
+                                       color(i + 3 * block);
+                                       const float x = (ring ? ringX[i] : 0.2f * static_cast<float>(i / 2)) - 0.8f;
+                                       const float y = ring ? ringY[i] : (i % 2 ? 0.5f : -0.55f) + 0.13f * static_cast<float>(i % 3);
+                                       glVertex2f(x + (block ? shift : 0.0f), y);
+                                   }
+                                   glEnd();
+                               }
+                           }});
+        }
+}
+
 }  // namespace
 
 std::vector<Case> allCases() {
@@ -248,6 +276,7 @@ std::vector<Case> allCases() {
     addRandomTriangles(cases);
     addSpecialTriangles(cases);
     addSharedEdgeMeshes(cases);
+    addMergedBlocks(cases);
     return cases;
 }
 
