@@ -23,4 +23,23 @@ struct Stats {
     std::uint64_t pixelsWritten = 0;   // fragments that changed the color buffer
 };
 
+// What happened between two readings of the counters, e.g. around one draw.
+inline Stats operator-(const Stats& later, const Stats& earlier) {
+    Stats d;
+    d.vertices = later.vertices - earlier.vertices;
+    for (std::size_t i = 0; i < d.primitivesByMode.size(); ++i)
+        d.primitivesByMode[i] = later.primitivesByMode[i] - earlier.primitivesByMode[i];
+    d.triangles = later.triangles - earlier.triangles;
+    d.clippedAway = later.clippedAway - earlier.clippedAway;
+    d.clipCreated = later.clipCreated - earlier.clipCreated;
+    d.culledBack = later.culledBack - earlier.culledBack;
+    d.culledFront = later.culledFront - earlier.culledFront;
+    d.culledZeroArea = later.culledZeroArea - earlier.culledZeroArea;
+    d.rasterized = later.rasterized - earlier.rasterized;
+    d.fragments = later.fragments - earlier.fragments;
+    d.fragmentsPassed = later.fragmentsPassed - earlier.fragmentsPassed;
+    d.pixelsWritten = later.pixelsWritten - earlier.pixelsWritten;
+    return d;
+}
+
 }  // namespace glrenderer
