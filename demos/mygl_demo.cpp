@@ -18,13 +18,14 @@ struct Options {
     int width = 320, height = 240, frame = 0;
     std::string out = "out";
     bool list = false;
+    bool stats = false;
 };
 
 [[noreturn]] void usage(const std::string& error) {
     std::fprintf(stderr,
                  "mygl-demo: %s\n"
                  "usage: mygl-demo [--scene NAME|all] [--backend mygl|osmesa|both] [--size WxH]\n"
-                 "                 [--frame N] [--out DIR] [--list]\n",
+                 "                 [--frame N] [--out DIR] [--list] [--stats]\n",
                  error.c_str());
     std::exit(2);
 }
@@ -42,6 +43,7 @@ Options parse(int argc, char** argv) {
         else if (arg == "--out") o.out = value();
         else if (arg == "--frame") o.frame = std::atoi(value().c_str());
         else if (arg == "--list") o.list = true;
+        else if (arg == "--stats") o.stats = true;
         else if (arg == "--size") {
             const std::string size = value();
             if (std::sscanf(size.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1 ||
@@ -52,6 +54,24 @@ Options parse(int argc, char** argv) {
     if (o.backend != "both" && !scenes::parseBackend(o.backend)) usage("unknown backend '" + o.backend + "'");
     if (o.scene != "all" && !scenes::findScene(o.scene)) usage("unknown scene '" + o.scene + "' (see --list)");
     return o;
+}
+
+// The course's table: what the pipeline did with each scene, culling forced off and then on.
+void printStats(const std::vector<const scenes::Scene*>& selected, const Options& o) {
+    // tris + created = clipped + back + front + zero + rasterized
+    std::printf("%-28s %-9s %5s %8s %8s %7s %7s %5s %10s %10s\n", "scene", "culling", "tris", "created", "clipped",
+                "back", "front", "zero", "rasterized", "fragments");
+    for (const scenes::Scene* scene : selected) {
+        for (bool culling : {false, true}) {
+            const mygl::Stats s =
+                scenes::render(scenes::Backend::MyGL, *scene, o.width, o.height, o.frame, {culling}).stats;
+            std::printf("%-28s %-9s %5llu %8llu %8llu %7llu %7llu %5llu %10llu %10llu\n", scene->name.c_str(),
+                        culling ? "cull=back" : "cull=off", static_cast<unsigned long long>(s.triangles),
+                        static_cast<unsigned long long>(s.clipCreated), static_cast<unsigned long long>(s.clippedAway), static_cast<unsigned long long>(s.culledBack),
+                        static_cast<unsigned long long>(s.culledFront), static_cast<unsigned long long>(s.culledZeroArea),
+                        static_cast<unsigned long long>(s.rasterized), static_cast<unsigned long long>(s.fragments));
+        }
+    }
 }
 
 }  // namespace
@@ -66,6 +86,10 @@ int main(int argc, char** argv) {
     std::vector<const scenes::Scene*> selected;
     for (const scenes::Scene& scene : scenes::allScenes())
         if (options.scene == "all" || scene.name == options.scene) selected.push_back(&scene);
+    if (options.stats) {
+        printStats(selected, options);
+        return 0;
+    }
     std::filesystem::create_directories(options.out);
     const bool both = options.backend == "both";
     if (both) std::printf("%-28s %9s %9s %7s %4s\n", "scene", "pixels", "differing", ">1", "max");

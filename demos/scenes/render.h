@@ -21,7 +21,13 @@ struct Frame {
     mygl::Stats stats;  // MyGL's counters; zero for OSMesa
 };
 
+// Overrides what a scene asks for, as the course's keys did (B toggles culling).
+struct Overrides {
+    std::optional<bool> culling;  // force GL_CULL_FACE on (back faces) or off
+};
+
 // Creates a context of the backend, makes it current (loading the GL table), draws, reads back.
-Frame render(Backend backend, const Scene& scene, int width, int height, int frame);
+Frame render(Backend backend, const Scene& scene, int width, int height, int frame,
+             const Overrides& overrides = {});
 
 }  // namespace scenes
