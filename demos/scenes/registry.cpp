@@ -1,5 +1,6 @@
 #include <vector>
 
+#include "course_scenes.h"
 #include "primitive_scenes.h"
 #include "scene.h"
 #include "seed_scenes.h"
@@ -8,6 +9,10 @@ namespace scenes {
 
 std::span<const Scene> allScenes() {
     static const std::vector<Scene> scenes{
+        {"course-f1", "course F1: a quad with one color per vertex, translated, rotated, scaled", drawCourseF1},
+        {"course-f2", "course F2: F1 and F3 together", drawCourseF2},
+        {"course-f3", "course F3: a red 5-vertex GL_POLYGON", drawCourseF3},
+        {"course-f4", "course F4: a sphere mesh loaded from an OBJ file, culling and depth", drawCourseF4},
         {"cube", "rotating cube, six colored faces, back-face culling and depth test", drawRotatingCube},
         {"two-cubes", "two cubes at different depths, depth test on", drawTwoCubesDepth},
         {"two-cubes-nodepth", "two cubes, depth test off: the far one paints over the near one", drawTwoCubesNoDepth},
