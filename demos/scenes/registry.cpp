@@ -1,5 +1,6 @@
 #include <vector>
 
+#include "bench_scenes.h"
 #include "course_scenes.h"
 #include "primitive_scenes.h"
 #include "scene.h"
@@ -27,6 +28,11 @@ std::span<const Scene> allScenes() {
         {"modes-smooth", "every triangle mode, smooth shading", drawAllModesSmooth},
         {"lines-points", "line strips of widths 1-3, a line loop, points of sizes 1-4", drawLinesAndPoints},
         {"wireframe-cube", "the cube in glPolygonMode GL_LINE with culling", drawWireframeCube},
+        {"bench-torus", "benchmark: a 65k-triangle smooth torus, depth and culling", drawBenchTorus},
+        {"bench-fill", "benchmark: 32 full-window depth-tested quads (fill rate)", drawBenchFill},
+        {"bench-cubes", "benchmark: 1000 cubes drawn with push/translate/rotate", drawBenchCubes},
+        {"bench-tiny", "benchmark: 100k tiny triangles", drawBenchTiny},
+        {"bench-gears", "benchmark: three flat-shaded gears", drawBenchGears},
     };
     return scenes;
 }

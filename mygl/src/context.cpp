@@ -60,6 +60,8 @@ std::vector<std::uint8_t> Context::readPixels() {
     return bytes;
 }
 
+void Context::setMethods(const glrenderer::Methods& methods) { state_->pipeline.setMethods(methods); }
+
 const Stats& Context::stats() {
     state_->pipeline.finish();
     return state_->pipeline.stats();

@@ -3,6 +3,7 @@
 #include <memory>
 #include <vector>
 
+#include <glrenderer/methods.h>
 #include <glrenderer/stats.h>
 
 namespace mygl {
@@ -36,6 +37,9 @@ public:
 
     // glFinish, then the color buffer as RGBA8, bottom row first (the OSMesa buffer's layout).
     std::vector<std::uint8_t> readPixels();
+
+    // How triangles become pixels (default: the exact method, perspective-correct colors).
+    void setMethods(const glrenderer::Methods& methods);
 
     // Counters since the last glClear of the color buffer (or resetStats()); finishes the frame.
     const Stats& stats();

@@ -1,0 +1,158 @@
+#include "bench_scenes.h"
+
+#include <glad/gl.h>
+#include <mygl/glu.h>
+
+#include <cmath>
+#include <random>
+
+#include "scene.h"
+
+namespace scenes {
+namespace {
+
+constexpr float kTwoPi = 6.28318530718f;
+
+void perspectiveView(int width, int height, float distance) {
+    glMatrixMode(GL_PROJECTION);
+    gluPerspective(40.0, static_cast<double>(width) / height, 1.0, 100.0);
+    glMatrixMode(GL_MODELVIEW);
+    glTranslatef(0.0f, 0.0f, -distance);
+}
+
+// A torus of (rings x sides) quads as triangle strips, colored by its normal.
+void torus(float major, float minor, int rings, int sides) {
+    for (int r = 0; r < rings; ++r) {
+        glBegin(GL_TRIANGLE_STRIP);
+        for (int s = 0; s <= sides; ++s) {
+            for (int k = 1; k >= 0; --k) {
+                const float u = static_cast<float>(r + k) * kTwoPi / static_cast<float>(rings);
+                const float v = static_cast<float>(s) * kTwoPi / static_cast<float>(sides);
+                const float nx = std::cos(u) * std::cos(v), ny = std::sin(u) * std::cos(v), nz = std::sin(v);
+                glColor3f(0.5f + 0.5f * nx, 0.5f + 0.5f * ny, 0.5f + 0.5f * nz);
+                glVertex3f((major + minor * std::cos(v)) * std::cos(u), (major + minor * std::cos(v)) * std::sin(u),
+                           minor * nz);
+            }
+        }
+        glEnd();
+    }
+}
+
+// A gear in the z = 0..width slab: a toothed ring of quads, flat shaded.
+void gear(float inner, float outer, float width, int teeth, float toothDepth) {
+    const float r0 = inner, r1 = outer - toothDepth / 2.0f, r2 = outer + toothDepth / 2.0f;
+    const float da = kTwoPi / static_cast<float>(teeth) / 4.0f;
+    for (float z : {width * 0.5f, -width * 0.5f}) {  // the two faces
+        glBegin(GL_QUAD_STRIP);
+        for (int i = 0; i <= teeth; ++i) {
+            const float a = static_cast<float>(i) * kTwoPi / static_cast<float>(teeth);
+            glVertex3f(r0 * std::cos(a), r0 * std::sin(a), z);
+            glVertex3f(r1 * std::cos(a), r1 * std::sin(a), z);
+            glVertex3f(r0 * std::cos(a), r0 * std::sin(a), z);
+            glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), z);
+        }
+        glEnd();
+        glBegin(GL_QUADS);  // the teeth's faces
+        for (int i = 0; i < teeth; ++i) {
+            const float a = static_cast<float>(i) * kTwoPi / static_cast<float>(teeth);
+            glVertex3f(r1 * std::cos(a), r1 * std::sin(a), z);
+            glVertex3f(r2 * std::cos(a + da), r2 * std::sin(a + da), z);
+            glVertex3f(r2 * std::cos(a + 2 * da), r2 * std::sin(a + 2 * da), z);
+            glVertex3f(r1 * std::cos(a + 3 * da), r1 * std::sin(a + 3 * da), z);
+        }
+        glEnd();
+    }
+    glBegin(GL_QUAD_STRIP);  // the outward faces of the teeth
+    for (int i = 0; i < teeth; ++i) {
+        const float a = static_cast<float>(i) * kTwoPi / static_cast<float>(teeth);
+        const float corners[4][2] = {{r1, a}, {r2, a + da}, {r2, a + 2 * da}, {r1, a + 3 * da}};
+        for (const auto& [r, angle] : corners) {
+            glVertex3f(r * std::cos(angle), r * std::sin(angle), width * 0.5f);
+            glVertex3f(r * std::cos(angle), r * std::sin(angle), -width * 0.5f);
+        }
+    }
+    glVertex3f(r1, 0.0f, width * 0.5f);
+    glVertex3f(r1, 0.0f, -width * 0.5f);
+    glEnd();
+}
+
+}  // namespace
+
+void drawBenchTorus(int width, int height, int frame) {
+    beginFrame(width, height, true, true);
+    perspectiveView(width, height, 7.0f);
+    glRotatef(30.0f + static_cast<float>(frame) * 5.0f, 1.0f, 0.4f, 0.0f);
+    torus(1.8f, 0.7f, 256, 128);  // 256 * 128 * 2 = 65536 triangles
+}
+
+void drawBenchFill(int width, int height, int) {
+    beginFrame(width, height, true, false);
+    for (int i = 0; i < 32; ++i) {  // back to front: every quad passes the depth test
+        const float z = 0.95f - static_cast<float>(i) * 0.06f;
+        glColor3f(static_cast<float>(i % 4) / 3.0f, static_cast<float>(i % 7) / 6.0f, 0.5f);
+        glBegin(GL_QUADS);
+        glVertex3f(-1.0f, -1.0f, z);
+        glVertex3f(1.0f, -1.0f, z);
+        glColor3f(0.2f, static_cast<float>(i % 5) / 4.0f, 0.9f);
+        glVertex3f(1.0f, 1.0f, z);
+        glVertex3f(-1.0f, 1.0f, z);
+        glEnd();
+    }
+}
+
+void drawBenchCubes(int width, int height, int frame) {
+    static const float colors[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.25f, 0.35f, 0.95f},
+                                       {0.95f, 0.85f, 0.2f}, {0.85f, 0.3f, 0.85f}, {0.2f, 0.85f, 0.85f}};
+    beginFrame(width, height, true, true);
+    perspectiveView(width, height, 30.0f);
+    glRotatef(25.0f + static_cast<float>(frame), 1.0f, 1.0f, 0.0f);
+    for (int i = 0; i < 1000; ++i) {
+        glPushMatrix();
+        glTranslatef(static_cast<float>(i % 10) * 2.2f - 9.9f, static_cast<float>(i / 10 % 10) * 2.2f - 9.9f,
+                     static_cast<float>(i / 100) * 2.2f - 9.9f);
+        glRotatef(static_cast<float>(i * 37 % 360), 0.3f, 1.0f, 0.2f);
+        glScalef(0.6f, 0.6f, 0.6f);
+        drawCube(colors);
+        glPopMatrix();
+    }
+}
+
+void drawBenchTiny(int width, int height, int) {
+    beginFrame(width, height, true, false);
+    std::mt19937 random(1);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), c(0.0f, 1.0f);
+    glBegin(GL_TRIANGLES);
+    for (int i = 0; i < 100000; ++i) {
+        const float x = u(random), y = u(random), z = u(random) * 0.9f;
+        for (int k = 0; k < 3; ++k) {
+            glColor3f(c(random), c(random), c(random));
+            glVertex3f(x + u(random) * 0.006f, y + u(random) * 0.008f, z);
+        }
+    }
+    glEnd();
+}
+
+void drawBenchGears(int width, int height, int frame) {
+    beginFrame(width, height, true, true);
+    glShadeModel(GL_FLAT);
+    perspectiveView(width, height, 30.0f);
+    glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
+    glRotatef(30.0f, 0.0f, 1.0f, 0.0f);
+    const float angle = static_cast<float>(frame) * 2.0f;
+    const struct {
+        float x, y, rotation, color[3], inner, outer, width;
+        int teeth;
+    } gears[3] = {{-3.0f, -2.0f, angle, {0.8f, 0.1f, 0.0f}, 1.0f, 4.0f, 1.0f, 20},
+                  {3.1f, -2.0f, -2.0f * angle - 9.0f, {0.0f, 0.8f, 0.2f}, 0.5f, 2.0f, 2.0f, 10},
+                  {-3.1f, 4.2f, -2.0f * angle - 25.0f, {0.2f, 0.2f, 1.0f}, 1.3f, 2.0f, 0.5f, 10}};
+    for (const auto& g : gears) {
+        glPushMatrix();
+        glTranslatef(g.x, g.y, 0.0f);
+        glRotatef(g.rotation, 0.0f, 0.0f, 1.0f);
+        glColor3fv(g.color);
+        gear(g.inner, g.outer, g.width, g.teeth, 0.7f);
+        glPopMatrix();
+    }
+}
+
+}  // namespace scenes

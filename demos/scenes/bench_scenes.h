@@ -1,0 +1,12 @@
+#pragma once
+
+namespace scenes {
+
+// The benchmark's scenes: each stresses one part of the pipeline.
+void drawBenchTorus(int width, int height, int frame);  // 65k smooth triangles, depth and culling
+void drawBenchFill(int width, int height, int frame);   // 32 full-window quads, depth-tested: fill rate
+void drawBenchCubes(int width, int height, int frame);  // 1000 cubes with push/translate/rotate
+void drawBenchTiny(int width, int height, int frame);   // 100k tiny triangles
+void drawBenchGears(int width, int height, int frame);  // three gears: flat-shaded strips and quads
+
+}  // namespace scenes
