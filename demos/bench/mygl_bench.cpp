@@ -1,0 +1,197 @@
+// mygl-bench: time per frame against pixels differing from OSMesa llvmpipe, for every MyGL
+// method and the reference renderers, on the benchmark scenes. Writes a CSV, a markdown table
+// and (through plot_bench.py) a chart. In-process variants alternate frame by frame; OSMesa
+// variants that need their own environment (one llvmpipe thread, softpipe) run in a child
+// process of this program.
+#include <glad/gl.h>
+#include <reference/compare.h>
+#include <reference/osmesa_context.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears"};
+
+struct Variant {
+    std::string name;
+    bool isReference;
+    glrenderer::Methods methods;  // MyGL variants
+    std::string environment;      // child-process OSMesa variants: "NAME=value", empty = in-process
+};
+
+std::vector<Variant> variants() {
+    using glrenderer::Interpolation;
+    using glrenderer::RasterMethod;
+    return {
+        {"mygl exact", false, {RasterMethod::Exact, Interpolation::PerspectiveCorrect}, ""},
+        {"mygl exact-per-pixel", false, {RasterMethod::ExactPerPixel, Interpolation::PerspectiveCorrect}, ""},
+        {"mygl scanline", false, {RasterMethod::Scanline, Interpolation::PerspectiveCorrect}, ""},
+        {"mygl bbox-float", false, {RasterMethod::BoundingBoxFloat, Interpolation::PerspectiveCorrect}, ""},
+        {"mygl exact screen-linear", false, {RasterMethod::Exact, Interpolation::ScreenLinear}, ""},
+        {"osmesa llvmpipe", true, {}, ""},
+        {"osmesa llvmpipe 1 thread", true, {}, "LP_NUM_THREADS=1"},
+        {"osmesa softpipe", true, {}, "GALLIUM_DRIVER=softpipe"},
+    };
+}
+
+struct Timing {
+    std::vector<double> ms;
+    reference::Image frame;
+    double median() const {
+        std::vector<double> sorted = ms;
+        std::sort(sorted.begin(), sorted.end());
+        return sorted[sorted.size() / 2];
+    }
+};
+
+// One backend's context, kept for all repetitions of a scene.
+class Target {
+public:
+    Target(const Variant& v, int width, int height) {
+        if (v.isReference) {
+            osmesa_ = std::make_unique<reference::OsmesaContext>(width, height);
+        } else {
+            mygl_ = std::make_unique<mygl::Context>(width, height);
+            mygl_->setMethods(v.methods);
+        }
+    }
+    // Draws one frame and returns the milliseconds until glFinish returned.
+    double drawFrame(const scenes::Scene& scene, int width, int height) {
+        if (mygl_) mygl_->makeCurrent();
+        else osmesa_->makeCurrent();
+        const auto start = Clock::now();
+        scene.draw(width, height, 0);
+        glFinish();
+        return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    }
+    reference::Image frame(int width, int height) {
+        return {width, height, mygl_ ? mygl_->readPixels() : osmesa_->readPixels()};
+    }
+
+private:
+    std::unique_ptr<mygl::Context> mygl_;
+    std::unique_ptr<reference::OsmesaContext> osmesa_;
+};
+
+// Child mode: time one OSMesa variant (its environment already set) and print the times.
+int runWorker(const std::string& sceneName, int width, int height, int repetitions, const std::string& framePath) {
+    const scenes::Scene* scene = scenes::findScene(sceneName);
+    if (!scene) return 2;
+    Target target(Variant{"", true, {}, ""}, width, height);
+    target.drawFrame(*scene, width, height);  // warm-up: shader compilation
+    for (int i = 0; i < repetitions; ++i) std::printf("%f\n", target.drawFrame(*scene, width, height));
+    reference::writePng(framePath, target.frame(width, height));
+    return 0;
+}
+
+Timing runInChild(const char* self, const Variant& v, const std::string& scene, int width, int height, int repetitions) {
+    const std::string framePath = (std::filesystem::temp_directory_path() / "mygl-bench-frame.png").string();
+    const std::string command = "env " + v.environment + " '" + std::string(self) + "' --worker " + scene + " " +
+                                std::to_string(width) + " " + std::to_string(height) + " " +
+                                std::to_string(repetitions) + " '" + framePath + "'";
+    Timing timing;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return timing;
+    double ms = 0;
+    while (std::fscanf(pipe, "%lf", &ms) == 1) timing.ms.push_back(ms);
+    if (pclose(pipe) == 0) timing.frame = reference::readPng(framePath);
+    std::filesystem::remove(framePath);
+    return timing;
+}
+
+struct Row {
+    std::string scene, size, variant;
+    bool isReference;
+    double median, min, max, ratio;
+    long long differing, differingMoreThan1;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc == 7 && std::string(argv[1]) == "--worker")
+        return runWorker(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5]), argv[6]);
+    bool quick = false;
+    std::string out = "bench";
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--quick") quick = true;
+        else if (arg == "--out" && i + 1 < argc) out = argv[++i];
+        else {
+            std::fprintf(stderr, "usage: mygl-bench [--quick] [--out DIR]\n");
+            return 2;
+        }
+    }
+    const int repetitions = quick ? 3 : 7;
+    std::vector<std::pair<int, int>> sizes{{640, 480}};
+    if (!quick) sizes.push_back({1920, 1080});
+    std::filesystem::create_directories(out);
+    std::vector<Row> rows;
+    for (const auto& [width, height] : sizes) {
+        for (const char* sceneName : kScenes) {
+            const scenes::Scene& scene = *scenes::findScene(sceneName);
+            const std::vector<Variant> all = variants();
+            std::vector<Timing> timings(all.size());
+            std::vector<std::unique_ptr<Target>> targets(all.size());
+            for (std::size_t v = 0; v < all.size(); ++v) {
+                if (!all[v].environment.empty()) continue;
+                targets[v] = std::make_unique<Target>(all[v], width, height);
+                targets[v]->drawFrame(scene, width, height);  // warm-up
+            }
+            for (int rep = 0; rep < repetitions; ++rep) {  // in-process variants alternate
+                std::fprintf(stderr, "\r%dx%d %-12s repetition %d/%d", width, height, sceneName, rep + 1, repetitions);
+                for (std::size_t v = 0; v < all.size(); ++v)
+                    if (targets[v]) timings[v].ms.push_back(targets[v]->drawFrame(scene, width, height));
+            }
+            for (std::size_t v = 0; v < all.size(); ++v) {
+                if (targets[v]) timings[v].frame = targets[v]->frame(width, height);
+                else timings[v] = runInChild(argv[0], all[v], sceneName, width, height, repetitions);
+            }
+            std::fprintf(stderr, "\r%60s\r", "");
+            const std::size_t llvmpipe = 5;
+            const double referenceMedian = timings[llvmpipe].median();
+            for (std::size_t v = 0; v < all.size(); ++v) {
+                if (timings[v].ms.empty()) continue;
+                const auto [lo, hi] = std::minmax_element(timings[v].ms.begin(), timings[v].ms.end());
+                const reference::Comparison c = reference::compareImages(timings[v].frame, timings[llvmpipe].frame);
+                rows.push_back({sceneName, std::to_string(width) + "x" + std::to_string(height), all[v].name,
+                                all[v].isReference, timings[v].median(), *lo, *hi, timings[v].median() / referenceMedian,
+                                c.differing, c.differingMoreThan1});
+                const Row& r = rows.back();
+                std::printf("%-12s %-9s %-26s %9.2f ms  (%.2f-%.2f)  x%.2f of llvmpipe  differing %lld (>1: %lld)\n",
+                            r.scene.c_str(), r.size.c_str(), r.variant.c_str(), r.median, r.min, r.max, r.ratio,
+                            r.differing, r.differingMoreThan1);
+            }
+        }
+    }
+    std::ofstream csv(out + "/bench.csv");
+    csv << "scene,size,variant,reference,median_ms,min_ms,max_ms,ratio_to_llvmpipe,differing,differing_gt1\n";
+    std::ofstream md(out + "/bench.md");
+    md << "| scene | size | variant | median ms | min-max ms | x llvmpipe | differing | >1 |\n|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+        csv << r.scene << ',' << r.size << ',' << r.variant << ',' << r.isReference << ',' << r.median << ',' << r.min
+            << ',' << r.max << ',' << r.ratio << ',' << r.differing << ',' << r.differingMoreThan1 << '\n';
+        char line[256];
+        std::snprintf(line, sizeof line, "| %s | %s | %s | %.2f | %.2f-%.2f | %.2f | %lld | %lld |\n", r.scene.c_str(),
+                      r.size.c_str(), r.variant.c_str(), r.median, r.min, r.max, r.ratio, r.differing, r.differingMoreThan1);
+        md << line;
+    }
+    csv.close();
+    const std::string plot = std::string(MYGL_PYTHON) + " '" + MYGL_PLOT_SCRIPT + "' '" + out + "/bench.csv' '" + out + "/bench.png'";
+    const bool charted = std::system(plot.c_str()) == 0;
+    std::printf("wrote %s/bench.csv, %s/bench.md%s\n", out.c_str(), out.c_str(), charted ? " and bench.png" : " (no chart: matplotlib missing?)");
+    return 0;
+}

@@ -1,0 +1,16 @@
+# cmake -DBENCH=<mygl-bench> -DOUT=<dir> -P run_quick.cmake
+file(REMOVE_RECURSE ${OUT})
+execute_process(COMMAND ${BENCH} --quick --out ${OUT} RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "mygl-bench --quick failed: ${result}")
+endif()
+foreach(file bench.csv bench.md bench.png)
+  if(NOT EXISTS ${OUT}/${file})
+    message(FATAL_ERROR "mygl-bench --quick did not write ${file}")
+  endif()
+endforeach()
+file(STRINGS ${OUT}/bench.csv lines)
+list(LENGTH lines count)
+if(count LESS 41)  # header + 5 scenes x 8 variants
+  message(FATAL_ERROR "bench.csv has ${count} lines, expected 41")
+endif()
