@@ -6,6 +6,7 @@
 #include "decompose.h"
 #include "points_lines.h"
 #include "raster_triangle.h"
+#include "seed_culling.h"
 #include "tile_rasterizer.h"
 #include "unfilled.h"
 #include "window_vertex.h"
@@ -57,7 +58,8 @@ void Pipeline::setupTriangle(const WindowVertex& v0, const WindowVertex& v1, con
         ++stats.culledZeroArea;
         return;
     }
-    if (isCulled(state, facing)) {
+    // The seeds' culling methods have decided already, before clipping.
+    if (methods_.culling == CullMethod::WindowArea && isCulled(state, facing)) {
         ++(facing == Facing::Front ? stats.culledFront : stats.culledBack);
         return;
     }
@@ -67,6 +69,8 @@ void Pipeline::setupTriangle(const WindowVertex& v0, const WindowVertex& v1, con
         tiles_->add(prepared);
     }
 }
+
+void Pipeline::flushTiles() { tiles_->flush(stats_, methods_.hiddenSurface == HiddenSurface::PaintersSort); }
 
 Pipeline::Pipeline(Framebuffer& framebuffer)
     : framebuffer_(framebuffer), tiles_(std::make_unique<TileRasterizer>(framebuffer)) {}
@@ -94,7 +98,7 @@ void Pipeline::endBatch() {
 
 void Pipeline::finish() {
     endBatch();
-    tiles_->flush(stats_);
+    flushTiles();
 }
 
 void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
@@ -105,7 +109,7 @@ void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t d
 
 void Pipeline::drawBatch() {
     if (!isTriangleMode(batchMode_)) {
-        tiles_->flush(stats_);  // points and lines are drawn at once: queued triangles first
+        flushTiles();  // points and lines are drawn at once: queued triangles first
         drawPointsAndLines(batchMode_, batch_, batchState_, framebuffer_, stats_);
         return;
     }
@@ -127,7 +131,7 @@ void Pipeline::drawBatch() {
         const UnfilledTarget target{
             [&](const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                 const glm::vec4& flatColor) { setupTriangle(v0, v1, v2, flatColor); },
-            [&] { tiles_->flush(stats_); }};
+            [&] { flushTiles(); }};
         drawUnfilledBatch(batchMode_, batch_, outcodes_, windowVertices_, viewport, state, framebuffer_,
                           stats_, target);
         return;
@@ -140,6 +144,18 @@ void Pipeline::drawBatch() {
 void Pipeline::drawTriangle(const TriangleIndices& t, const ViewportTransform& viewport) {
     ++stats_.triangles;
     const glm::vec4& flatColor = batch_[t.v[2]].color;
+    if (methods_.culling != CullMethod::WindowArea) {
+        const Facing facing = seedFacing(methods_.culling, batch_[t.v[0]], batch_[t.v[1]], batch_[t.v[2]],
+                                         batchState_.frontFaceCCW);
+        if (facing == Facing::ZeroArea) {
+            ++stats_.culledZeroArea;
+            return;
+        }
+        if (isCulled(batchState_, facing)) {
+            ++(facing == Facing::Front ? stats_.culledFront : stats_.culledBack);
+            return;
+        }
+    }
     const std::uint8_t outsideAny = outcodes_[t.v[0]] | outcodes_[t.v[1]] | outcodes_[t.v[2]];
     if (outsideAny == 0) {
         setupTriangle(windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]], flatColor);

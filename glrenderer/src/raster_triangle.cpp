@@ -71,6 +71,7 @@ bool prepareTriangle(const SetupTriangle& t, const DrawState& state, const Metho
     std::int64_t minX = ceilToPixel(std::min({a.x, b.x, c.x})), maxX = floorToPixel(std::max({a.x, b.x, c.x}));
     std::int64_t minY = ceilToPixel(std::min({a.y, b.y, c.y})), maxY = floorToPixel(std::max({a.y, b.y, c.y}));
     out.method = methods.raster;
+    out.meanDepth = (t.v[0].z + t.v[1].z + t.v[2].z) / 3.0f;
     if (methods.raster == RasterMethod::Scanline || methods.raster == RasterMethod::BoundingBoxFloat) {
         // Float methods may reach a pixel past the snapped bounds.
         --minX, ++maxX, --minY, ++maxY;

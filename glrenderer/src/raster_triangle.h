@@ -51,6 +51,7 @@ struct RasterTriangle {
     FragmentState state;
     RasterMethod method = RasterMethod::Exact;
     float windowX[3] = {}, windowY[3] = {};  // unsnapped, for the float methods
+    float meanDepth = 0;                      // for the painter's sort
     int minX = 0, maxX = -1, minY = 0, maxY = -1;  // inclusive pixel bounds, internal rows
 };
 

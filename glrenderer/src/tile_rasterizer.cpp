@@ -37,7 +37,7 @@ void TileRasterizer::add(const RasterTriangle& triangle) {
             bins_[static_cast<std::size_t>(ty * tilesX_ + tx)].push_back(index);
 }
 
-void TileRasterizer::flush(Stats& stats) {
+void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     if (binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) triangles_.clear();
     if (triangles_.empty()) return;
     for (ThreadCounts& c : threadCounts_) c.counts = {};
@@ -46,6 +46,11 @@ void TileRasterizer::flush(Stats& stats) {
         const int ty = static_cast<int>(tile / static_cast<std::size_t>(tilesX_));
         const PixelRect rect{tx * kTileSize, std::min((tx + 1) * kTileSize, binnedWidth_) - 1,
                              ty * kTileSize, std::min((ty + 1) * kTileSize, binnedHeight_) - 1};
+        if (paintersSort) {
+            std::stable_sort(bins_[tile].begin(), bins_[tile].end(), [this](std::uint32_t a, std::uint32_t b) {
+                return triangles_[a].meanDepth > triangles_[b].meanDepth;
+            });
+        }
         for (std::uint32_t index : bins_[tile])
             rasterizeWithMethod(triangles_[index], rect, framebuffer_, threadCounts_[thread].counts, shader_);
     };

@@ -18,8 +18,9 @@ public:
 
     void add(const RasterTriangle& triangle);
     // Draws everything queued; adds fragment counts to stats. The framebuffer must keep its size
-    // between add() and flush(); if it changed, the queued triangles are dropped.
-    void flush(Stats& stats);
+    // between add() and flush(); if it changed, the queued triangles are dropped. With
+    // paintersSort each tile draws its triangles far to near by mean depth instead of in order.
+    void flush(Stats& stats, bool paintersSort = false);
     bool empty() const { return triangles_.empty(); }
 
 private:

@@ -10,7 +10,15 @@ namespace {
 void addVertex(const glm::vec4& object) {
     Context::State* s = currentState();
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
-    s->vertices.push_back({transform(s->modelviewProjection, object), s->color, s->edgeFlag});
+    glrenderer::Vertex& v = s->vertices.emplace_back(
+        glrenderer::Vertex{transform(s->modelviewProjection, object), s->color, s->edgeFlag});
+    if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
+        const Matrix& m = s->modelview.top();
+        v.eye = glm::vec3(transform(m, object));
+        v.normal = {at(m, 0, 0) * s->normal.x + at(m, 0, 1) * s->normal.y + at(m, 0, 2) * s->normal.z,
+                    at(m, 1, 0) * s->normal.x + at(m, 1, 1) * s->normal.y + at(m, 1, 2) * s->normal.z,
+                    at(m, 2, 0) * s->normal.x + at(m, 2, 1) * s->normal.y + at(m, 2, 2) * s->normal.z};
+    }
 }
 
 template <class T>

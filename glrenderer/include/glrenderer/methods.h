@@ -19,9 +19,25 @@ enum class Interpolation {
     ScreenLinear,        // attributes interpolated linearly in window space (the course)
 };
 
+// How a triangle's facing is decided; glCullFace and glFrontFace then apply as GL defines.
+enum class CullMethod {
+    WindowArea,       // sign of the snapped window-space area (GL, the reference)
+    ViewSpaceNormal,  // (v1 - v0) x (v2 - v0) against the vector to v0, in eye space (seed 000)
+    LookVector,       // the first vertex's normal against the look vector (seed 003: fails in perspective)
+};
+
+enum class HiddenSurface {
+    AsEnabled,      // the depth buffer when GL_DEPTH_TEST is on (GL)
+    PaintersSort,   // triangles drawn far to near by their mean depth (seed 000), in each tile
+};
+
 struct Methods {
     RasterMethod raster = RasterMethod::Exact;
     Interpolation interpolation = Interpolation::PerspectiveCorrect;
+    CullMethod culling = CullMethod::WindowArea;
+    HiddenSurface hiddenSurface = HiddenSurface::AsEnabled;
+    // Whether vertices must carry eye-space position and normal (only the seeds' culling needs it).
+    bool needsEyeSpace() const { return culling != CullMethod::WindowArea; }
     bool operator==(const Methods&) const = default;
 };
 

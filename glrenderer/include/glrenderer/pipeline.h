@@ -50,6 +50,7 @@ public:
 
 private:
     void drawBatch();
+    void flushTiles();
     void drawTriangle(const TriangleIndices& triangle, const ViewportTransform& viewport);
     void setupTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);

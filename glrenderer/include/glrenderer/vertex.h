@@ -1,14 +1,18 @@
 #pragma once
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 namespace glrenderer {
 
 // A vertex after the modelview-projection transform: clip-space position and its RGBA color
-// (floats, not yet clamped). The edge flag hides polygon edges in line and point mode.
+// (floats, not yet clamped). The edge flag hides polygon edges in line and point mode. Eye-space
+// position and normal are filled only when a culling method asks for them (Methods::needsEyeSpace).
 struct Vertex {
     glm::vec4 position;
     glm::vec4 color;
     bool edgeFlag = true;
+    glm::vec3 eye{0.0f};
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
 };
 
 }  // namespace glrenderer
