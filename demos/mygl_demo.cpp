@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render.h"
+#include "stability.h"
 
 namespace {
 
@@ -19,13 +20,14 @@ struct Options {
     std::string out = "out";
     bool list = false;
     bool stats = false;
+    bool stability = false;
 };
 
 [[noreturn]] void usage(const std::string& error) {
     std::fprintf(stderr,
                  "mygl-demo: %s\n"
                  "usage: mygl-demo [--scene NAME|all] [--backend mygl|osmesa|both] [--size WxH]\n"
-                 "                 [--frame N] [--out DIR] [--list] [--stats]\n",
+                 "                 [--frame N] [--out DIR] [--list] [--stats] [--stability]\n",
                  error.c_str());
     std::exit(2);
 }
@@ -44,6 +46,7 @@ Options parse(int argc, char** argv) {
         else if (arg == "--frame") o.frame = std::atoi(value().c_str());
         else if (arg == "--list") o.list = true;
         else if (arg == "--stats") o.stats = true;
+        else if (arg == "--stability") o.stability = true;
         else if (arg == "--size") {
             const std::string size = value();
             if (std::sscanf(size.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1 ||
@@ -74,6 +77,25 @@ void printStats(const std::vector<const scenes::Scene*>& selected, const Options
     }
 }
 
+// Where each method holds and breaks against OSMesa (pixels differing by more than 1).
+void printStability() {
+    const auto methods = stability::allMethods();
+    std::printf("| check |");
+    for (const auto& m : methods) std::printf(" %s |", m.name.c_str());
+    std::printf("\n|---|");
+    for (std::size_t i = 0; i < methods.size(); ++i) std::printf("---|");
+    std::printf("\n");
+    for (const stability::Check& check : stability::allChecks()) {
+        std::printf("| %s |", check.name.c_str());
+        for (const auto& m : methods) {
+            const stability::Outcome o = stability::run(check, m);
+            if (o.holds) std::printf(" holds |");
+            else std::printf(" breaks (%lld px) |", o.pixelsOver1);
+        }
+        std::printf("\n");
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -86,6 +108,10 @@ int main(int argc, char** argv) {
     std::vector<const scenes::Scene*> selected;
     for (const scenes::Scene& scene : scenes::allScenes())
         if (options.scene == "all" || scene.name == options.scene) selected.push_back(&scene);
+    if (options.stability) {
+        printStability();
+        return 0;
+    }
     if (options.stats) {
         printStats(selected, options);
         return 0;

@@ -144,14 +144,10 @@ void Pipeline::drawBatch() {
 void Pipeline::drawTriangle(const TriangleIndices& t, const ViewportTransform& viewport) {
     ++stats_.triangles;
     const glm::vec4& flatColor = batch_[t.v[2]].color;
-    if (methods_.culling != CullMethod::WindowArea) {
+    if (methods_.culling != CullMethod::WindowArea && batchState_.cullEnabled) {
         const Facing facing = seedFacing(methods_.culling, batch_[t.v[0]], batch_[t.v[1]], batch_[t.v[2]],
                                          batchState_.frontFaceCCW);
-        if (facing == Facing::ZeroArea) {
-            ++stats_.culledZeroArea;
-            return;
-        }
-        if (isCulled(batchState_, facing)) {
+        if (facing != Facing::ZeroArea && isCulled(batchState_, facing)) {  // edge-on: the seeds keep it
             ++(facing == Facing::Front ? stats_.culledFront : stats_.culledBack);
             return;
         }

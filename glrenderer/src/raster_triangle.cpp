@@ -86,8 +86,9 @@ bool prepareTriangle(const SetupTriangle& t, const DrawState& state, const Metho
     out.edges[1] = EdgeFunction(b, c);
     out.edges[2] = EdgeFunction(c, a);
 
-    out.state = {state.depthTest, state.depthFunc, state.depthWrite,
-                 state.shadeModel == ShadeModel::Smooth};
+    // The painter's sort replaces the depth buffer: it orders whole triangles instead.
+    const bool depthTest = state.depthTest && methods.hiddenSurface != HiddenSurface::PaintersSort;
+    out.state = {depthTest, state.depthFunc, state.depthWrite, state.shadeModel == ShadeModel::Smooth};
     const bool perspective = methods.interpolation == Interpolation::PerspectiveCorrect;
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (!out.state.smooth) {

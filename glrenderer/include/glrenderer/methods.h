@@ -28,7 +28,7 @@ enum class CullMethod {
 
 enum class HiddenSurface {
     AsEnabled,      // the depth buffer when GL_DEPTH_TEST is on (GL)
-    PaintersSort,   // triangles drawn far to near by their mean depth (seed 000), in each tile
+    PaintersSort,   // no depth buffer: triangles drawn far to near by mean depth (seed 000), per tile
 };
 
 struct Methods {
