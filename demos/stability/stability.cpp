@@ -7,6 +7,7 @@
 #include <reference/osmesa_context.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <random>
 
 namespace stability {
@@ -202,6 +203,29 @@ void intersectingQuads(int w, int h) {
     glEnd();
 }
 
+// The seed's concave hexahedron (a cube with one corner pushed inside), depth test on and no
+// culling: its faces overlap each other, so drawing whole faces far to near cannot be right.
+void concaveHexahedron(int w, int h) {
+    reset(w, h);
+    glEnable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    gluPerspective(45.0, static_cast<double>(w) / h, 1.0, 20.0);
+    glMatrixMode(GL_MODELVIEW);
+    glTranslatef(0, 0, -5.5f);
+    glRotatef(30.0f, 1.0f, 0.0f, 0.0f);
+    glRotatef(-60.0f, 0.0f, 1.0f, 0.0f);
+    static const float corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                        {-1, -1, 1},  {1, -1, 1},  {0.3f, 0.4f, -0.7f}, {-1, 1, 1}};
+    static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
+    glBegin(GL_TRIANGLES);
+    for (int f = 0; f < 6; ++f) {
+        color(f * 2);
+        const int* q = faces[f];
+        for (int i : {q[0], q[1], q[2], q[0], q[2], q[3]}) glVertex3fv(corners[i]);
+    }
+    glEnd();
+}
+
 // A ring of outward-facing quads around the eye under a 120-degree field of view, culled:
 // which faces are front depends on the direction to each face, not only on the look vector.
 void widePerspectiveCulling(int w, int h) {
@@ -282,6 +306,7 @@ std::vector<Check> allChecks() {
         {"near plane", nearPlane},
         {"concave polygon", concavePolygon},
         {"intersecting quads", intersectingQuads},
+        {"concave hexahedron", concaveHexahedron},
         {"wide perspective culling", widePerspectiveCulling},
     };
 }
