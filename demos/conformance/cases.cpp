@@ -1,6 +1,7 @@
 #include "cases.h"
 
 #include <glad/gl.h>
+#include <scene.h>
 
 #include <array>
 #include <cmath>
@@ -8,6 +9,8 @@
 
 namespace conformance {
 namespace {
+
+using scenes::resetState;
 
 // Where a mode's shape sits: inside the window, across its edge, or across the near plane.
 enum class Placement { Inside, CrossingViewport, CrossingNear };
@@ -26,23 +29,6 @@ const char* modeName(GLenum mode) {
     static const char* names[] = {"points", "lines", "lineloop", "linestrip", "triangles",
                                   "tristrip", "trifan", "quads", "quadstrip", "polygon"};
     return names[mode];
-}
-
-void resetState(int width, int height) {
-    glViewport(0, 0, width, height);
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glFrontFace(GL_CCW);
-    glShadeModel(GL_SMOOTH);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
 }
 
 void color(int i) {

@@ -3,19 +3,11 @@
 #include <glad/gl.h>
 
 #include <fstream>
+
+#include "scene.h"
 #include <vector>
 
 namespace conformance {
-namespace {
-
-std::vector<std::uint32_t> readDepth() {
-    std::vector<std::uint32_t> depth(static_cast<std::size_t>(kWidth) * kHeight);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
-    return depth;
-}
-
-}  // namespace
 
 Runner::Runner() : mygl_(kWidth, kHeight), osmesa_(kWidth, kHeight) {}
 
@@ -24,11 +16,11 @@ Result Runner::run(const Case& c) {
     mygl_.makeCurrent();
     c.draw(kWidth, kHeight);
     result.ours = {kWidth, kHeight, mygl_.readPixels()};
-    const auto oursDepth = readDepth();
+    const auto oursDepth = scenes::readDepth(kWidth, kHeight);
     osmesa_.makeCurrent();
     c.draw(kWidth, kHeight);
     result.theirs = {kWidth, kHeight, osmesa_.readPixels()};
-    const auto theirsDepth = readDepth();
+    const auto theirsDepth = scenes::readDepth(kWidth, kHeight);
     result.comparison = reference::compareImages(result.ours, result.theirs);
     const int tolerance = c.flat ? 0 : 1;
     result.depthTies = reference::depthTies(result.ours, result.theirs, oursDepth, theirsDepth, tolerance);

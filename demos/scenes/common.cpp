@@ -4,16 +4,14 @@
 
 namespace scenes {
 
-void beginFrame(int width, int height, bool depthTest, bool cullBack) {
+void resetState(int width, int height) {
     glViewport(0, 0, width, height);
-    glClearColor(0.08f, 0.08f, 0.12f, 1.0f);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (depthTest) glEnable(GL_DEPTH_TEST);
-    else glDisable(GL_DEPTH_TEST);
+    glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    if (cullBack) glEnable(GL_CULL_FACE);
-    else glDisable(GL_CULL_FACE);
+    glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
     glShadeModel(GL_SMOOTH);
@@ -22,6 +20,27 @@ void beginFrame(int width, int height, bool depthTest, bool cullBack) {
     glLoadIdentity();
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
+}
+
+void beginFrame(int width, int height, bool depthTest, bool cullBack) {
+    resetState(width, height);
+    glClearColor(0.08f, 0.08f, 0.12f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (depthTest) glEnable(GL_DEPTH_TEST);
+    if (cullBack) glEnable(GL_CULL_FACE);
+}
+
+void pixelOrtho(int width, int height) {
+    glMatrixMode(GL_PROJECTION);
+    glOrtho(0.0, width, 0.0, height, -1.0, 1.0);
+    glMatrixMode(GL_MODELVIEW);
+}
+
+std::vector<std::uint32_t> readDepth(int width, int height) {
+    std::vector<std::uint32_t> depth(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
+    return depth;
 }
 
 void drawCube(const float (*faceColors)[3], bool oneColor) {

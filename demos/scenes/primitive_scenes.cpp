@@ -11,13 +11,6 @@
 namespace scenes {
 namespace {
 
-// Window-pixel coordinates for 2D scenes.
-void pixelOrtho(int width, int height) {
-    glMatrixMode(GL_PROJECTION);
-    glOrtho(0.0, width, 0.0, height, -1.0, 1.0);
-    glMatrixMode(GL_MODELVIEW);
-}
-
 void hue(int i) {
     const float t = static_cast<float>(i) * 0.37f;
     glColor3f(0.5f + 0.5f * std::sin(t), 0.5f + 0.5f * std::sin(t + 2.1f), 0.5f + 0.5f * std::sin(t + 4.2f));

@@ -6,14 +6,6 @@
 namespace scenes {
 namespace {
 
-// The depth buffer through the loaded GL table, scaled to 32 bits as GL returns it.
-std::vector<std::uint32_t> readDepth(int width, int height) {
-    std::vector<std::uint32_t> depth(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
-    return depth;
-}
-
 // glEnable/glDisable wrapped so that GL_CULL_FACE keeps the forced value whatever the scene says.
 PFNGLENABLEPROC sceneEnable = nullptr;
 PFNGLDISABLEPROC sceneDisable = nullptr;

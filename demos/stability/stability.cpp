@@ -5,6 +5,7 @@
 #include <mygl/glu.h>
 #include <reference/compare.h>
 #include <reference/osmesa_context.h>
+#include <scene.h>
 
 #include <cmath>
 #include <initializer_list>
@@ -20,25 +21,13 @@ using glrenderer::HiddenSurface;
 using glrenderer::Interpolation;
 using glrenderer::RasterMethod;
 
+// Flat shading unless a check asks for colors.
 void reset(int width, int height) {
-    glViewport(0, 0, width, height);
-    glClearColor(0, 0, 0, 0);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
+    scenes::resetState(width, height);
     glShadeModel(GL_FLAT);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
 }
 
-void pixelOrtho(int width, int height) {
-    glMatrixMode(GL_PROJECTION);
-    glOrtho(0, width, 0, height, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-}
+using scenes::pixelOrtho;
 
 void color(int i) {
     const float t = static_cast<float>(i) * 0.77f;
@@ -256,12 +245,6 @@ void widePerspectiveCulling(int w, int h) {
     }
 }
 
-std::vector<std::uint32_t> readDepth() {
-    std::vector<std::uint32_t> depth(static_cast<std::size_t>(kWidth) * kHeight);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
-    return depth;
-}
 
 struct Frame {
     reference::Image image;
@@ -274,7 +257,7 @@ Frame currentFrame(std::vector<std::uint8_t> rgba) {
     frame.image.width = kWidth;
     frame.image.height = kHeight;
     frame.image.rgba = std::move(rgba);
-    frame.depth = readDepth();
+    frame.depth = scenes::readDepth(kWidth, kHeight);
     return frame;
 }
 
