@@ -76,4 +76,19 @@ bool cpuHasAvx2Fma() {
 #endif
 }
 
+bool cpuHasAvx512() {
+#if defined(__x86_64__) || defined(__i386__)
+    static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma");
+    return has;
+#else
+    return false;
+#endif
+}
+
+SpanShader bestSpanShader() {
+    if (cpuHasAvx512()) return shadeSpanAvx512;
+    if (cpuHasAvx2Fma()) return shadeSpanAvx2;
+    return shadeSpanScalar;
+}
+
 }  // namespace glrenderer

@@ -19,6 +19,13 @@ void shadeSpanScalar(const RasterTriangle& triangle, int row, int begin, int end
 void shadeSpanAvx2(const RasterTriangle& triangle, int row, int begin, int end,
                    Framebuffer& framebuffer, FragmentCounts& counts);
 bool cpuHasAvx2Fma();
+// 16 pixels at a time with AVX-512F; only on CPUs that have it.
+void shadeSpanAvx512(const RasterTriangle& triangle, int row, int begin, int end,
+                     Framebuffer& framebuffer, FragmentCounts& counts);
+bool cpuHasAvx512();
+
+// The fastest span shader this CPU runs.
+SpanShader bestSpanShader();
 
 // The fast exact method: spans from the edge functions, shaded by `shader`. Bit-for-bit the
 // same pixels, depths and counts as rasterizeTriangleExact.

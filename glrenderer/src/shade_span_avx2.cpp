@@ -62,16 +62,27 @@ void shadeSpanAvx2(const RasterTriangle& t, int row, int begin, int end, Framebu
     const __m256i flatColor = _mm256_set1_epi32(static_cast<int>(t.flatColor));
     std::uint64_t passed = 0;
     for (int px = begin; px <= end; px += 8) {
+        // Whole blocks use plain loads, blends and stores; only the last, partial block uses
+        // masked loads and stores (which are slow on some CPUs) to stay inside the row.
+        const bool whole = px + 7 <= end;
         const __m256i columns = _mm256_add_epi32(_mm256_set1_epi32(px), laneIndex);
-        __m256i mask = _mm256_cmpgt_epi32(_mm256_set1_epi32(end + 1), columns);
+        __m256i mask = whole ? _mm256_set1_epi32(-1) : _mm256_cmpgt_epi32(_mm256_set1_epi32(end + 1), columns);
         const __m256 x = _mm256_cvtepi32_ps(columns);
+        auto* depthBlock = reinterpret_cast<__m256i*>(depth + px);
+        auto* colorBlock = reinterpret_cast<__m256i*>(color + px);
         if (t.state.depthTest) {
             const __m256i z = toDepth24(depthPlane.at(x, y));
-            const __m256i stored = _mm256_maskload_epi32(reinterpret_cast<const int*>(depth + px), mask);
+            const __m256i stored = whole ? _mm256_loadu_si256(depthBlock)
+                                         : _mm256_maskload_epi32(reinterpret_cast<const int*>(depthBlock), mask);
             mask = _mm256_and_si256(mask, depthPassMask(t.state.depthFunc, z, stored));
-            if (t.state.depthWrite) _mm256_maskstore_epi32(reinterpret_cast<int*>(depth + px), mask, z);
+            if (t.state.depthWrite) {
+                if (whole) _mm256_storeu_si256(depthBlock, _mm256_blendv_epi8(stored, z, mask));
+                else _mm256_maskstore_epi32(reinterpret_cast<int*>(depthBlock), mask, z);
+            }
         }
-        passed += static_cast<unsigned>(std::popcount(static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(mask)))));
+        const unsigned lanes = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(mask)));
+        if (lanes == 0) continue;
+        passed += static_cast<unsigned>(std::popcount(lanes));
         __m256i rgba = flatColor;
         if (t.state.smooth) {
             const __m256 w = _mm256_div_ps(_mm256_set1_ps(1.0f), invW.at(x, y));
@@ -81,7 +92,9 @@ void shadeSpanAvx2(const RasterTriangle& t, int row, int begin, int end, Framebu
                 _mm256_or_si256(_mm256_slli_epi32(fragmentToUnorm8(_mm256_mul_ps(b.at(x, y), w)), 16),
                                 _mm256_slli_epi32(fragmentToUnorm8(_mm256_mul_ps(a.at(x, y), w)), 24)));
         }
-        _mm256_maskstore_epi32(reinterpret_cast<int*>(color + px), mask, rgba);
+        if (lanes == 0xFF) _mm256_storeu_si256(colorBlock, rgba);
+        else if (whole) _mm256_storeu_si256(colorBlock, _mm256_blendv_epi8(_mm256_loadu_si256(colorBlock), rgba, mask));
+        else _mm256_maskstore_epi32(reinterpret_cast<int*>(colorBlock), mask, rgba);
     }
     counts.fragments += static_cast<std::uint64_t>(end - begin + 1);
     counts.passed += passed;

@@ -15,7 +15,7 @@ constexpr std::size_t kParallelThreshold = 64;
 
 TileRasterizer::TileRasterizer(Framebuffer& framebuffer)
     : framebuffer_(framebuffer), pool_(std::max(1u, std::thread::hardware_concurrency())),
-      threadCounts_(pool_.threadCount()), shader_(cpuHasAvx2Fma() ? shadeSpanAvx2 : shadeSpanScalar) {}
+      threadCounts_(pool_.threadCount()), shader_(bestSpanShader()) {}
 
 void TileRasterizer::resetBins() {
     binnedWidth_ = framebuffer_.width();

@@ -38,6 +38,7 @@ TEST(SpanKernels, MatchThePerPixelKernelBitForBit) {
     std::uniform_int_distribution<std::uint32_t> depth(0, kDepthMax24);
     std::vector<std::pair<const char*, SpanShader>> shaders{{"scalar", shadeSpanScalar}};
     if (cpuHasAvx2Fma()) shaders.push_back({"avx2", shadeSpanAvx2});
+    if (cpuHasAvx512()) shaders.push_back({"avx512", shadeSpanAvx512});
     int drawn = 0;
     for (int i = 0; i < 3000; ++i) {
         const float spread = i % 3 == 0 ? 3.0f : (i % 3 == 1 ? 30.0f : 400.0f);
