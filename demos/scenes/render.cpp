@@ -6,28 +6,26 @@
 namespace scenes {
 namespace {
 
-// glEnable/glDisable wrapped so that GL_CULL_FACE keeps the forced value whatever the scene says.
+// glEnable/glDisable/glPolygonMode wrapped so that the forced state holds whatever the scene
+// says, as the course's keys overrode its scenes.
 PFNGLENABLEPROC sceneEnable = nullptr;
 PFNGLDISABLEPROC sceneDisable = nullptr;
-bool forcedCulling = false;
+PFNGLPOLYGONMODEPROC scenePolygonMode = nullptr;
+Overrides active;
 
-void GLAD_API_PTR enableExceptCulling(GLenum cap) {
-    if (cap != GL_CULL_FACE) sceneEnable(cap);
+bool isForced(GLenum cap) {
+    return (cap == GL_CULL_FACE && active.culling) || (cap == GL_DEPTH_TEST && active.depthTest);
 }
-void GLAD_API_PTR disableExceptCulling(GLenum cap) {
-    if (cap != GL_CULL_FACE) sceneDisable(cap);
+void GLAD_API_PTR enableUnlessForced(GLenum cap) {
+    if (!isForced(cap)) sceneEnable(cap);
+}
+void GLAD_API_PTR disableUnlessForced(GLenum cap) {
+    if (!isForced(cap)) sceneDisable(cap);
+}
+void GLAD_API_PTR polygonModeUnlessForced(GLenum face, GLenum mode) {
+    scenePolygonMode(face, active.wireframe ? GL_LINE : mode);
 }
 
-void applyOverrides(const Overrides& overrides) {
-    if (!overrides.culling) return;
-    forcedCulling = *overrides.culling;
-    sceneEnable = glad_glEnable;
-    sceneDisable = glad_glDisable;
-    (forcedCulling ? sceneEnable : sceneDisable)(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glad_glEnable = enableExceptCulling;
-    glad_glDisable = disableExceptCulling;
-}
 
 }  // namespace
 
@@ -35,6 +33,19 @@ std::optional<Backend> parseBackend(std::string_view name) {
     if (name == "mygl") return Backend::MyGL;
     if (name == "osmesa") return Backend::OSMesa;
     return std::nullopt;
+}
+
+void applyOverrides(const Overrides& overrides) {
+    active = overrides;
+    sceneEnable = glad_glEnable;
+    sceneDisable = glad_glDisable;
+    scenePolygonMode = glad_glPolygonMode;
+    if (overrides.culling) (*overrides.culling ? sceneEnable : sceneDisable)(GL_CULL_FACE);
+    if (overrides.depthTest) (*overrides.depthTest ? sceneEnable : sceneDisable)(GL_DEPTH_TEST);
+    if (overrides.wireframe) scenePolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glad_glEnable = enableUnlessForced;
+    glad_glDisable = disableUnlessForced;
+    glad_glPolygonMode = polygonModeUnlessForced;
 }
 
 Frame render(Backend backend, const Scene& scene, int width, int height, int frame, const Overrides& overrides) {

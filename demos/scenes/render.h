@@ -23,8 +23,13 @@ struct Frame {
 
 // Overrides what a scene asks for, as the course's keys did (B toggles culling).
 struct Overrides {
-    std::optional<bool> culling;  // force GL_CULL_FACE on (back faces) or off
+    std::optional<bool> culling;    // force GL_CULL_FACE on (back faces) or off
+    std::optional<bool> depthTest;  // force GL_DEPTH_TEST on or off
+    bool wireframe = false;         // force glPolygonMode(GL_FRONT_AND_BACK, GL_LINE)
 };
+
+// Wraps the loaded GL table so that the overrides hold whatever a scene then asks for.
+void applyOverrides(const Overrides& overrides);
 
 // Creates a context of the backend, makes it current (loading the GL table), draws, reads back.
 Frame render(Backend backend, const Scene& scene, int width, int height, int frame,

@@ -1,0 +1,140 @@
+// mygl-viewer: the demo scenes in a window, as the course's framework showed them. F1..F9 pick
+// a scene, B culling, W wireframe, D depth test, Space MyGL/OSMesa, C the diff view, arrows
+// animate; the title shows the backend, the culling state and the rasterized-triangle count.
+#include <glad/gl.h>
+#include <mygl/context.h>
+#include <reference/compare.h>
+#include <reference/osmesa_context.h>
+
+#include <stb/stb_easy_font.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "presenter.h"
+#include "render.h"
+
+namespace {
+
+struct ViewerState {
+    std::size_t scene = 4;  // the rotating cube
+    bool osmesa = false, diff = false, wireframe = false;
+    std::optional<bool> culling, depthTest;  // unset: as the scene says
+    int frame = 0;
+    bool dirty = true;
+};
+
+// Writes `text` onto the top-left corner of the frame (rows bottom first), doubled in size, so
+// that a screenshot shows the counts as the course printed them.
+void overlayText(reference::Image& image, const std::string& text) {
+    std::vector<char> buffer(text.size() * 300 + 1000);
+    const int quads = stb_easy_font_print(4, 4, const_cast<char*>(text.c_str()), nullptr, buffer.data(),
+                                          static_cast<int>(buffer.size()));
+    struct Corner {
+        float x, y, z;
+        unsigned char color[4];
+    };
+    const auto* corners = reinterpret_cast<const Corner*>(buffer.data());
+    for (int q = 0; q < quads; ++q) {
+        const Corner* c = corners + 4 * q;  // an axis-aligned rectangle, y down from the top
+        for (int y = static_cast<int>(2 * c[0].y); y < static_cast<int>(2 * c[2].y); ++y)
+            for (int x = static_cast<int>(2 * c[0].x); x < static_cast<int>(2 * c[2].x); ++x) {
+                if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+                std::uint8_t* pixel = &image.rgba[(static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4];
+                pixel[0] = 255, pixel[1] = 255, pixel[2] = 0, pixel[3] = 255;
+            }
+    }
+}
+
+std::string onOff(const std::optional<bool>& forced, const char* name) {
+    return std::string(name) + (forced ? (*forced ? " on" : " off") : " (scene)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int width = 640, height = 480;
+    ViewerState v;
+    std::string screenshot;
+    bool screenshotExact = false;  // --exact: no text overlay, so the window equals the frame
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--screenshot" && i + 1 < argc) screenshot = argv[++i];
+        else if (arg == "--exact") screenshotExact = true;
+        else if (arg == "--scene" && i + 1 < argc) {
+            const std::string name = argv[++i];
+            const auto& all = scenes::allScenes();
+            for (std::size_t s = 0; s < all.size(); ++s)
+                if (all[s].name == name) v.scene = s;
+        } else {
+            std::fprintf(stderr, "usage: mygl-viewer [--scene NAME] [--screenshot FILE.png] [--exact]\n");
+            return 2;
+        }
+    }
+    mygl::Context ours(width, height);
+    reference::OsmesaContext theirs(width, height);
+    Presenter window(width, height, "mygl-viewer");
+    Presenter::Callbacks callbacks;
+    callbacks.key = [&v](unsigned char key, int, int) {
+        switch (key) {
+        case 'b': case 'B': v.culling = !v.culling.value_or(false); break;
+        case 'w': case 'W': v.wireframe = !v.wireframe; break;
+        case 'd': case 'D': v.depthTest = !v.depthTest.value_or(false); break;
+        case ' ': v.osmesa = !v.osmesa; break;
+        case 'c': case 'C': v.diff = !v.diff; break;
+        default: return;
+        }
+        v.dirty = true;
+    };
+    callbacks.special = [&v](int key, int, int) {
+        if (key >= 1 && key <= 9 && static_cast<std::size_t>(key - 1) < scenes::allScenes().size()) v.scene = static_cast<std::size_t>(key - 1);
+        else if (key == 100 || key == 103) --v.frame;  // left, down
+        else if (key == 101 || key == 102) ++v.frame;  // up, right
+        v.dirty = true;
+    };
+    window.setCallbacks(callbacks);
+    while (!window.shouldClose()) {
+        window.pollEvents();
+        if (!v.dirty) {
+            window.waitBriefly();
+            continue;
+        }
+        v.dirty = false;
+        const scenes::Scene& scene = scenes::allScenes()[v.scene];
+        const scenes::Overrides overrides{v.culling, v.depthTest, v.wireframe};
+        auto draw = [&](bool onOsmesa) {
+            if (onOsmesa) theirs.makeCurrent();
+            else ours.makeCurrent();
+            scenes::applyOverrides(overrides);
+            scene.draw(width, height, v.frame);
+            return reference::Image{width, height, onOsmesa ? theirs.readPixels() : ours.readPixels()};
+        };
+        const reference::Image mine = draw(false);
+        const unsigned long long triangles = ours.stats().rasterized;
+        const bool cullingOn = glIsEnabled(GL_CULL_FACE);  // as the frame was drawn, overrides included
+        reference::Image shown = v.osmesa ? draw(true) : mine;
+        std::string extra;
+        if (v.diff) {
+            const reference::Image other = draw(!v.osmesa);
+            const reference::Comparison c = reference::compareImages(mine, v.osmesa ? shown : other);
+            shown = reference::diffImage(mine, v.osmesa ? shown : other);
+            extra = " | diff: " + reference::toString(c);
+        }
+        const std::string status = std::string(v.osmesa ? "OSMesa" : "MyGL") + " | " + scene.name + " | " +
+                                   onOff(v.culling, "culling") + " | " + onOff(v.depthTest, "depth") +
+                                   (v.wireframe ? " | wireframe" : "");
+        const std::string counts = std::string(cullingOn ? "Culling... -> triangle: " : "No cull... -> triangle: ") +
+                                   std::to_string(triangles) + extra;
+        window.setTitle(status + " | " + counts);
+        if (!screenshotExact) overlayText(shown, status + "\n" + counts);
+        window.present(shown);
+        if (!screenshot.empty()) {
+            reference::writePng(screenshot, window.screenshot());
+            return 0;
+        }
+    }
+    return 0;
+}
