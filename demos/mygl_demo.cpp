@@ -67,7 +67,7 @@ void printStats(const std::vector<const scenes::Scene*>& selected, const Options
     for (const scenes::Scene* scene : selected) {
         for (bool culling : {false, true}) {
             const mygl::Stats s =
-                scenes::render(scenes::Backend::MyGL, *scene, o.width, o.height, o.frame, {culling, std::nullopt, false}).stats;
+                scenes::render(scenes::Backend::MyGL, *scene, o.width, o.height, o.frame, {culling, std::nullopt, false, false}).stats;
             std::printf("%-28s %-9s %5llu %8llu %8llu %7llu %7llu %5llu %10llu %10llu\n", scene->name.c_str(),
                         culling ? "cull=back" : "cull=off", static_cast<unsigned long long>(s.triangles),
                         static_cast<unsigned long long>(s.clipCreated), static_cast<unsigned long long>(s.clippedAway), static_cast<unsigned long long>(s.culledBack),

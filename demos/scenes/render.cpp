@@ -11,6 +11,10 @@ namespace {
 PFNGLENABLEPROC sceneEnable = nullptr;
 PFNGLDISABLEPROC sceneDisable = nullptr;
 PFNGLPOLYGONMODEPROC scenePolygonMode = nullptr;
+PFNGLMATRIXMODEPROC sceneMatrixMode = nullptr;
+PFNGLFRUSTUMPROC sceneFrustum = nullptr;
+PFNGLMULTMATRIXDPROC sceneMultMatrixd = nullptr;
+GLenum matrixMode = GL_MODELVIEW;
 Overrides active;
 
 bool isForced(GLenum cap) {
@@ -24,6 +28,21 @@ void GLAD_API_PTR disableUnlessForced(GLenum cap) {
 }
 void GLAD_API_PTR polygonModeUnlessForced(GLenum face, GLenum mode) {
     scenePolygonMode(face, active.wireframe ? GL_LINE : mode);
+}
+void GLAD_API_PTR trackMatrixMode(GLenum mode) {
+    matrixMode = mode;
+    sceneMatrixMode(mode);
+}
+// A perspective projection (glFrustum, or gluPerspective's glMultMatrixd with w = -z) becomes an
+// orthographic one of about the same extent at the scenes' viewing distance.
+void orthographicInstead() { glOrtho(-3.2, 3.2, -2.4, 2.4, -100.0, 100.0); }
+void GLAD_API_PTR frustumOrOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
+    if (active.orthographic) orthographicInstead();
+    else sceneFrustum(l, r, b, t, n, f);
+}
+void GLAD_API_PTR multMatrixOrOrtho(const GLdouble* m) {
+    if (active.orthographic && matrixMode == GL_PROJECTION && m && m[11] == -1.0) orthographicInstead();
+    else sceneMultMatrixd(m);
 }
 
 
@@ -40,12 +59,19 @@ void applyOverrides(const Overrides& overrides) {
     sceneEnable = glad_glEnable;
     sceneDisable = glad_glDisable;
     scenePolygonMode = glad_glPolygonMode;
+    sceneMatrixMode = glad_glMatrixMode;
+    sceneFrustum = glad_glFrustum;
+    sceneMultMatrixd = glad_glMultMatrixd;
+    matrixMode = GL_MODELVIEW;
     if (overrides.culling) (*overrides.culling ? sceneEnable : sceneDisable)(GL_CULL_FACE);
     if (overrides.depthTest) (*overrides.depthTest ? sceneEnable : sceneDisable)(GL_DEPTH_TEST);
     if (overrides.wireframe) scenePolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glad_glEnable = enableUnlessForced;
     glad_glDisable = disableUnlessForced;
     glad_glPolygonMode = polygonModeUnlessForced;
+    glad_glMatrixMode = trackMatrixMode;
+    glad_glFrustum = frustumOrOrtho;
+    glad_glMultMatrixd = multMatrixOrOrtho;
 }
 
 Frame render(Backend backend, const Scene& scene, int width, int height, int frame, const Overrides& overrides) {

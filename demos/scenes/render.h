@@ -26,6 +26,7 @@ struct Overrides {
     std::optional<bool> culling;    // force GL_CULL_FACE on (back faces) or off
     std::optional<bool> depthTest;  // force GL_DEPTH_TEST on or off
     bool wireframe = false;         // force glPolygonMode(GL_FRONT_AND_BACK, GL_LINE)
+    bool orthographic = false;      // replace the scene's perspective by an orthographic view
 };
 
 // Wraps the loaded GL table so that the overrides hold whatever a scene then asks for.

@@ -1,6 +1,6 @@
 // mygl-viewer: the demo scenes in a window, as the course's framework showed them. F1..F9 pick
-// a scene, B culling, W wireframe, D depth test, Space MyGL/OSMesa, C the diff view, arrows
-// animate; the title shows the backend, the culling state and the rasterized-triangle count.
+// a scene, B culling, W wireframe, D depth test, P orthographic, Space MyGL/OSMesa, C the diff
+// view, arrows or a mouse drag animate; the title shows the backend, the culling state and the rasterized-triangle count.
 #include <glad/gl.h>
 #include <mygl/context.h>
 #include <reference/compare.h>
@@ -21,7 +21,7 @@ namespace {
 
 struct ViewerState {
     std::size_t scene = 4;  // the rotating cube
-    bool osmesa = false, diff = false, wireframe = false;
+    bool osmesa = false, diff = false, wireframe = false, orthographic = false;
     std::optional<bool> culling, depthTest;  // unset: as the scene says
     int frame = 0;
     bool dirty = true;
@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
         case 'd': case 'D': v.depthTest = !v.depthTest.value_or(false); break;
         case ' ': v.osmesa = !v.osmesa; break;
         case 'c': case 'C': v.diff = !v.diff; break;
+        case 'p': case 'P': v.orthographic = !v.orthographic; break;
         default: return;
         }
         v.dirty = true;
@@ -95,6 +96,13 @@ int main(int argc, char** argv) {
         else if (key == 101 || key == 102) ++v.frame;  // up, right
         v.dirty = true;
     };
+    callbacks.motion = [&v, lastX = 0](int x, int) mutable {  // dragging animates, like the arrows
+        if (x / 8 != lastX / 8) {
+            v.frame += x > lastX ? 1 : -1;
+            v.dirty = true;
+        }
+        lastX = x;
+    };
     window.setCallbacks(callbacks);
     while (!window.shouldClose()) {
         window.pollEvents();
@@ -104,7 +112,7 @@ int main(int argc, char** argv) {
         }
         v.dirty = false;
         const scenes::Scene& scene = scenes::allScenes()[v.scene];
-        const scenes::Overrides overrides{v.culling, v.depthTest, v.wireframe};
+        const scenes::Overrides overrides{v.culling, v.depthTest, v.wireframe, v.orthographic};
         auto draw = [&](bool onOsmesa) {
             if (onOsmesa) theirs.makeCurrent();
             else ours.makeCurrent();
@@ -125,7 +133,7 @@ int main(int argc, char** argv) {
         }
         const std::string status = std::string(v.osmesa ? "OSMesa" : "MyGL") + " | " + scene.name + " | " +
                                    onOff(v.culling, "culling") + " | " + onOff(v.depthTest, "depth") +
-                                   (v.wireframe ? " | wireframe" : "");
+                                   (v.wireframe ? " | wireframe" : "") + (v.orthographic ? " | orthographic" : "");
         const std::string counts = std::string(cullingOn ? "Culling... -> triangle: " : "No cull... -> triangle: ") +
                                    std::to_string(triangles) + extra;
         window.setTitle(status + " | " + counts);
