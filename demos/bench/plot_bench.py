@@ -18,7 +18,7 @@ def main(csv_path, png_path):
     scenes = sorted({r["scene"] for r in rows})
     markers = dict(zip(scenes, "osD^v<>"))
     colors = {v: plt.cm.tab10(i % 10) for i, v in enumerate(variants)}
-    fig, axes = plt.subplots(1, len(sizes), figsize=(7 * len(sizes) + 3, 5.5), squeeze=False)
+    fig, axes = plt.subplots(1, len(sizes), figsize=(7 * len(sizes) + 2, 5.5), squeeze=False)
     for ax, size in zip(axes[0], sizes):
         for r in (r for r in rows if r["size"] == size):
             reference = r["reference"] == "1"
@@ -34,7 +34,7 @@ def main(csv_path, png_path):
     handles = [plt.Line2D([], [], linestyle="", marker="o", color=colors[v], label=v) for v in variants]
     handles += [plt.Line2D([], [], linestyle="", marker=markers[s], color="gray", label=s) for s in scenes]
     fig.legend(handles=handles, loc="center right", fontsize=8)
-    fig.subplots_adjust(right=0.76 if len(sizes) > 1 else 0.68)
+    fig.subplots_adjust(right=0.84 if len(sizes) > 1 else 0.72)
     fig.savefig(png_path, dpi=90)
 
 
