@@ -1,11 +1,5 @@
 # cmake -DPROGRAM=<port> -DCOMPARE=<mygl-compare> -DOUT=<dir> -P check_window.cmake
-find_program(XVFB_RUN xvfb-run)
-if(NOT XVFB_RUN)
-  message("xvfb-run not found: skipped")
-  cmake_language(EXIT 77)
-endif()
-file(REMOVE_RECURSE ${OUT})
-file(MAKE_DIRECTORY ${OUT})
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/XvfbTestSetup.cmake)
 set(ENV{MYGL_CAPTURE} 1:${OUT})
 execute_process(COMMAND ${PROGRAM} RESULT_VARIABLE result)
 unset(ENV{MYGL_CAPTURE})

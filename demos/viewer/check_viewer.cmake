@@ -1,11 +1,5 @@
 # cmake -DVIEWER=... -DDEMO=... -DCOMPARE=... -DOUT=<dir> -P check_viewer.cmake
-find_program(XVFB_RUN xvfb-run)
-if(NOT XVFB_RUN)
-  message("xvfb-run not found: skipped")
-  cmake_language(EXIT 77)
-endif()
-file(REMOVE_RECURSE ${OUT})
-file(MAKE_DIRECTORY ${OUT})
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/XvfbTestSetup.cmake)
 execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 800x600x24" ${VIEWER} --scene cube --exact --screenshot ${OUT}/window.png
                 RESULT_VARIABLE result TIMEOUT 60)
 if(NOT result EQUAL 0 OR NOT EXISTS ${OUT}/window.png)
