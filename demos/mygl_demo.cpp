@@ -21,13 +21,15 @@ struct Options {
     bool list = false;
     bool stats = false;
     bool stability = false;
+    glrenderer::Methods methods;
 };
 
 [[noreturn]] void usage(const std::string& error) {
     std::fprintf(stderr,
                  "mygl-demo: %s\n"
                  "usage: mygl-demo [--scene NAME|all] [--backend mygl|osmesa|both] [--size WxH]\n"
-                 "                 [--frame N] [--out DIR] [--list] [--stats] [--stability]\n",
+                 "                 [--frame N] [--out DIR] [--list] [--stats] [--stability]\n"
+                 "                 [--method exact|exact-per-pixel|scanline|bbox-float]\n",
                  error.c_str());
     std::exit(2);
 }
@@ -47,6 +49,12 @@ Options parse(int argc, char** argv) {
         else if (arg == "--list") o.list = true;
         else if (arg == "--stats") o.stats = true;
         else if (arg == "--stability") o.stability = true;
+        else if (arg == "--method") {
+            const std::string name = value();
+            const auto method = glrenderer::parseRasterMethod(name);
+            if (!method) usage("unknown method '" + name + "' (exact, exact-per-pixel, scanline, bbox-float)");
+            o.methods.raster = *method;
+        }
         else if (arg == "--size") {
             const std::string size = value();
             if (std::sscanf(size.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1 ||
@@ -118,11 +126,15 @@ int main(int argc, char** argv) {
     }
     std::filesystem::create_directories(options.out);
     const bool both = options.backend == "both";
-    if (both) std::printf("%-28s %9s %9s %7s %4s\n", "scene", "pixels", "differing", ">1", "max");
+    if (both) {
+        std::printf("MyGL method: %s\n", std::string(glrenderer::toString(options.methods.raster)).c_str());
+        std::printf("%-28s %9s %9s %7s %4s\n", "scene", "pixels", "differing", ">1", "max");
+    }
     for (const scenes::Scene* scene : selected) {
         const std::string base = options.out + "/" + scene->name;
         if (both || options.backend == "mygl") {
-            const scenes::Frame ours = scenes::render(scenes::Backend::MyGL, *scene, options.width, options.height, options.frame);
+            const scenes::Frame ours =
+                scenes::render(scenes::Backend::MyGL, *scene, options.width, options.height, options.frame, {}, options.methods);
             reference::writePng(base + "-mygl.png", ours.image);
             if (both) {
                 const scenes::Frame theirs = scenes::render(scenes::Backend::OSMesa, *scene, options.width, options.height, options.frame);

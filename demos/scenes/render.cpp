@@ -74,12 +74,14 @@ void applyOverrides(const Overrides& overrides) {
     glad_glMultMatrixd = multMatrixOrOrtho;
 }
 
-Frame render(Backend backend, const Scene& scene, int width, int height, int frame, const Overrides& overrides) {
+Frame render(Backend backend, const Scene& scene, int width, int height, int frame, const Overrides& overrides,
+             const glrenderer::Methods& methods) {
     Frame result;
     result.image.width = width;
     result.image.height = height;
     if (backend == Backend::MyGL) {
         mygl::Context context(width, height);
+        context.setMethods(methods);
         context.makeCurrent();
         applyOverrides(overrides);
         scene.draw(width, height, frame);

@@ -33,7 +33,8 @@ struct Overrides {
 void applyOverrides(const Overrides& overrides);
 
 // Creates a context of the backend, makes it current (loading the GL table), draws, reads back.
+// `methods` choose how MyGL rasterizes (OSMesa ignores them).
 Frame render(Backend backend, const Scene& scene, int width, int height, int frame,
-             const Overrides& overrides = {});
+             const Overrides& overrides = {}, const glrenderer::Methods& methods = {});
 
 }  // namespace scenes
