@@ -1,5 +1,7 @@
 #include "matrix_math.h"
 
+#include <cmath>
+
 namespace mygl {
 
 Matrix multiply(const Matrix& a, const Matrix& b) {

@@ -88,6 +88,36 @@ TEST(Matrices, StackDepthsMatchTheReference) {
     EXPECT_EQ(depths.mygl, depths.osmesa);
 }
 
+// The vertex transform rounds each product and sums left to right, nothing fused. The depth of a
+// line depends on the last bit of its ends' x, y, z and w (a0 = z - dz/dx * x), so outlines under
+// a perspective show any difference: with fused multiply-adds a third of these triangles differ.
+TEST(Matrices, VertexTransformGivesTheReferenceDepthsBitForBit) {
+    const auto depths = onBothBackends<std::vector<GLuint>>(
+        [] {
+            glClear(GL_DEPTH_BUFFER_BIT);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_ALWAYS);
+            glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+            glMatrixMode(GL_PROJECTION);
+            glFrustum(-0.6, 0.6, -0.45, 0.45, 1.0, 10.0);
+            glMatrixMode(GL_MODELVIEW);
+            glTranslatef(0.0f, 0.0f, -2.2f);
+            glRotatef(70.0f, 1.0f, 0.0f, 0.0f);
+            glScalef(1.3f, 1.3f, 1.3f);
+            glBegin(GL_TRIANGLES);
+            for (int i = 0; i < 3 * 12; ++i) {
+                const float t = static_cast<float>(i);
+                glVertex3f(0.8f * std::sin(t * 1.7f), 0.7f * std::sin(t * 2.3f + 1.0f), 0.3f * std::sin(t * 0.9f));
+            }
+            glEnd();
+            std::vector<GLuint> depth(64 * 48);
+            glReadPixels(0, 0, 64, 48, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth.data());
+            return depth;
+        },
+        64, 48);
+    EXPECT_EQ(depths.mygl, depths.osmesa);
+}
+
 TEST(StateQueries, ConversionsBetweenTypesMatchTheReference) {
     const auto values = onBothBackends<std::vector<double>>([] {
         glClearColor(0.25f, 0.5f, 1.5f, -0.5f);  // clamped to [0, 1]
