@@ -1,10 +1,9 @@
 #include "tile_rasterizer.h"
 
 #include "raster_float_methods.h"
+#include "thread_count.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <thread>
 
 namespace glrenderer {
 namespace {
@@ -12,19 +11,10 @@ namespace {
 // Below this many queued triangles the threads cost more than they save.
 constexpr std::size_t kParallelThreshold = 64;
 
-// Worker threads: MYGL_THREADS if set (1 to 64, as llvmpipe's LP_NUM_THREADS), else one per CPU.
-unsigned threadCount() {
-    if (const char* text = std::getenv("MYGL_THREADS")) {
-        const long requested = std::strtol(text, nullptr, 10);
-        if (requested >= 1 && requested <= 64) return static_cast<unsigned>(requested);
-    }
-    return std::max(1u, std::thread::hardware_concurrency());
-}
-
 }  // namespace
 
 TileRasterizer::TileRasterizer(Framebuffer& framebuffer)
-    : framebuffer_(framebuffer), pool_(threadCount()),
+    : framebuffer_(framebuffer), pool_(workerThreadCount()),
       threadCounts_(pool_.threadCount()), shader_(bestSpanShader()) {}
 
 void TileRasterizer::resetBins() {

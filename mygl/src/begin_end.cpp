@@ -19,6 +19,11 @@ void addVertex(const glm::vec4& object) {
                     at(m, 1, 0) * s->normal.x + at(m, 1, 1) * s->normal.y + at(m, 1, 2) * s->normal.z,
                     at(m, 2, 0) * s->normal.x + at(m, 2, 1) * s->normal.y + at(m, 2, 2) * s->normal.z};
     }
+    // A long primitive goes to the pipeline in parts, so that drawing overlaps the program.
+    if (s->vertices.size() == glrenderer::Pipeline::kPartVertices && glrenderer::Pipeline::takesParts(s->mode)) {
+        s->pipeline.submitPart(s->draw, s->mode, s->vertices);
+        s->vertices.clear();
+    }
 }
 
 template <class T>

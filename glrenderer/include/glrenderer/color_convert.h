@@ -6,13 +6,15 @@
 
 #include <glm/vec4.hpp>
 
+#include "glrenderer/round_to_even.h"
+
 namespace glrenderer {
 
 // Float to 8-bit as the reference converts glClear's color: clamp to [0, 1], then round
 // float(v * 255) to nearest, ties to even (the default rounding mode). NaN becomes 0.
 inline std::uint8_t toUnorm8(float value) {
     const float clamped = value > 0.0f ? std::min(value, 1.0f) : 0.0f;
-    return static_cast<std::uint8_t>(std::nearbyint(clamped * 255.0f));
+    return static_cast<std::uint8_t>(roundToEven(clamped * 255.0f));
 }
 
 // Float to 8-bit as the reference's fragment pipeline converts shaded colors: clamp, scale by
@@ -47,7 +49,7 @@ inline constexpr std::uint32_t kDepthMax24 = 0xFFFFFF;
 // Depth in [0, 1] to the 24-bit buffer value: round float(z * 16777215) to nearest even.
 inline std::uint32_t toDepth24(float depth) {
     const float clamped = depth > 0.0f ? std::min(depth, 1.0f) : 0.0f;
-    return static_cast<std::uint32_t>(std::nearbyint(clamped * 16777215.0f));
+    return static_cast<std::uint32_t>(roundToEven(clamped * 16777215.0f));
 }
 
 }  // namespace glrenderer

@@ -1,8 +1,8 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <vector>
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
@@ -12,18 +12,18 @@
 
 namespace glrenderer {
 
-struct TriangleIndices;
-struct WindowVertex;
-class ViewportTransform;
-class TileRasterizer;
+class BatchDrawer;
+class BatchThread;
+struct Batch;
 
 // Turns primitives in clip space into pixels of a Framebuffer.
 //
 // Consecutive submissions of the same mergeable mode (points, lines, triangles, quads) form one
 // batch until endBatch(), as the reference's vertex buffer merges glBegin/glEnd blocks: whether
 // any vertex of the batch needs clipping decides how quads are split, so the batch matters.
-// Pixels are only promised after finish(): triangles are queued and drawn in screen tiles by
-// worker threads. Call finish() before resizing the framebuffer.
+// Batches are drawn on a thread of the pipeline's own while the caller goes on, and triangles
+// are queued and rasterized in screen tiles by worker threads: pixels and counters are only
+// promised after finish(). Call finish() before resizing the framebuffer.
 class Pipeline {
 public:
     explicit Pipeline(Framebuffer& framebuffer);
@@ -31,7 +31,16 @@ public:
     Pipeline(const Pipeline&) = delete;
     Pipeline& operator=(const Pipeline&) = delete;
 
+    // One whole primitive (a glBegin/glEnd block).
     void submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
+
+    // The first vertices of a primitive still being specified, handed over early so that the
+    // pipeline can start on them. Only modes that merge take parts, kPartVertices at a time (a
+    // whole number of their primitives); submit() then hands over the rest.
+    static constexpr std::size_t kPartVertices = 3072;
+    static bool takesParts(PrimitiveMode mode);
+    void submitPart(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
+
     void endBatch();
     void finish();
 
@@ -45,26 +54,19 @@ public:
     }
     const Methods& methods() const { return methods_; }
 
+    // Complete after finish().
     const Stats& stats() const { return stats_; }
-    void resetStats() { stats_ = {}; }
+    void resetStats();
 
 private:
-    void drawBatch();
-    void flushTiles();
-    void drawTriangle(const TriangleIndices& triangle, const ViewportTransform& viewport);
-    void setupTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                       const glm::vec4& flatColor);
+    void append(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
 
     Framebuffer& framebuffer_;
     Stats stats_;
     Methods methods_;
-    DrawState batchState_;
-    PrimitiveMode batchMode_ = PrimitiveMode::Points;
-    std::vector<Vertex> batch_;
-    // Per batch vertex: which clip planes it is outside of, and its window position.
-    std::vector<std::uint8_t> outcodes_;
-    std::vector<WindowVertex> windowVertices_;
-    std::unique_ptr<TileRasterizer> tiles_;
+    std::unique_ptr<Batch> batch_;  // being merged on the caller's thread
+    std::unique_ptr<BatchDrawer> drawer_;
+    std::unique_ptr<BatchThread> thread_;  // null when the pipeline runs on one thread
 };
 
 }  // namespace glrenderer

@@ -1,0 +1,42 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "batch.h"
+#include "glrenderer/framebuffer.h"
+#include "glrenderer/stats.h"
+#include "tile_rasterizer.h"
+#include "window_vertex.h"
+
+namespace glrenderer {
+
+struct TriangleIndices;
+
+// The pipeline's per-batch work: window transform, decomposition, clipping, culling and
+// triangle setup, with triangles binned for the tile rasterizer and points and lines drawn at
+// once. Everything it counts goes to `stats`.
+class BatchDrawer {
+public:
+    BatchDrawer(Framebuffer& framebuffer, Stats& stats);
+
+    void draw(const Batch& batch);
+    // Rasterizes the binned triangles (in parallel tiles).
+    void flush();
+
+private:
+    void drawTriangles();
+    void drawTriangle(const TriangleIndices& triangle, const ViewportTransform& viewport);
+    void setupTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                       const glm::vec4& flatColor);
+
+    Framebuffer& framebuffer_;
+    Stats& stats_;
+    TileRasterizer tiles_;
+    bool paintersSort_ = false;  // of the last batch drawn: how its tiles order triangles
+    const Batch* batch_ = nullptr;  // the batch being drawn
+    // Per batch vertex: which clip planes it is outside of, and its window position.
+    std::vector<std::uint8_t> outcodes_;
+    std::vector<WindowVertex> windowVertices_;
+};
+
+}  // namespace glrenderer

@@ -1,0 +1,62 @@
+#include "batch_thread.h"
+
+namespace glrenderer {
+
+BatchThread::BatchThread(BatchDrawer& drawer) : drawer_(drawer), thread_([this] { run(); }) {}
+
+BatchThread::~BatchThread() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_one();
+    thread_.join();
+}
+
+void BatchThread::post(Batch& batch) {
+    std::lock_guard lock(mutex_);
+    postedVertices_ += batch.vertices.size();
+    posted_.push_back({batch.state, batch.methods, batch.mode, std::move(batch.vertices)});
+    batch.vertices.clear();  // a moved-from vector is valid but unspecified
+    if (!spareVertices_.empty()) {
+        batch.vertices = std::move(spareVertices_.back());
+        spareVertices_.pop_back();
+    }
+    if (postedVertices_ >= kWakeVertices) wake_.notify_one();
+}
+
+void BatchThread::wait() {
+    std::unique_lock lock(mutex_);
+    waited_ = true;
+    wake_.notify_one();
+    idle_.wait(lock, [this] { return posted_.empty() && !drawing_; });
+    waited_ = false;
+}
+
+bool BatchThread::hasWork() const {
+    return !posted_.empty() && (waited_ || postedVertices_ >= kWakeVertices);
+}
+
+void BatchThread::run() {
+    std::vector<Batch> drawing;
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        wake_.wait(lock, [this] { return stopping_ || hasWork(); });
+        if (stopping_) return;
+        drawing.swap(posted_);
+        postedVertices_ = 0;
+        drawing_ = true;
+        lock.unlock();
+        for (const Batch& batch : drawing) drawer_.draw(batch);
+        lock.lock();
+        for (Batch& batch : drawing) {
+            batch.vertices.clear();
+            spareVertices_.push_back(std::move(batch.vertices));
+        }
+        drawing.clear();
+        drawing_ = false;
+        if (posted_.empty()) idle_.notify_all();
+    }
+}
+
+}  // namespace glrenderer

@@ -1,0 +1,48 @@
+#pragma once
+#include <condition_variable>
+#include <cstddef>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "batch.h"
+#include "batch_drawer.h"
+
+namespace glrenderer {
+
+// Draws batches on a thread of its own, in the order they were posted, so that the program's
+// gl* calls overlap the pipeline's per-batch work (llvmpipe likewise sets up while the program
+// goes on). Vertex arrays travel back to the poster for reuse: steady state allocates nothing.
+class BatchThread {
+public:
+    explicit BatchThread(BatchDrawer& drawer);
+    ~BatchThread();
+    BatchThread(const BatchThread&) = delete;
+    BatchThread& operator=(const BatchThread&) = delete;
+
+    // Queues `batch`; its vertices are taken and replaced by an empty array from an earlier batch.
+    void post(Batch& batch);
+    // Returns when every posted batch has been drawn.
+    void wait();
+
+private:
+    // The thread is woken only once this many vertices wait (or on wait()): a wake-up costs
+    // microseconds, small batches come by the thousand.
+    static constexpr std::size_t kWakeVertices = 2048;
+
+    void run();
+    bool hasWork() const;
+
+    BatchDrawer& drawer_;
+    std::mutex mutex_;
+    std::condition_variable wake_, idle_;
+    std::vector<Batch> posted_;
+    std::vector<std::vector<Vertex>> spareVertices_;
+    std::size_t postedVertices_ = 0;
+    bool drawing_ = false;
+    bool waited_ = false;  // someone is in wait(): draw whatever is posted
+    bool stopping_ = false;
+    std::thread thread_;  // last: starts once the members above exist
+};
+
+}  // namespace glrenderer
