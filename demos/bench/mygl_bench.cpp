@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "render.h"
 
 namespace {
@@ -98,7 +100,9 @@ int runWorker(const std::string& sceneName, int width, int height, int repetitio
 }
 
 Timing runInChild(const char* self, const Variant& v, const std::string& scene, int width, int height, int repetitions) {
-    const std::string framePath = (std::filesystem::temp_directory_path() / "mygl-bench-frame.png").string();
+    // One file per process: benchmark runs may overlap (tests run in parallel).
+    const std::string framePath =
+        (std::filesystem::temp_directory_path() / ("mygl-bench-frame-" + std::to_string(getpid()) + ".png")).string();
     const std::string command = "env " + v.environment + " '" + std::string(self) + "' --worker " + scene + " " +
                                 std::to_string(width) + " " + std::to_string(height) + " " +
                                 std::to_string(repetitions) + " '" + framePath + "'";
