@@ -22,6 +22,10 @@ public:
     void draw(const Batch& batch);
     // Rasterizes the binned triangles (in parallel tiles).
     void flush();
+    // Clears the framebuffer at the next flush(), tile by tile.
+    void clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
+        tiles_.clearAtFlush(color, rgba, depth, depth24);
+    }
 
 private:
     void drawTriangles();

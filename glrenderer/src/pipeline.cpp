@@ -26,7 +26,7 @@ bool canCut(const Batch& batch) {
 }  // namespace
 
 Pipeline::Pipeline(Framebuffer& framebuffer)
-    : framebuffer_(framebuffer), batch_(std::make_unique<Batch>()), drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
+    : batch_(std::make_unique<Batch>()), drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
     if (workerThreadCount() > 1) thread_ = std::make_unique<BatchThread>(*drawer_);
 }
 
@@ -83,8 +83,7 @@ void Pipeline::resetStats() {
 
 void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
     finish();
-    if (color) framebuffer_.clearColor(rgba);
-    if (depth) framebuffer_.clearDepth(depth24);
+    drawer_->clearAtFlush(color, rgba, depth, depth24);
 }
 
 }  // namespace glrenderer

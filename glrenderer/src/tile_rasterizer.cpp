@@ -8,8 +8,9 @@
 namespace glrenderer {
 namespace {
 
-// Below this many queued triangles the threads cost more than they save.
+// Below this many queued triangles, or pixels to clear, the threads cost more than they save.
 constexpr std::size_t kParallelThreshold = 64;
+constexpr std::size_t kParallelClearPixels = 64 * 1024;
 
 }  // namespace
 
@@ -37,9 +38,27 @@ void TileRasterizer::add(const RasterTriangle& triangle) {
             bins_[static_cast<std::size_t>(ty * tilesX_ + tx)].push_back(index);
 }
 
+void TileRasterizer::clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
+    if (color) clear_.color = true, clear_.rgba = rgba;
+    if (depth) clear_.depth = true, clear_.depth24 = depth24;
+}
+
+void TileRasterizer::clearTile(const PixelRect& rect) {
+    const std::size_t width = static_cast<std::size_t>(framebuffer_.width());
+    const auto count = static_cast<std::size_t>(rect.maxX - rect.minX + 1);
+    for (int row = rect.minY; row <= rect.maxY; ++row) {
+        const std::size_t begin = static_cast<std::size_t>(framebuffer_.height() - 1 - row) * width +
+                                  static_cast<std::size_t>(rect.minX);
+        if (clear_.color) std::fill_n(framebuffer_.color().begin() + static_cast<std::ptrdiff_t>(begin), count, clear_.rgba);
+        if (clear_.depth) std::fill_n(framebuffer_.depth().begin() + static_cast<std::ptrdiff_t>(begin), count, clear_.depth24);
+    }
+}
+
 void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     if (binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) triangles_.clear();
-    if (triangles_.empty()) return;
+    const bool clearing = clear_.color || clear_.depth;
+    if (triangles_.empty() && !clearing) return;
+    if (triangles_.empty()) resetBins();  // the tiles of the current size, none holding a triangle
     for (ThreadCounts& c : threadCounts_) c.counts = {};
     auto drawTile = [&](std::size_t tile, unsigned thread) {
         const int tx = static_cast<int>(tile % static_cast<std::size_t>(tilesX_));
@@ -51,10 +70,12 @@ void TileRasterizer::flush(Stats& stats, bool paintersSort) {
                 return triangles_[a].meanDepth > triangles_[b].meanDepth;
             });
         }
+        if (clearing) clearTile(rect);
         for (std::uint32_t index : bins_[tile])
             rasterizeWithMethod(triangles_[index], rect, framebuffer_, threadCounts_[thread].counts, shader_);
     };
-    if (triangles_.size() < kParallelThreshold) {
+    const std::size_t pixels = static_cast<std::size_t>(binnedWidth_) * static_cast<std::size_t>(binnedHeight_);
+    if (triangles_.size() < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawTile(tile, 0);
     } else {
         pool_.run(bins_.size(), drawTile);
@@ -65,6 +86,7 @@ void TileRasterizer::flush(Stats& stats, bool paintersSort) {
         stats.pixelsWritten += c.counts.passed;
     }
     triangles_.clear();
+    clear_ = {};
 }
 
 }  // namespace glrenderer

@@ -17,15 +17,23 @@ public:
     explicit TileRasterizer(Framebuffer& framebuffer);
 
     void add(const RasterTriangle& triangle);
+    // Clears the buffers at the next flush(), each tile just before its triangles while it is
+    // in cache, tiles in parallel, instead of one pass over the whole framebuffer now.
+    void clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);
     // Draws everything queued; adds fragment counts to stats. The framebuffer must keep its size
     // between add() and flush(); if it changed, the queued triangles are dropped. With
     // paintersSort each tile draws its triangles far to near by mean depth instead of in order.
     void flush(Stats& stats, bool paintersSort = false);
-    bool empty() const { return triangles_.empty(); }
 
 private:
     static constexpr int kTileSize = 64;
     void resetBins();
+    void clearTile(const PixelRect& rect);
+
+    struct PendingClear {
+        bool color = false, depth = false;
+        std::uint32_t rgba = 0, depth24 = 0;
+    };
 
     struct alignas(64) ThreadCounts {  // one cache line per thread
         FragmentCounts counts;
@@ -35,6 +43,7 @@ private:
     WorkerPool pool_;
     std::vector<ThreadCounts> threadCounts_;
     SpanShader shader_;
+    PendingClear clear_;
     std::vector<RasterTriangle> triangles_;
     std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into triangles_
     int tilesX_ = 0, tilesY_ = 0;

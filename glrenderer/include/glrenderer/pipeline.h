@@ -61,7 +61,6 @@ public:
 private:
     void append(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
 
-    Framebuffer& framebuffer_;
     Stats stats_;
     Methods methods_;
     std::unique_ptr<Batch> batch_;  // being merged on the caller's thread
