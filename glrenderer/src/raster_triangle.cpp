@@ -64,7 +64,7 @@ EdgeFunction::EdgeFunction(const FixedPoint& a, const FixedPoint& b) {
 
 bool prepareTriangle(const SetupTriangle& t, const DrawState& state, const Methods& methods,
                      int width, int height, RasterTriangle& out) {
-    // Orient the edges so that the interior is positive; the planes keep the original order.
+    // Orient the edges so that the interior is positive.
     const FixedPoint& a = t.fixed[0];
     const FixedPoint& b = t.area > 0 ? t.fixed[1] : t.fixed[2];
     const FixedPoint& c = t.area > 0 ? t.fixed[2] : t.fixed[1];
@@ -95,18 +95,24 @@ bool prepareTriangle(const SetupTriangle& t, const DrawState& state, const Metho
         out.flatColor = fragmentRgba8(t.flatColor);
         if (!out.state.depthTest) return true;
     }
-    const PlaneBuilder planes(t.v[0], t.v[1], t.v[2]);
+    // The reference sets up planes only for triangles counter-clockwise in its y-down view; one
+    // clockwise in GL's window (area > 0 here) is set up as (v1, v0, v2), keeping the provoking
+    // vertex last. The planes' last bits follow that order.
+    const bool clockwise = t.area > 0;
+    const WindowVertex& v0 = clockwise ? t.v[1] : t.v[0];
+    const WindowVertex& v1 = clockwise ? t.v[0] : t.v[1];
+    const WindowVertex& v2 = t.v[2];
+    const PlaneBuilder planes(v0, v1, v2);
     if (out.state.smooth && !perspective) {
-        for (int i = 0; i < 4; ++i) out.color[i] = planes.plane(t.v[0].color[i], t.v[1].color[i], t.v[2].color[i]);
+        for (int i = 0; i < 4; ++i) out.color[i] = planes.plane(v0.color[i], v1.color[i], v2.color[i]);
         out.invW = {1.0f, 0.0f, 0.0f};
     } else if (out.state.smooth) {
         for (int i = 0; i < 4; ++i) {
-            out.color[i] = planes.plane(t.v[0].color[i] * t.v[0].invW, t.v[1].color[i] * t.v[1].invW,
-                                        t.v[2].color[i] * t.v[2].invW);
+            out.color[i] = planes.plane(v0.color[i] * v0.invW, v1.color[i] * v1.invW, v2.color[i] * v2.invW);
         }
-        out.invW = planes.plane(t.v[0].invW, t.v[1].invW, t.v[2].invW);
+        out.invW = planes.plane(v0.invW, v1.invW, v2.invW);
     }
-    if (out.state.depthTest) out.depth = planes.plane(t.v[0].z, t.v[1].z, t.v[2].z);
+    if (out.state.depthTest) out.depth = planes.plane(v0.z, v1.z, v2.z);
     return true;
 }
 
