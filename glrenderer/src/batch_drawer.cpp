@@ -107,10 +107,16 @@ void BatchDrawer::drawTriangle(const TriangleIndices& t, const ViewportTransform
         return;
     }
     stats_.clipCreated += static_cast<std::uint64_t>(polygon.count - 3);
-    const WindowVertex first = viewport.applyToClipped(polygon.vertices[0]);
-    WindowVertex previous = viewport.applyToClipped(polygon.vertices[1]);
+    // Input vertices keep the window position of the vertex stage; new ones get the clipper's.
+    const auto window = [&](int i) {
+        const int source = polygon.source[static_cast<std::size_t>(i)];
+        return source == kNewVertex ? viewport.applyToClipped(polygon.vertices[static_cast<std::size_t>(i)])
+                                    : windowVertices_[t.v[source]];
+    };
+    const WindowVertex first = window(0);
+    WindowVertex previous = window(1);
     for (int i = 2; i < polygon.count; ++i) {
-        const WindowVertex current = viewport.applyToClipped(polygon.vertices[static_cast<std::size_t>(i)]);
+        const WindowVertex current = window(i);
         setupTriangle(previous, current, first, flatColor);
         previous = current;
     }

@@ -38,6 +38,7 @@ ClippedPolygon clipTriangle(const Vertex& v0, const Vertex& v1, const Vertex& v2
     polygons[0].vertices[0] = v0;
     polygons[0].vertices[1] = v1;
     polygons[0].vertices[2] = v2;
+    polygons[0].source = {0, 1, 2};
     polygons[0].count = 3;
     int current = 0;
     for (int plane = 0; plane < kClipPlaneCount; ++plane) {
@@ -54,8 +55,12 @@ ClippedPolygon clipTriangle(const Vertex& v0, const Vertex& v1, const Vertex& v2
             if (!isFinite(vertex.position)) return ClippedPolygon{};
             const float previousDistance = clipPlaneDistance(previous.position, plane);
             const float distance = clipPlaneDistance(vertex.position, plane);
-            if (previousDistance >= 0.0f) out.vertices[static_cast<std::size_t>(out.count++)] = previous;
+            if (previousDistance >= 0.0f) {
+                out.source[static_cast<std::size_t>(out.count)] = in.source[static_cast<std::size_t>(i - 1)];
+                out.vertices[static_cast<std::size_t>(out.count++)] = previous;
+            }
             if ((previousDistance >= 0.0f) != (distance >= 0.0f)) {
+                out.source[static_cast<std::size_t>(out.count)] = kNewVertex;
                 out.vertices[static_cast<std::size_t>(out.count++)] =
                     clipCrossing(previous, previousDistance, vertex, distance);
             }

@@ -35,8 +35,12 @@ inline constexpr int kMaxClippedVertices = 3 + kClipPlaneCount;
 
 struct ClippedPolygon {
     std::array<Vertex, kMaxClippedVertices> vertices;
+    // Which input vertex (0, 1, 2) each one is, or kNewVertex for one made on a clip plane: the
+    // reference keeps the input vertices' window positions from its vertex stage.
+    std::array<int, kMaxClippedVertices> source;
     int count = 0;
 };
+inline constexpr int kNewVertex = -1;
 
 // Clips triangle (v0, v1, v2) in clip space against the view volume (Sutherland-Hodgman, plane
 // by plane in the reference's order). The polygon starts at v0 and is drawn as the fan

@@ -97,6 +97,9 @@ TEST(Clipping, TriangleThroughTheNearPlaneBecomesAQuadrilateral) {
     EXPECT_EQ(polygon.vertices[1].position, b.position);
     EXPECT_EQ(polygon.vertices[2].position, c.position);
     EXPECT_FLOAT_EQ(polygon.vertices[3].position.z, -polygon.vertices[3].position.w);
+    // b and c are the input vertices 1 and 2 (they keep their vertex-stage window positions).
+    const std::array<int, 4> sources{glrenderer::kNewVertex, 1, 2, glrenderer::kNewVertex};
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(polygon.source[static_cast<std::size_t>(i)], sources[static_cast<std::size_t>(i)]);
     for (int i = 0; i < polygon.count; ++i) {
         const glm::vec4& p = polygon.vertices[static_cast<std::size_t>(i)].position;
         EXPECT_GE(p.z, -p.w - 1e-6f);
