@@ -254,6 +254,47 @@ void addMergedBlocks(std::vector<Case>& out) {
         }
 }
 
+// What ends a merged draw in the reference besides a state change: a block of another mode,
+// even an empty one, and a block whose incomplete tail is dropped (its vertices stay in the
+// reference's buffer, so the next block is not contiguous). Quad A is inside; whether it shares
+// a draw with a quad that crosses the window edge decides its diagonal.
+void addMergeBreakers(std::vector<Case>& out) {
+    struct Between {
+        const char* name;
+        GLenum mode;
+        int vertices;       // of the middle block; a whole quad first if 4 or more
+        bool middleCrosses; // the middle block's quad crosses the edge (else the last block's does)
+    };
+    static const Between kBetween[] = {{"empty_quads", GL_QUADS, 2, false},
+                                       {"empty_triangles", GL_TRIANGLES, 2, false},
+                                       {"quad_and_leftover", GL_QUADS, 6, false},
+                                       {"crossing_quad_and_leftover", GL_QUADS, 5, true},
+                                       {"crossing_quad", GL_QUADS, 4, true}};
+    auto quad = [](int firstColor, float x0, float y0, float x1, float y1) {
+        const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
+        for (int i = 0; i < 4; ++i) {
+            color(firstColor + i);
+            glVertex2f(xs[i], ys[i]);
+        }
+    };
+    for (const Between& between : kBetween) {
+        out.push_back({"merged-blocks", std::string("merge_break_") + between.name, false, [between, quad](int w, int h) {
+                           resetState(w, h);
+                           glBegin(GL_QUADS);
+                           quad(0, -0.95f, -0.9f, -0.4f, 0.7f);
+                           glEnd();
+                           glBegin(between.mode);
+                           if (between.vertices >= 4) quad(4, -0.3f, -0.6f, 0.3f, between.middleCrosses ? 1.4f : 0.6f);
+                           for (int i = between.vertices >= 4 ? 4 : 0; i < between.vertices; ++i)
+                               glVertex2f(0.05f * static_cast<float>(i), 0.0f);
+                           glEnd();
+                           glBegin(GL_QUADS);
+                           quad(8, 0.4f, -0.5f, between.middleCrosses ? 0.95f : 1.3f, 0.5f);
+                           glEnd();
+                       }});
+    }
+}
+
 }  // namespace
 
 std::vector<Case> allCases() {
@@ -263,6 +304,7 @@ std::vector<Case> allCases() {
     addSpecialTriangles(cases);
     addSharedEdgeMeshes(cases);
     addMergedBlocks(cases);
+    addMergeBreakers(cases);
     return cases;
 }
 

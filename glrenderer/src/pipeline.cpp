@@ -1,5 +1,8 @@
 #include "glrenderer/pipeline.h"
 
+#include <algorithm>
+#include <limits>
+
 #include "batch.h"
 #include "batch_drawer.h"
 #include "batch_thread.h"
@@ -20,44 +23,62 @@ bool isMergeable(PrimitiveMode mode) {
 // decides their diagonal.)
 bool canCut(const Batch& batch) {
     return batch.mode == PrimitiveMode::Triangles && batch.state.polygonFront == PolygonMode::Fill &&
-           batch.state.polygonBack == PolygonMode::Fill && batch.vertices.size() >= Pipeline::kPartVertices;
+           batch.state.polygonBack == PolygonMode::Fill;
 }
+
+constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
 
 }  // namespace
 
 Pipeline::Pipeline(Framebuffer& framebuffer)
-    : batch_(std::make_unique<Batch>()), drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
+    : batch_(std::make_unique<Batch>()), openVertices_(batch_->vertices),
+      drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
     if (workerThreadCount() > 1) thread_ = std::make_unique<BatchThread>(*drawer_);
 }
 
 Pipeline::~Pipeline() = default;
 
-bool Pipeline::takesParts(PrimitiveMode mode) { return isMergeable(mode); }
-
-void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
-    ++stats_.primitivesByMode[static_cast<std::size_t>(mode)];
-    append(state, mode, vertices);
-    if (!isMergeable(mode)) endBatch();
-}
-
-void Pipeline::submitPart(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
-    append(state, mode, vertices);
-}
-
-void Pipeline::append(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
-    stats_.vertices += vertices.size();
-    const std::size_t usable = usableVertexCount(mode, vertices.size());
-    if (usable == 0) return;
+void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode) {
     Batch& batch = *batch_;
-    if (!batch.vertices.empty() &&
-        (mode != batch.mode || !isMergeable(mode) || !(state == batch.state))) {
+    if (!batch.vertices.empty() && (mode != batch.mode || !isMergeable(mode) || !(state == batch.state))) {
         endBatch();
     }
     batch.state = state;
     batch.methods = methods_;
     batch.mode = mode;
-    batch.vertices.insert(batch.vertices.end(), vertices.begin(), vertices.begin() + static_cast<std::ptrdiff_t>(usable));
-    if (canCut(batch)) endBatch();
+    primitiveStart_ = batch.vertices.size();
+    // Cut at a whole number of triangles once the batch holds a part's worth.
+    nextCut_ = canCut(batch) ? std::max(kPartVertices, primitiveStart_ + 3) : kNever;
+    if (nextCut_ != kNever) nextCut_ += (3 - (nextCut_ - primitiveStart_) % 3) % 3;
+}
+
+void Pipeline::cutOpenPrimitive() {
+    stats_.vertices += openVertices_.size() - primitiveStart_;
+    endBatch();
+    primitiveStart_ = 0;
+    nextCut_ = kPartVertices;
+}
+
+void Pipeline::endPrimitive() {
+    Batch& batch = *batch_;
+    const std::size_t count = openVertices_.size() - primitiveStart_;
+    stats_.vertices += count;
+    ++stats_.primitivesByMode[static_cast<std::size_t>(batch.mode)];
+    const std::size_t usable = usableVertexCount(batch.mode, count);
+    openVertices_.resize(primitiveStart_ + usable);
+    nextCut_ = kNever;
+    // The reference keeps an incomplete tail's vertices in its buffer, so the next block is not
+    // contiguous and is not merged: dropping vertices ends the batch (measured with OSMesa).
+    const bool droppedVertices = usable < count;
+    if (!isMergeable(batch.mode) || droppedVertices || (canCut(batch) && openVertices_.size() >= kPartVertices)) {
+        endBatch();
+    }
+}
+
+void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
+    beginPrimitive(state, mode);
+    for (const Vertex& vertex : vertices) addVertex(vertex);
+    endPrimitive();
 }
 
 void Pipeline::endBatch() {

@@ -10,8 +10,7 @@ namespace {
 void addVertex(const glm::vec4& object) {
     Context::State* s = currentState();
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
-    glrenderer::Vertex& v = s->vertices.emplace_back(
-        glrenderer::Vertex{transform(s->modelviewProjection, object), s->color, s->edgeFlag});
+    glrenderer::Vertex v{transform(s->modelviewProjection, object), s->color, s->edgeFlag};
     if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
         const Matrix& m = s->modelview.top();
         v.eye = glm::vec3(transform(m, object));
@@ -19,11 +18,7 @@ void addVertex(const glm::vec4& object) {
                     at(m, 1, 0) * s->normal.x + at(m, 1, 1) * s->normal.y + at(m, 1, 2) * s->normal.z,
                     at(m, 2, 0) * s->normal.x + at(m, 2, 1) * s->normal.y + at(m, 2, 2) * s->normal.z};
     }
-    // A long primitive goes to the pipeline in parts, so that drawing overlaps the program.
-    if (s->vertices.size() == glrenderer::Pipeline::kPartVertices && glrenderer::Pipeline::takesParts(s->mode)) {
-        s->pipeline.submitPart(s->draw, s->mode, s->vertices);
-        s->vertices.clear();
-    }
+    s->pipeline.addVertex(v);
 }
 
 template <class T>
@@ -74,8 +69,7 @@ void begin(GLenum mode) {
         s->modelviewProjectionStale = false;
     }
     s->insideBeginEnd = true;
-    s->mode = static_cast<glrenderer::PrimitiveMode>(mode);
-    s->vertices.clear();
+    s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode));
 }
 
 void end() {
@@ -83,7 +77,7 @@ void end() {
     if (!s) return;
     if (!s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);
     s->insideBeginEnd = false;
-    s->pipeline.submit(s->draw, s->mode, s->vertices);
+    s->pipeline.endPrimitive();
 }
 
 template <class T>

@@ -39,17 +39,14 @@ private:
 struct Context::State {
     State(int width, int height) : framebuffer(width, height), pipeline(framebuffer) {
         draw.viewport = {0, 0, width, height};
-        vertices.reserve(1024);
     }
 
     glrenderer::Framebuffer framebuffer;
     glrenderer::Pipeline pipeline;
     GLenum error = GL_NO_ERROR;
 
-    // glBegin/glEnd assembly.
+    // glBegin/glEnd assembly: the vertices go straight to the pipeline.
     bool insideBeginEnd = false;
-    glrenderer::PrimitiveMode mode = glrenderer::PrimitiveMode::Points;
-    std::vector<glrenderer::Vertex> vertices;
     glm::vec4 color{1, 1, 1, 1};
     glm::vec3 normal{0, 0, 1};
     glm::vec4 texCoord{0, 0, 0, 1};

@@ -1,5 +1,5 @@
 // Batches drawn on the pipeline's own thread, and long primitives handed over in parts, give
-// the same pixels, depths and counts as everything drawn at once on the caller's thread.
+// the same pixels, depths and counts as drawing on the caller's thread and as merged blocks.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -32,8 +32,9 @@ struct Drawn {
     glrenderer::Stats stats;
 };
 
-// Draws the triangles with the depth test on, handing `partCount` parts over before the rest.
-Drawn draw(const char* threads, std::size_t partCount) {
+// Draws the triangles with the depth test on, as one primitive (handed over in parts when long)
+// or as one glBegin/glEnd block per triangle (merged into batches).
+Drawn draw(const char* threads, bool onePrimitive) {
     setenv("MYGL_THREADS", threads, 1);
     PipelineFixture f(32, 32);
     unsetenv("MYGL_THREADS");
@@ -41,10 +42,12 @@ Drawn draw(const char* threads, std::size_t partCount) {
     f.pipeline.clear(true, 0, true, glrenderer::kDepthMax24);
     const std::vector<Vertex> vertices = randomTriangles(f, glrenderer::Pipeline::kPartVertices + 100);
     const std::span<const Vertex> all(vertices);
-    const std::size_t partSize = glrenderer::Pipeline::kPartVertices;
-    for (std::size_t i = 0; i < partCount; ++i)
-        f.pipeline.submitPart(f.state, PrimitiveMode::Triangles, all.subspan(i * partSize, partSize));
-    f.pipeline.submit(f.state, PrimitiveMode::Triangles, all.subspan(partCount * partSize));
+    if (onePrimitive) {
+        f.pipeline.submit(f.state, PrimitiveMode::Triangles, all);
+    } else {
+        for (std::size_t i = 0; i < all.size(); i += 3)
+            f.pipeline.submit(f.state, PrimitiveMode::Triangles, all.subspan(i, 3));
+    }
     f.pipeline.finish();
     return {{f.framebuffer.color().begin(), f.framebuffer.color().end()},
             {f.framebuffer.depth().begin(), f.framebuffer.depth().end()},
@@ -65,16 +68,18 @@ void expectSame(const Drawn& a, const Drawn& b) {
 }  // namespace
 
 TEST(Batches, ThreadedEqualsSingleThreaded) {
-    const Drawn single = draw("1", 0);
-    const Drawn threaded = draw("2", 0);
+    const Drawn single = draw("1", true);
+    const Drawn threaded = draw("2", true);
     EXPECT_GT(single.stats.fragmentsPassed, 0u);
     expectSame(single, threaded);
 }
 
-TEST(Batches, PrimitiveInPartsEqualsWholeAndCountsOnce) {
-    const Drawn whole = draw("2", 0);
-    const Drawn inParts = draw("2", 3);
-    expectSame(whole, inParts);
-    EXPECT_EQ(inParts.stats.primitivesByMode[static_cast<std::size_t>(PrimitiveMode::Triangles)], 1u);
-    EXPECT_EQ(inParts.stats.vertices, 3 * glrenderer::Pipeline::kPartVertices + 300);
+TEST(Batches, LongPrimitiveEqualsMergedBlocksAndCountsOnce) {
+    const Drawn merged = draw("2", false);
+    const Drawn onePrimitive = draw("2", true);
+    EXPECT_EQ(onePrimitive.color, merged.color);
+    EXPECT_EQ(onePrimitive.depth, merged.depth);
+    EXPECT_EQ(onePrimitive.stats.fragmentsPassed, merged.stats.fragmentsPassed);
+    EXPECT_EQ(onePrimitive.stats.primitivesByMode[static_cast<std::size_t>(PrimitiveMode::Triangles)], 1u);
+    EXPECT_EQ(onePrimitive.stats.vertices, 3 * (glrenderer::Pipeline::kPartVertices + 100));
 }

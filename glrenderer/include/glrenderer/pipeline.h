@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
@@ -31,15 +32,18 @@ public:
     Pipeline(const Pipeline&) = delete;
     Pipeline& operator=(const Pipeline&) = delete;
 
-    // One whole primitive (a glBegin/glEnd block).
-    void submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
-
-    // The first vertices of a primitive still being specified, handed over early so that the
-    // pipeline can start on them. Only modes that merge take parts, kPartVertices at a time (a
-    // whole number of their primitives); submit() then hands over the rest.
+    // A primitive (a glBegin/glEnd block): begun, given its vertices one by one, ended. The
+    // vertices go straight into the batch; a long primitive of independent filled triangles is
+    // handed to the batch thread in parts of kPartVertices while the program goes on.
     static constexpr std::size_t kPartVertices = 3072;
-    static bool takesParts(PrimitiveMode mode);
-    void submitPart(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
+    void beginPrimitive(const DrawState& state, PrimitiveMode mode);
+    void addVertex(const Vertex& vertex) {
+        openVertices_.push_back(vertex);
+        if (openVertices_.size() == nextCut_) cutOpenPrimitive();
+    }
+    void endPrimitive();
+    // All three for a whole primitive.
+    void submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
 
     void endBatch();
     void finish();
@@ -59,11 +63,14 @@ public:
     void resetStats();
 
 private:
-    void append(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
+    void cutOpenPrimitive();
 
     Stats stats_;
     Methods methods_;
     std::unique_ptr<Batch> batch_;  // being merged on the caller's thread
+    std::vector<Vertex>& openVertices_;  // batch_->vertices
+    std::size_t primitiveStart_ = 0;  // where the open primitive's vertices begin
+    std::size_t nextCut_ = 0;  // the batch size at which the open primitive is cut, if ever
     std::unique_ptr<BatchDrawer> drawer_;
     std::unique_ptr<BatchThread> thread_;  // null when the pipeline runs on one thread
 };
