@@ -27,10 +27,31 @@ void BatchThread::post(Batch& batch) {
 
 void BatchThread::wait() {
     std::unique_lock lock(mutex_);
+    if (!drawing_) {
+        // The thread sleeps: waking it would cost more than drawing the rest here (a wake-up
+        // takes far longer than a small frame's batches on a virtual machine).
+        drawPosted(lock);
+        return;
+    }
     waited_ = true;
     wake_.notify_one();
     idle_.wait(lock, [this] { return posted_.empty() && !drawing_; });
     waited_ = false;
+}
+
+void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock) {
+    inHand_.swap(posted_);
+    postedVertices_ = 0;
+    drawing_ = true;
+    lock.unlock();
+    for (const Batch& batch : inHand_) drawer_.draw(batch);
+    lock.lock();
+    for (Batch& batch : inHand_) {
+        batch.vertices.clear();
+        spareVertices_.push_back(std::move(batch.vertices));
+    }
+    inHand_.clear();
+    drawing_ = false;
 }
 
 bool BatchThread::hasWork() const {
@@ -38,23 +59,11 @@ bool BatchThread::hasWork() const {
 }
 
 void BatchThread::run() {
-    std::vector<Batch> drawing;
     std::unique_lock lock(mutex_);
     for (;;) {
         wake_.wait(lock, [this] { return stopping_ || hasWork(); });
         if (stopping_) return;
-        drawing.swap(posted_);
-        postedVertices_ = 0;
-        drawing_ = true;
-        lock.unlock();
-        for (const Batch& batch : drawing) drawer_.draw(batch);
-        lock.lock();
-        for (Batch& batch : drawing) {
-            batch.vertices.clear();
-            spareVertices_.push_back(std::move(batch.vertices));
-        }
-        drawing.clear();
-        drawing_ = false;
+        drawPosted(lock);
         if (posted_.empty()) idle_.notify_all();
     }
 }

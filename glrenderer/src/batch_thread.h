@@ -22,7 +22,8 @@ public:
 
     // Queues `batch`; its vertices are taken and replaced by an empty array from an earlier batch.
     void post(Batch& batch);
-    // Returns when every posted batch has been drawn.
+    // Returns when every posted batch has been drawn; if the thread sleeps, the caller draws
+    // what is left itself.
     void wait();
 
 private:
@@ -32,14 +33,17 @@ private:
 
     void run();
     bool hasWork() const;
+    // Draws everything posted so far with the lock released; called with it held.
+    void drawPosted(std::unique_lock<std::mutex>& lock);
 
     BatchDrawer& drawer_;
     std::mutex mutex_;
     std::condition_variable wake_, idle_;
     std::vector<Batch> posted_;
+    std::vector<Batch> inHand_;  // being drawn, by the thread or by wait()'s caller
     std::vector<std::vector<Vertex>> spareVertices_;
     std::size_t postedVertices_ = 0;
-    bool drawing_ = false;
+    bool drawing_ = false;  // inHand_ is being drawn
     bool waited_ = false;  // someone is in wait(): draw whatever is posted
     bool stopping_ = false;
     std::thread thread_;  // last: starts once the members above exist

@@ -11,15 +11,19 @@ void Framebuffer::resize(int width, int height) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("framebuffer size must be positive");
     width_ = width;
     height_ = height;
-    const auto pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    color_.assign(pixels, 0);
-    depth_.assign(pixels, 0);
+    count_ = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    color_ = allocate(count_);
+    depth_ = allocate(count_);
 }
 
-void Framebuffer::clearColor(std::uint32_t rgba) { std::fill(color_.begin(), color_.end(), rgba); }
-
-void Framebuffer::clearDepth(std::uint32_t depth24) {
-    std::fill(depth_.begin(), depth_.end(), depth24);
+Framebuffer::Pixels Framebuffer::allocate(std::size_t count) {
+    Pixels pixels(static_cast<std::uint32_t*>(::operator new[](count * sizeof(std::uint32_t), std::align_val_t{kAlignment})));
+    std::fill_n(pixels.get(), count, 0u);
+    return pixels;
 }
+
+void Framebuffer::clearColor(std::uint32_t rgba) { std::fill_n(color_.get(), count_, rgba); }
+
+void Framebuffer::clearDepth(std::uint32_t depth24) { std::fill_n(depth_.get(), count_, depth24); }
 
 }  // namespace glrenderer

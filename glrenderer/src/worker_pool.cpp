@@ -29,11 +29,12 @@ void WorkerPool::run(std::size_t count, const std::function<void(std::size_t, un
         task_ = &task;
         count_ = count;
         next_ = 0;
-        busy_ = static_cast<unsigned>(workers_.size());
         ++generation_;
     }
     wake_.notify_all();
     drain(0);
+    // Waits only for workers that joined in: one still waking up (which can take longer than the
+    // whole job on a virtual machine) finds the job gone and goes back to sleep.
     std::unique_lock lock(mutex_);
     done_.wait(lock, [this] { return busy_ == 0; });
     task_ = nullptr;
@@ -41,15 +42,16 @@ void WorkerPool::run(std::size_t count, const std::function<void(std::size_t, un
 
 void WorkerPool::workerLoop(unsigned thread) {
     unsigned seen = 0;
+    std::unique_lock lock(mutex_);
     for (;;) {
-        {
-            std::unique_lock lock(mutex_);
-            wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
-            if (stopping_) return;
-            seen = generation_;
-        }
+        wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+        if (stopping_) return;
+        seen = generation_;
+        if (!task_) continue;  // that job is over already
+        ++busy_;
+        lock.unlock();
         drain(thread);
-        std::lock_guard lock(mutex_);
+        lock.lock();
         if (--busy_ == 0) done_.notify_one();
     }
 }

@@ -32,7 +32,7 @@ private:
     const std::function<void(std::size_t, unsigned)>* task_ = nullptr;
     std::size_t count_ = 0;
     std::atomic<std::size_t> next_{0};
-    unsigned busy_ = 0;
+    unsigned busy_ = 0;  // workers inside the current job
     unsigned generation_ = 0;
     bool stopping_ = false;
 };

@@ -1,7 +1,9 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <new>
 #include <span>
-#include <vector>
 
 namespace glrenderer {
 
@@ -15,20 +17,30 @@ public:
     void resize(int width, int height);
 
     // Packed R, G, B, A bytes in memory order, one std::uint32_t per pixel.
-    std::span<std::uint32_t> color() { return color_; }
-    std::span<const std::uint32_t> color() const { return color_; }
+    std::span<std::uint32_t> color() { return {color_.get(), count_}; }
+    std::span<const std::uint32_t> color() const { return {color_.get(), count_}; }
     // Depth as an unsigned 24-bit integer (0 = near, 0xFFFFFF = far) per pixel.
-    std::span<std::uint32_t> depth() { return depth_; }
-    std::span<const std::uint32_t> depth() const { return depth_; }
+    std::span<std::uint32_t> depth() { return {depth_.get(), count_}; }
+    std::span<const std::uint32_t> depth() const { return {depth_.get(), count_}; }
 
     void clearColor(std::uint32_t rgba);
     void clearDepth(std::uint32_t depth24);
 
 private:
+    // Rows start on cache lines as far as the width allows, and the buffers always do: threads
+    // drawing neighbouring tiles must not write the same cache line (false sharing).
+    static constexpr std::size_t kAlignment = 64;
+    struct AlignedDelete {
+        void operator()(std::uint32_t* pixels) const { ::operator delete[](pixels, std::align_val_t{kAlignment}); }
+    };
+    using Pixels = std::unique_ptr<std::uint32_t[], AlignedDelete>;
+    static Pixels allocate(std::size_t count);
+
     int width_ = 0;
     int height_ = 0;
-    std::vector<std::uint32_t> color_;
-    std::vector<std::uint32_t> depth_;
+    std::size_t count_ = 0;
+    Pixels color_;
+    Pixels depth_;
 };
 
 }  // namespace glrenderer
