@@ -1,8 +1,5 @@
 #include "glrenderer/pipeline.h"
 
-#include <algorithm>
-#include <limits>
-
 #include "batch.h"
 #include "batch_drawer.h"
 #include "batch_thread.h"
@@ -26,13 +23,10 @@ bool canCut(const Batch& batch) {
            batch.state.polygonBack == PolygonMode::Fill;
 }
 
-constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
-
 }  // namespace
 
 Pipeline::Pipeline(Framebuffer& framebuffer)
-    : batch_(std::make_unique<Batch>()), openVertices_(batch_->vertices),
-      drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
+    : batch_(std::make_unique<Batch>()), drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
     if (workerThreadCount() > 1) thread_ = std::make_unique<BatchThread>(*drawer_);
 }
 
@@ -46,38 +40,37 @@ void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode) {
     batch.state = state;
     batch.methods = methods_;
     batch.mode = mode;
-    primitiveStart_ = batch.vertices.size();
-    // Cut at a whole number of triangles once the batch holds a part's worth.
-    nextCut_ = canCut(batch) ? std::max(kPartVertices, primitiveStart_ + 3) : kNever;
-    if (nextCut_ != kNever) nextCut_ += (3 - (nextCut_ - primitiveStart_) % 3) % 3;
+    cuttable_ = canCut(batch);
+    open_.clear();
 }
 
-void Pipeline::cutOpenPrimitive() {
-    stats_.vertices += openVertices_.size() - primitiveStart_;
+void Pipeline::handOverPart() {
+    stats_.vertices += open_.size();
+    batch_->vertices.insert(batch_->vertices.end(), open_.begin(), open_.end());
+    open_.clear();
     endBatch();
-    primitiveStart_ = 0;
-    nextCut_ = kPartVertices;
 }
 
 void Pipeline::endPrimitive() {
     Batch& batch = *batch_;
-    const std::size_t count = openVertices_.size() - primitiveStart_;
+    const std::size_t count = open_.size();
     stats_.vertices += count;
     ++stats_.primitivesByMode[static_cast<std::size_t>(batch.mode)];
     const std::size_t usable = usableVertexCount(batch.mode, count);
-    openVertices_.resize(primitiveStart_ + usable);
-    nextCut_ = kNever;
+    batch.vertices.insert(batch.vertices.end(), open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(usable));
+    open_.clear();
+    cuttable_ = false;
     // The reference keeps an incomplete tail's vertices in its buffer, so the next block is not
     // contiguous and is not merged: dropping vertices ends the batch (measured with OSMesa).
     const bool droppedVertices = usable < count;
-    if (!isMergeable(batch.mode) || droppedVertices || (canCut(batch) && openVertices_.size() >= kPartVertices)) {
+    if (!isMergeable(batch.mode) || droppedVertices || (canCut(batch) && batch.vertices.size() >= kPartVertices)) {
         endBatch();
     }
 }
 
 void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
     beginPrimitive(state, mode);
-    for (const Vertex& vertex : vertices) addVertex(vertex);
+    for (const Vertex& vertex : vertices) addVertex() = vertex;
     endPrimitive();
 }
 

@@ -10,7 +10,10 @@ namespace {
 void addVertex(const glm::vec4& object) {
     Context::State* s = currentState();
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
-    glrenderer::Vertex v{transform(s->modelviewProjection, object), s->color, s->edgeFlag};
+    glrenderer::Vertex& v = s->pipeline.addVertex();
+    v.position = transform(s->modelviewProjection, object);
+    v.color = s->color;
+    v.edgeFlag = s->edgeFlag;
     if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
         const Matrix& m = s->modelview.top();
         v.eye = glm::vec3(transform(m, object));
@@ -18,7 +21,6 @@ void addVertex(const glm::vec4& object) {
                     at(m, 1, 0) * s->normal.x + at(m, 1, 1) * s->normal.y + at(m, 1, 2) * s->normal.z,
                     at(m, 2, 0) * s->normal.x + at(m, 2, 1) * s->normal.y + at(m, 2, 2) * s->normal.z};
     }
-    s->pipeline.addVertex(v);
 }
 
 template <class T>

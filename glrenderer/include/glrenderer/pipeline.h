@@ -32,14 +32,15 @@ public:
     Pipeline(const Pipeline&) = delete;
     Pipeline& operator=(const Pipeline&) = delete;
 
-    // A primitive (a glBegin/glEnd block): begun, given its vertices one by one, ended. The
-    // vertices go straight into the batch; a long primitive of independent filled triangles is
-    // handed to the batch thread in parts of kPartVertices while the program goes on.
+    // A primitive (a glBegin/glEnd block): begun, given its vertices one by one, ended. A long
+    // primitive of independent filled triangles goes to the batch thread in parts of
+    // kPartVertices while the program goes on.
     static constexpr std::size_t kPartVertices = 3072;
     void beginPrimitive(const DrawState& state, PrimitiveMode mode);
-    void addVertex(const Vertex& vertex) {
-        openVertices_.push_back(vertex);
-        if (openVertices_.size() == nextCut_) cutOpenPrimitive();
+    // A new vertex of the open primitive, to be filled in place.
+    Vertex& addVertex() {
+        if (cuttable_ && open_.size() == kPartVertices) handOverPart();
+        return open_.emplace_back();
     }
     void endPrimitive();
     // All three for a whole primitive.
@@ -63,14 +64,15 @@ public:
     void resetStats();
 
 private:
-    void cutOpenPrimitive();
+    void handOverPart();
 
     Stats stats_;
     Methods methods_;
     std::unique_ptr<Batch> batch_;  // being merged on the caller's thread
-    std::vector<Vertex>& openVertices_;  // batch_->vertices
-    std::size_t primitiveStart_ = 0;  // where the open primitive's vertices begin
-    std::size_t nextCut_ = 0;  // the batch size at which the open primitive is cut, if ever
+    // The open primitive's vertices: kept apart (and hot in this thread's cache) until it ends,
+    // then copied into the batch, whose arrays come back from the batch thread.
+    std::vector<Vertex> open_;
+    bool cuttable_ = false;  // the open primitive goes over in parts
     std::unique_ptr<BatchDrawer> drawer_;
     std::unique_ptr<BatchThread> thread_;  // null when the pipeline runs on one thread
 };
