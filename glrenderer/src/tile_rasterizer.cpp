@@ -4,6 +4,10 @@
 #include "thread_count.h"
 
 #include <algorithm>
+#include <cstdint>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 namespace glrenderer {
 namespace {
@@ -11,6 +15,30 @@ namespace {
 // Below this many queued triangles, or pixels to clear, the threads cost more than they save.
 constexpr std::size_t kParallelThreshold = 64;
 constexpr std::size_t kParallelClearPixels = 64 * 1024;
+
+// Fills pixels with one value. A tile that no triangle draws is not read again soon: streaming
+// stores write it without first reading each line into the cache (half the memory traffic,
+// and clearing is most of the frame of a sparse scene at 1080p).
+void fillPixels(std::uint32_t* pixels, std::size_t count, std::uint32_t value, bool stream) {
+#if defined(__x86_64__)
+    if (stream) {
+        std::size_t i = 0;
+        for (; i < count && reinterpret_cast<std::uintptr_t>(pixels + i) % 16 != 0; ++i) pixels[i] = value;
+        const __m128i four = _mm_set1_epi32(static_cast<int>(value));
+        for (; i + 4 <= count; i += 4) _mm_stream_si128(reinterpret_cast<__m128i*>(pixels + i), four);
+        std::fill_n(pixels + i, count - i, value);
+        return;
+    }
+#endif
+    std::fill_n(pixels, count, value);
+}
+
+// Streaming stores are not ordered with the stores that publish the tile's completion.
+void finishStreaming() {
+#if defined(__x86_64__)
+    _mm_sfence();
+#endif
+}
 
 }  // namespace
 
@@ -43,15 +71,16 @@ void TileRasterizer::clearAtFlush(bool color, std::uint32_t rgba, bool depth, st
     if (depth) clear_.depth = true, clear_.depth24 = depth24;
 }
 
-void TileRasterizer::clearTile(const PixelRect& rect) {
+void TileRasterizer::clearTile(const PixelRect& rect, bool drawnNext) {
     const std::size_t width = static_cast<std::size_t>(framebuffer_.width());
     const auto count = static_cast<std::size_t>(rect.maxX - rect.minX + 1);
     for (int row = rect.minY; row <= rect.maxY; ++row) {
         const std::size_t begin = static_cast<std::size_t>(framebuffer_.height() - 1 - row) * width +
                                   static_cast<std::size_t>(rect.minX);
-        if (clear_.color) std::fill_n(framebuffer_.color().begin() + static_cast<std::ptrdiff_t>(begin), count, clear_.rgba);
-        if (clear_.depth) std::fill_n(framebuffer_.depth().begin() + static_cast<std::ptrdiff_t>(begin), count, clear_.depth24);
+        if (clear_.color) fillPixels(framebuffer_.color().data() + begin, count, clear_.rgba, !drawnNext);
+        if (clear_.depth) fillPixels(framebuffer_.depth().data() + begin, count, clear_.depth24, !drawnNext);
     }
+    finishStreaming();
 }
 
 void TileRasterizer::flush(Stats& stats, bool paintersSort) {
@@ -70,7 +99,7 @@ void TileRasterizer::flush(Stats& stats, bool paintersSort) {
                 return triangles_[a].meanDepth > triangles_[b].meanDepth;
             });
         }
-        if (clearing) clearTile(rect);
+        if (clearing) clearTile(rect, !bins_[tile].empty());
         for (std::uint32_t index : bins_[tile])
             rasterizeWithMethod(triangles_[index], rect, framebuffer_, threadCounts_[thread].counts, shader_);
     };

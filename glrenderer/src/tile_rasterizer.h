@@ -28,7 +28,8 @@ public:
 private:
     static constexpr int kTileSize = 64;
     void resetBins();
-    void clearTile(const PixelRect& rect);
+    // Clears the tile's part of the buffers being cleared; `drawnNext` if triangles follow.
+    void clearTile(const PixelRect& rect, bool drawnNext);
 
     struct PendingClear {
         bool color = false, depth = false;
