@@ -144,10 +144,9 @@ void BatchDrawer::setupTriangle(const WindowVertex& v0, const WindowVertex& v1, 
         return;
     }
     ++stats_.rasterized;
-    RasterTriangle prepared;
-    if (prepareTriangle(triangle, state, methods, framebuffer_.width(), framebuffer_.height(), prepared)) {
-        tiles_.add(prepared);
-    }
+    tiles_.add([&](RasterTriangle& prepared) {
+        return prepareTriangle(triangle, state, methods, framebuffer_.width(), framebuffer_.height(), prepared);
+    });
 }
 
 }  // namespace glrenderer

@@ -55,15 +55,11 @@ void TileRasterizer::resetBins() {
     for (auto& bin : bins_) bin.clear();
 }
 
-void TileRasterizer::add(const RasterTriangle& triangle) {
-    if (triangles_.empty() || binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) {
-        resetBins();
-    }
-    const auto index = static_cast<std::uint32_t>(triangles_.size());
-    triangles_.push_back(triangle);
+void TileRasterizer::bin(std::size_t index) {
+    const RasterTriangle& triangle = triangles_[index];
     for (int ty = triangle.minY / kTileSize; ty <= triangle.maxY / kTileSize; ++ty)
         for (int tx = triangle.minX / kTileSize; tx <= triangle.maxX / kTileSize; ++tx)
-            bins_[static_cast<std::size_t>(ty * tilesX_ + tx)].push_back(index);
+            bins_[static_cast<std::size_t>(ty * tilesX_ + tx)].push_back(static_cast<std::uint32_t>(index));
 }
 
 void TileRasterizer::clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {

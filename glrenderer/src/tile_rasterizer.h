@@ -16,7 +16,17 @@ class TileRasterizer {
 public:
     explicit TileRasterizer(Framebuffer& framebuffer);
 
-    void add(const RasterTriangle& triangle);
+    // Queues the triangle that `prepare(RasterTriangle&)` fills in place (returning false drops
+    // it) and bins it into the tiles it may cover.
+    template <class Prepare>
+    void add(Prepare&& prepare) {
+        if (triangles_.empty() || binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) {
+            resetBins();
+        }
+        RasterTriangle& triangle = triangles_.emplace_back();
+        if (prepare(triangle)) bin(triangles_.size() - 1);
+        else triangles_.pop_back();
+    }
     // Clears the buffers at the next flush(), each tile just before its triangles while it is
     // in cache, tiles in parallel, instead of one pass over the whole framebuffer now.
     void clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);
@@ -28,6 +38,7 @@ public:
 private:
     static constexpr int kTileSize = 64;
     void resetBins();
+    void bin(std::size_t index);
     // Clears the tile's part of the buffers being cleared; `drawnNext` if triangles follow.
     void clearTile(const PixelRect& rect, bool drawnNext);
 
