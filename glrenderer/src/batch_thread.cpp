@@ -14,7 +14,11 @@ BatchThread::~BatchThread() {
 }
 
 void BatchThread::post(Batch& batch) {
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
+    if (posted_.size() >= kMaxPostedBatches) {
+        wake_.notify_one();
+        room_.wait(lock, [this] { return posted_.size() < kMaxPostedBatches; });
+    }
     postedVertices_ += batch.vertices.size();
     posted_.push_back({batch.state, batch.methods, batch.mode, std::move(batch.vertices)});
     batch.vertices.clear();  // a moved-from vector is valid but unspecified
@@ -43,6 +47,7 @@ void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock) {
     inHand_.swap(posted_);
     postedVertices_ = 0;
     drawing_ = true;
+    room_.notify_one();
     lock.unlock();
     for (const Batch& batch : inHand_) drawer_.draw(batch);
     lock.lock();
@@ -55,7 +60,8 @@ void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock) {
 }
 
 bool BatchThread::hasWork() const {
-    return !posted_.empty() && (waited_ || postedVertices_ >= kWakeVertices);
+    return !posted_.empty() &&
+           (waited_ || postedVertices_ >= kWakeVertices || posted_.size() >= kMaxPostedBatches);
 }
 
 void BatchThread::run() {

@@ -27,9 +27,13 @@ public:
     void wait();
 
 private:
-    // The thread is woken only once this many vertices wait (or on wait()): a wake-up costs
-    // microseconds, small batches come by the thousand.
+    // The thread is woken only once this many vertices (or kMaxPostedBatches batches) wait, or
+    // on wait(): a wake-up costs tens of microseconds on a virtual machine, and small batches
+    // come by the thousand.
     static constexpr std::size_t kWakeVertices = 2048;
+    // A program that outruns the thread waits once this many batches are queued: it bounds the
+    // memory in flight, and the vertex arrays in circulation stop growing after the first frame.
+    static constexpr std::size_t kMaxPostedBatches = 64;
 
     void run();
     bool hasWork() const;
@@ -38,7 +42,7 @@ private:
 
     BatchDrawer& drawer_;
     std::mutex mutex_;
-    std::condition_variable wake_, idle_;
+    std::condition_variable wake_, idle_, room_;
     std::vector<Batch> posted_;
     std::vector<Batch> inHand_;  // being drawn, by the thread or by wait()'s caller
     std::vector<std::vector<Vertex>> spareVertices_;

@@ -16,17 +16,17 @@ WorkerPool::~WorkerPool() {
 }
 
 void WorkerPool::drain(unsigned thread) {
-    for (std::size_t i = next_.fetch_add(1); i < count_; i = next_.fetch_add(1)) (*task_)(i, thread);
+    for (std::size_t i = next_.fetch_add(1); i < count_; i = next_.fetch_add(1)) job_.invoke(job_.task, i, thread);
 }
 
-void WorkerPool::run(std::size_t count, const std::function<void(std::size_t, unsigned)>& task) {
+void WorkerPool::run(std::size_t count, Job job) {
     if (workers_.empty() || count <= 1) {
-        for (std::size_t i = 0; i < count; ++i) task(i, 0);
+        for (std::size_t i = 0; i < count; ++i) job.invoke(job.task, i, 0);
         return;
     }
     {
         std::lock_guard lock(mutex_);
-        task_ = &task;
+        job_ = job;
         count_ = count;
         next_ = 0;
         ++generation_;
@@ -37,7 +37,7 @@ void WorkerPool::run(std::size_t count, const std::function<void(std::size_t, un
     // whole job on a virtual machine) finds the job gone and goes back to sleep.
     std::unique_lock lock(mutex_);
     done_.wait(lock, [this] { return busy_ == 0; });
-    task_ = nullptr;
+    job_.task = nullptr;
 }
 
 void WorkerPool::workerLoop(unsigned thread) {
@@ -47,7 +47,7 @@ void WorkerPool::workerLoop(unsigned thread) {
         wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
         if (stopping_) return;
         seen = generation_;
-        if (!task_) continue;  // that job is over already
+        if (!job_.task) continue;  // that job is over already
         ++busy_;
         lock.unlock();
         drain(thread);

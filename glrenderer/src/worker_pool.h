@@ -2,7 +2,6 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
-#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -19,9 +18,18 @@ public:
     WorkerPool& operator=(const WorkerPool&) = delete;
 
     unsigned threadCount() const { return static_cast<unsigned>(workers_.size()) + 1; }
-    void run(std::size_t count, const std::function<void(std::size_t index, unsigned thread)>& task);
+    // task(std::size_t index, unsigned thread); called by reference, never copied (no allocation).
+    template <class Task>
+    void run(std::size_t count, Task& task) {
+        run(count, Job{&task, [](void* t, std::size_t index, unsigned thread) { (*static_cast<Task*>(t))(index, thread); }});
+    }
 
 private:
+    struct Job {
+        void* task;
+        void (*invoke)(void* task, std::size_t index, unsigned thread);
+    };
+    void run(std::size_t count, Job job);
     void workerLoop(unsigned thread);
     void drain(unsigned thread);
 
@@ -29,7 +37,7 @@ private:
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;
-    const std::function<void(std::size_t, unsigned)>* task_ = nullptr;
+    Job job_{nullptr, nullptr};  // the current job; job_.task is null between jobs
     std::size_t count_ = 0;
     std::atomic<std::size_t> next_{0};
     unsigned busy_ = 0;  // workers inside the current job
