@@ -1,4 +1,6 @@
 #pragma once
+#include <cstddef>
+#include <span>
 #include <vector>
 
 #include "glrenderer/draw_state.h"
@@ -13,7 +15,36 @@ struct Batch {
     DrawState state;
     Methods methods;
     PrimitiveMode mode = PrimitiveMode::Points;
+    std::span<const Vertex> vertices;
+};
+
+// A batch's place in its chunk.
+struct BatchEntry {
+    DrawState state;
+    Methods methods;
+    PrimitiveMode mode = PrimitiveMode::Points;
+    std::size_t first = 0, count = 0;  // its vertices in the chunk
+};
+
+// Consecutive batches with their vertices in one array: what the pipeline hands to its batch
+// thread at once, so that a thousand small draws cost one hand-over. Chunks are reused frame
+// after frame, keeping their capacity.
+struct BatchChunk {
+    BatchChunk(std::size_t vertexCapacity, std::size_t batchCapacity) {
+        vertices.reserve(vertexCapacity);
+        batches.reserve(batchCapacity);
+    }
+
     std::vector<Vertex> vertices;
+    std::vector<BatchEntry> batches;
+
+    Batch batch(const BatchEntry& entry) const {
+        return {entry.state, entry.methods, entry.mode, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
+    }
+    void clear() {
+        vertices.clear();
+        batches.clear();
+    }
 };
 
 }  // namespace glrenderer

@@ -1,6 +1,7 @@
 #pragma once
 #include <condition_variable>
 #include <cstddef>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -10,45 +11,38 @@
 
 namespace glrenderer {
 
-// Draws batches on a thread of its own, in the order they were posted, so that the program's
-// gl* calls overlap the pipeline's per-batch work (llvmpipe likewise sets up while the program
-// goes on). Vertex arrays travel back to the poster for reuse: steady state allocates nothing.
+// Draws chunks of batches on a thread of its own, in the order they were posted, so that the
+// program's gl* calls overlap the pipeline's per-batch work (llvmpipe likewise sets up while
+// the program goes on). A fixed set of chunks circulates between the poster and the thread, so
+// steady state allocates nothing and the memory in flight is bounded.
 class BatchThread {
 public:
-    explicit BatchThread(BatchDrawer& drawer);
+    // `chunks` are kept for post() to hand out, the most recently drawn first (its memory is
+    // the most likely to be in cache).
+    BatchThread(BatchDrawer& drawer, std::vector<std::unique_ptr<BatchChunk>> chunks);
     ~BatchThread();
     BatchThread(const BatchThread&) = delete;
     BatchThread& operator=(const BatchThread&) = delete;
 
-    // Queues `batch`; its vertices are taken and replaced by an empty array from an earlier batch.
-    void post(Batch& batch);
-    // Returns when every posted batch has been drawn; if the thread sleeps, the caller draws
-    // what is left itself.
+    // Queues `chunk` for drawing and returns an empty one to fill, waiting while all are in use.
+    std::unique_ptr<BatchChunk> post(std::unique_ptr<BatchChunk> chunk);
+    // Returns when every posted chunk has been drawn; if the thread sleeps, the caller draws
+    // what is left itself (waking the thread takes longer than a small frame's batches on a
+    // virtual machine).
     void wait();
 
 private:
-    // The thread is woken only once this many vertices (or kMaxPostedBatches batches) wait, or
-    // on wait(): a wake-up costs tens of microseconds on a virtual machine, and small batches
-    // come by the thousand.
-    static constexpr std::size_t kWakeVertices = 2048;
-    // A program that outruns the thread waits once this many batches are queued: it bounds the
-    // memory in flight, and the vertex arrays in circulation stop growing after the first frame.
-    static constexpr std::size_t kMaxPostedBatches = 64;
-
     void run();
-    bool hasWork() const;
-    // Draws everything posted so far with the lock released; called with it held.
+    // Draws the posted chunks in order, with the lock released while drawing; called with it held.
     void drawPosted(std::unique_lock<std::mutex>& lock);
 
     BatchDrawer& drawer_;
     std::mutex mutex_;
     std::condition_variable wake_, idle_, room_;
-    std::vector<Batch> posted_;
-    std::vector<Batch> inHand_;  // being drawn, by the thread or by wait()'s caller
-    std::vector<std::vector<Vertex>> spareVertices_;
-    std::size_t postedVertices_ = 0;
-    bool drawing_ = false;  // inHand_ is being drawn
-    bool waited_ = false;  // someone is in wait(): draw whatever is posted
+    // Drawn first in, first out (a handful: erasing at the front is cheap and allocates nothing);
+    // free ones reused last in, first out.
+    std::vector<std::unique_ptr<BatchChunk>> posted_, free_;
+    bool drawing_ = false;  // posted chunks are being drawn, by the thread or by wait()'s caller
     bool stopping_ = false;
     std::thread thread_;  // last: starts once the members above exist
 };

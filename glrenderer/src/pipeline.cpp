@@ -18,25 +18,40 @@ bool isMergeable(PrimitiveMode mode) {
 // Filled independent triangles come out the same however a batch of them is cut, so a long
 // batch is drawn in parts while the program goes on. (Quads are not: the batch as a whole
 // decides their diagonal.)
-bool canCut(const Batch& batch) {
+bool canCut(const BatchEntry& batch) {
     return batch.mode == PrimitiveMode::Triangles && batch.state.polygonFront == PolygonMode::Fill &&
            batch.state.polygonBack == PolygonMode::Fill;
+}
+
+// Chunks in circulation with a batch thread: one being filled, the others queued or drawn.
+// Each is made big enough for a usual hand-over (a part, plus the batch that crossed it), so
+// that steady state allocates nothing; 8 of them are 3 MB.
+constexpr std::size_t kChunks = 8;
+constexpr std::size_t kChunkBatches = 256;
+
+std::unique_ptr<BatchChunk> makeChunk() {
+    return std::make_unique<BatchChunk>(2 * Pipeline::kPartVertices, kChunkBatches);
 }
 
 }  // namespace
 
 Pipeline::Pipeline(Framebuffer& framebuffer)
-    : batch_(std::make_unique<Batch>()), drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
-    if (workerThreadCount() > 1) thread_ = std::make_unique<BatchThread>(*drawer_);
+    : chunk_(makeChunk()), batch_(std::make_unique<BatchEntry>()),
+      drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
+    if (workerThreadCount() > 1) {
+        std::vector<std::unique_ptr<BatchChunk>> spare(kChunks - 1);
+        for (auto& chunk : spare) chunk = makeChunk();
+        thread_ = std::make_unique<BatchThread>(*drawer_, std::move(spare));
+    }
 }
 
 Pipeline::~Pipeline() = default;
 
+std::size_t Pipeline::batchSize() const { return chunk_->vertices.size() - batch_->first; }
+
 void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode) {
-    Batch& batch = *batch_;
-    if (!batch.vertices.empty() && (mode != batch.mode || !isMergeable(mode) || !(state == batch.state))) {
-        endBatch();
-    }
+    BatchEntry& batch = *batch_;
+    if (batchSize() > 0 && (mode != batch.mode || !isMergeable(mode) || !(state == batch.state))) endBatch();
     batch.state = state;
     batch.methods = methods_;
     batch.mode = mode;
@@ -46,24 +61,24 @@ void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode) {
 
 void Pipeline::handOverPart() {
     stats_.vertices += open_.size();
-    batch_->vertices.insert(batch_->vertices.end(), open_.begin(), open_.end());
+    chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), open_.end());
     open_.clear();
     endBatch();
 }
 
 void Pipeline::endPrimitive() {
-    Batch& batch = *batch_;
+    const BatchEntry& batch = *batch_;
     const std::size_t count = open_.size();
     stats_.vertices += count;
     ++stats_.primitivesByMode[static_cast<std::size_t>(batch.mode)];
     const std::size_t usable = usableVertexCount(batch.mode, count);
-    batch.vertices.insert(batch.vertices.end(), open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(usable));
+    chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(usable));
     open_.clear();
     cuttable_ = false;
     // The reference keeps an incomplete tail's vertices in its buffer, so the next block is not
     // contiguous and is not merged: dropping vertices ends the batch (measured with OSMesa).
     const bool droppedVertices = usable < count;
-    if (!isMergeable(batch.mode) || droppedVertices || (canCut(batch) && batch.vertices.size() >= kPartVertices)) {
+    if (!isMergeable(batch.mode) || droppedVertices || (canCut(batch) && batchSize() >= kPartVertices)) {
         endBatch();
     }
 }
@@ -75,23 +90,33 @@ void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<cons
 }
 
 void Pipeline::endBatch() {
-    if (batch_->vertices.empty()) return;
+    if (batchSize() == 0) return;
+    batch_->count = batchSize();
+    chunk_->batches.push_back(*batch_);
+    batch_->first = chunk_->vertices.size();
+    if (chunk_->vertices.size() >= kPartVertices) handOverChunk();
+}
+
+void Pipeline::handOverChunk() {
+    if (chunk_->batches.empty()) return;
     if (thread_) {
-        thread_->post(*batch_);
+        chunk_ = thread_->post(std::move(chunk_));
     } else {
-        drawer_->draw(*batch_);
-        batch_->vertices.clear();
+        for (const BatchEntry& entry : chunk_->batches) drawer_->draw(chunk_->batch(entry));
+        chunk_->clear();
     }
+    batch_->first = 0;
 }
 
 void Pipeline::finish() {
     endBatch();
+    handOverChunk();
     if (thread_) thread_->wait();
     drawer_->flush();
 }
 
 void Pipeline::resetStats() {
-    if (thread_) thread_->wait();  // counts of batches still being drawn belong to the old frame
+    finish();
     stats_ = {};
 }
 

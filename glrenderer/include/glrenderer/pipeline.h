@@ -15,16 +15,17 @@ namespace glrenderer {
 
 class BatchDrawer;
 class BatchThread;
-struct Batch;
+struct BatchChunk;
+struct BatchEntry;
 
 // Turns primitives in clip space into pixels of a Framebuffer.
 //
 // Consecutive submissions of the same mergeable mode (points, lines, triangles, quads) form one
 // batch until endBatch(), as the reference's vertex buffer merges glBegin/glEnd blocks: whether
 // any vertex of the batch needs clipping decides how quads are split, so the batch matters.
-// Batches are drawn on a thread of the pipeline's own while the caller goes on, and triangles
-// are queued and rasterized in screen tiles by worker threads: pixels and counters are only
-// promised after finish(). Call finish() before resizing the framebuffer.
+// Batches are collected in chunks and drawn on a thread of the pipeline's own while the caller
+// goes on, and triangles are queued and rasterized in screen tiles by worker threads: pixels
+// and counters are only promised after finish(). Call finish() before resizing the framebuffer.
 class Pipeline {
 public:
     explicit Pipeline(Framebuffer& framebuffer);
@@ -32,9 +33,9 @@ public:
     Pipeline(const Pipeline&) = delete;
     Pipeline& operator=(const Pipeline&) = delete;
 
-    // A primitive (a glBegin/glEnd block): begun, given its vertices one by one, ended. A long
-    // primitive of independent filled triangles goes to the batch thread in parts of
-    // kPartVertices while the program goes on.
+    // A primitive (a glBegin/glEnd block): begun, given its vertices one by one, ended. A chunk
+    // of batches goes to the batch thread once it holds kPartVertices vertices, and a long
+    // primitive of independent filled triangles is cut into parts of that size to go too.
     static constexpr std::size_t kPartVertices = 3072;
     void beginPrimitive(const DrawState& state, PrimitiveMode mode);
     // A new vertex of the open primitive, to be filled in place.
@@ -61,14 +62,18 @@ public:
 
     // Complete after finish().
     const Stats& stats() const { return stats_; }
+    // Finishes (the work queued so far is counted before the reset), then zeroes the counters.
     void resetStats();
 
 private:
     void handOverPart();
+    void handOverChunk();
+    std::size_t batchSize() const;
 
     Stats stats_;
     Methods methods_;
-    std::unique_ptr<Batch> batch_;  // being merged on the caller's thread
+    std::unique_ptr<BatchChunk> chunk_;  // being filled on the caller's thread
+    std::unique_ptr<BatchEntry> batch_;  // the batch being merged: the end of chunk_
     // The open primitive's vertices: kept apart (and hot in this thread's cache) until it ends,
     // then copied into the batch, whose arrays come back from the batch thread.
     std::vector<Vertex> open_;
