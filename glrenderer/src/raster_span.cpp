@@ -61,8 +61,24 @@ void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Fram
                             FragmentCounts& counts, SpanShader shader) {
     const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
     const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
+    if (minX > maxX || minY > maxY) return;
+    // The edge functions are linear: if the four corners of the area are inside an edge, all of
+    // it is; if they are all outside one edge, none of it is. A tile a large triangle covers
+    // whole then needs no span search, and one it misses needs nothing. (Not worth testing for
+    // a few rows.)
+    constexpr int kCornerTestRows = 8;
+    bool coveredWhole = false;
+    if (maxY - minY + 1 >= kCornerTestRows) {
+        coveredWhole = true;
+        for (const EdgeFunction& edge : t.edges) {
+            const std::int64_t corners[4] = {edge.at(minX, minY), edge.at(maxX, minY), edge.at(minX, maxY),
+                                             edge.at(maxX, maxY)};
+            if (corners[0] < 0 && corners[1] < 0 && corners[2] < 0 && corners[3] < 0) return;
+            if ((corners[0] | corners[1] | corners[2] | corners[3]) < 0) coveredWhole = false;
+        }
+    }
     for (int row = minY; row <= maxY; ++row) {
-        const Span span = coveredSpan(t, row, minX, maxX);
+        const Span span = coveredWhole ? Span{minX, maxX} : coveredSpan(t, row, minX, maxX);
         if (span.begin <= span.end) shader(t, row, span.begin, span.end, fb, counts);
     }
 }
