@@ -15,6 +15,7 @@ struct Batch {
     DrawState state;
     Methods methods;
     PrimitiveMode mode = PrimitiveMode::Points;
+    bool colorsPerVertex = false;  // glColor was called inside its glBegin/glEnd blocks
     std::span<const Vertex> vertices;
 };
 
@@ -23,6 +24,7 @@ struct BatchEntry {
     DrawState state;
     Methods methods;
     PrimitiveMode mode = PrimitiveMode::Points;
+    bool colorsPerVertex = false;
     std::size_t first = 0, count = 0;  // its vertices in the chunk
 };
 
@@ -39,7 +41,8 @@ struct BatchChunk {
     std::vector<BatchEntry> batches;
 
     Batch batch(const BatchEntry& entry) const {
-        return {entry.state, entry.methods, entry.mode, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
+        return {entry.state, entry.methods, entry.mode, entry.colorsPerVertex,
+                std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
     }
     void clear() {
         vertices.clear();

@@ -39,7 +39,11 @@ BatchDrawer::BatchDrawer(Framebuffer& framebuffer, Stats& stats)
 
 void BatchDrawer::flush() { tiles_.flush(stats_, paintersSort_); }
 
-void BatchDrawer::draw(const Batch& batch) {
+void BatchDrawer::draw(const Batch& submitted) {
+    // Without a color per vertex the reference's color is a constant of the draw, not an
+    // interpolation of equal values (which perspective would blur by one unit here and there).
+    Batch batch = submitted;
+    if (!batch.colorsPerVertex) batch.state.shadeModel = ShadeModel::Flat;
     batch_ = &batch;
     paintersSort_ = batch.methods.hiddenSurface == HiddenSurface::PaintersSort;
     if (isTriangleMode(batch.mode)) {
@@ -75,7 +79,8 @@ void BatchDrawer::drawTriangles() {
         return;
     }
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
-    decomposeTriangles(batch.mode, static_cast<std::uint32_t>(count), path, state.shadeModel,
+    const bool flatColorsPerVertex = state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex;
+    decomposeTriangles(batch.mode, static_cast<std::uint32_t>(count), path, flatColorsPerVertex,
                        [&](const TriangleIndices& t) { drawTriangle(t, viewport); });
 }
 

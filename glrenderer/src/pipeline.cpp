@@ -63,7 +63,23 @@ void Pipeline::handOverPart() {
     stats_.vertices += open_.size();
     chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), open_.end());
     open_.clear();
+    const bool colors = batch_->colorsPerVertex;  // a full buffer keeps the reference's vertex format
     endBatch();
+    batch_->colorsPerVertex = colors;
+}
+
+void Pipeline::colorPerVertex() {
+    if (batch_->colorsPerVertex) return;
+    // The open quads' whole quads so far belong to the draw without colors (the reference
+    // carries only an incomplete quad over).
+    if (batch_->mode == PrimitiveMode::Quads) {
+        const std::size_t whole = open_.size() - open_.size() % 4;
+        stats_.vertices += whole;
+        chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(whole));
+        open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(whole));
+    }
+    endBatch();
+    batch_->colorsPerVertex = true;
 }
 
 void Pipeline::endPrimitive() {
@@ -85,6 +101,7 @@ void Pipeline::endPrimitive() {
 
 void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
     beginPrimitive(state, mode);
+    colorPerVertex();  // vertices given whole carry their own colors
     for (const Vertex& vertex : vertices) addVertex() = vertex;
     endPrimitive();
 }
@@ -94,6 +111,7 @@ void Pipeline::endBatch() {
     batch_->count = batchSize();
     chunk_->batches.push_back(*batch_);
     batch_->first = chunk_->vertices.size();
+    batch_->colorsPerVertex = false;
     if (chunk_->vertices.size() >= kPartVertices) handOverChunk();
 }
 

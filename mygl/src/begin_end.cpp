@@ -31,7 +31,10 @@ void vertexv(const T* v, int n) {
 }
 
 void setColor(const glm::vec4& c) {
-    if (Context::State* s = currentState()) s->color = c;
+    Context::State* s = currentState();
+    if (!s) return;
+    s->color = c;
+    if (s->insideBeginEnd) s->pipeline.colorPerVertex();
 }
 
 // Integer color components to float as the GL spec (and the reference) converts them.

@@ -58,10 +58,10 @@ TEST(Culling, TriangleThatSnapsToALineIsZeroArea) {
 TEST(Decomposition, FanAndPolygonOrders) {
     std::vector<std::array<std::uint32_t, 3>> fan, polygon;
     glrenderer::decomposeTriangles(PrimitiveMode::TriangleFan, 5, glrenderer::DecompositionPath::Direct,
-                                   glrenderer::ShadeModel::Smooth,
+                                   false,
                                    [&](const glrenderer::TriangleIndices& t) { fan.push_back({t.v[0], t.v[1], t.v[2]}); });
     glrenderer::decomposeTriangles(PrimitiveMode::Polygon, 5, glrenderer::DecompositionPath::Direct,
-                                   glrenderer::ShadeModel::Smooth,
+                                   false,
                                    [&](const glrenderer::TriangleIndices& t) { polygon.push_back({t.v[0], t.v[1], t.v[2]}); });
     using T = std::vector<std::array<std::uint32_t, 3>>;
     EXPECT_EQ(fan, (T{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
@@ -69,18 +69,17 @@ TEST(Decomposition, FanAndPolygonOrders) {
 }
 
 TEST(Decomposition, QuadDiagonalDependsOnPathAndShading) {
-    auto split = [](glrenderer::DecompositionPath path, glrenderer::ShadeModel shade) {
+    auto split = [](glrenderer::DecompositionPath path, bool flatColorsPerVertex) {
         std::vector<std::array<std::uint32_t, 3>> out;
-        glrenderer::decomposeTriangles(PrimitiveMode::Quads, 4, path, shade,
+        glrenderer::decomposeTriangles(PrimitiveMode::Quads, 4, path, flatColorsPerVertex,
                                        [&](const glrenderer::TriangleIndices& t) { out.push_back({t.v[0], t.v[1], t.v[2]}); });
         return out;
     };
     using T = std::vector<std::array<std::uint32_t, 3>>;
     using glrenderer::DecompositionPath;
-    using glrenderer::ShadeModel;
-    EXPECT_EQ(split(DecompositionPath::Direct, ShadeModel::Smooth), (T{{0, 1, 2}, {0, 2, 3}}));
-    EXPECT_EQ(split(DecompositionPath::Direct, ShadeModel::Flat), (T{{0, 1, 3}, {1, 2, 3}}));
-    EXPECT_EQ(split(DecompositionPath::DrawModule, ShadeModel::Smooth), (T{{0, 1, 3}, {1, 2, 3}}));
+    EXPECT_EQ(split(DecompositionPath::Direct, false), (T{{0, 1, 2}, {0, 2, 3}}));
+    EXPECT_EQ(split(DecompositionPath::Direct, true), (T{{0, 1, 3}, {1, 2, 3}}));
+    EXPECT_EQ(split(DecompositionPath::DrawModule, false), (T{{0, 1, 3}, {1, 2, 3}}));
 }
 
 TEST(Clipping, TriangleThroughTheNearPlaneBecomesAQuadrilateral) {

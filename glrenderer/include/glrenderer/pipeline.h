@@ -44,7 +44,11 @@ public:
         return open_.emplace_back();
     }
     void endPrimitive();
-    // All three for a whole primitive.
+    // glColor inside glBegin/glEnd. The reference's vertex buffer then gains a color per vertex
+    // until its draw ends, and what it held before is drawn as a draw of its own (it decides
+    // how flat quads are split).
+    void colorPerVertex();
+    // All three for a whole primitive whose vertices carry their own colors.
     void submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
 
     void endBatch();
