@@ -62,19 +62,13 @@ void shadeSpanAvx512(const RasterTriangle& t, int row, int begin, int end, Frame
     std::uint64_t passed = 0;
     for (int px = begin; px <= end; px += 16) {
         const int remaining = end - px + 1;
-        // Whole blocks use plain loads, blends and stores: masked memory accesses are several
-        // times slower on some CPUs (measured on AMD EPYC: a third of the fill scene's time).
-        const bool whole = remaining >= 16;
-        __mmask16 mask = whole ? __mmask16(0xFFFF) : __mmask16((1u << remaining) - 1);
+        __mmask16 mask = remaining >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << remaining) - 1);
         const __m512 x = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(px), laneIndex));
         if (t.state.depthTest) {
             const __m512i z = toDepth24(depthPlane.at(x, y));
-            const __m512i stored = whole ? _mm512_loadu_si512(depth + px) : _mm512_maskz_loadu_epi32(mask, depth + px);
+            const __m512i stored = _mm512_maskz_loadu_epi32(mask, depth + px);
             mask = depthPassMask(t.state.depthFunc, mask, z, stored);
-            if (t.state.depthWrite) {
-                if (whole) _mm512_storeu_si512(depth + px, _mm512_mask_blend_epi32(mask, stored, z));
-                else _mm512_mask_storeu_epi32(depth + px, mask, z);
-            }
+            if (t.state.depthWrite) _mm512_mask_storeu_epi32(depth + px, mask, z);
         }
         if (mask == 0) continue;
         passed += static_cast<unsigned>(std::popcount(static_cast<unsigned>(mask)));
@@ -87,9 +81,7 @@ void shadeSpanAvx512(const RasterTriangle& t, int row, int begin, int end, Frame
                 _mm512_or_si512(_mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(b.at(x, y), w)), 16),
                                 _mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(a.at(x, y), w)), 24)));
         }
-        if (mask == 0xFFFF) _mm512_storeu_si512(color + px, rgba);
-        else if (whole) _mm512_storeu_si512(color + px, _mm512_mask_blend_epi32(mask, _mm512_loadu_si512(color + px), rgba));
-        else _mm512_mask_storeu_epi32(color + px, mask, rgba);
+        _mm512_mask_storeu_epi32(color + px, mask, rgba);
     }
     counts.fragments += static_cast<std::uint64_t>(end - begin + 1);
     counts.passed += passed;
