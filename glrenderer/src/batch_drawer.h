@@ -22,12 +22,23 @@ public:
     void draw(const Batch& batch);
     // Rasterizes the binned triangles (in parallel tiles).
     void flush();
+    // Whether enough is queued for drawSomeTiles() to be worth it (never under the painter's
+    // sort, which orders a tile's whole queue).
+    bool worthDrawingTilesEarly() const { return !paintersSort_ && tiles_.queued() >= kEarlyTriangles; }
+    // Draws queued tiles on the calling thread until stop() returns true: a thread that would
+    // otherwise wait for the program does part of what flush() would do.
+    template <class Stop>
+    void drawSomeTiles(Stop&& stop) {
+        tiles_.drawSomeTiles(stats_, stop);
+    }
     // Clears the framebuffer at the next flush(), tile by tile.
     void clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
         tiles_.clearAtFlush(color, rgba, depth, depth24);
     }
 
 private:
+    static constexpr std::size_t kEarlyTriangles = 2048;
+
     void drawTriangles();
     void drawTriangle(const TriangleIndices& triangle, const ViewportTransform& viewport);
     void setupTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,

@@ -21,6 +21,7 @@ BatchThread::~BatchThread() {
 std::unique_ptr<BatchChunk> BatchThread::post(std::unique_ptr<BatchChunk> chunk) {
     std::unique_lock lock(mutex_);
     posted_.push_back(std::move(chunk));
+    needed_.store(true, std::memory_order_relaxed);
     wake_.notify_one();
     room_.wait(lock, [this] { return !free_.empty(); });
     std::unique_ptr<BatchChunk> empty = std::move(free_.back());
@@ -31,23 +32,33 @@ std::unique_ptr<BatchChunk> BatchThread::post(std::unique_ptr<BatchChunk> chunk)
 void BatchThread::wait() {
     std::unique_lock lock(mutex_);
     if (!drawing_) {
-        drawPosted(lock);
+        drawPosted(lock, false);
         return;
     }
+    waiting_ = true;
+    needed_.store(true, std::memory_order_relaxed);
     idle_.wait(lock, [this] { return posted_.empty() && !drawing_; });
+    waiting_ = false;
 }
 
-void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock) {
+void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock, bool tilesWhenIdle) {
     drawing_ = true;
-    while (!posted_.empty()) {
-        std::unique_ptr<BatchChunk> chunk = std::move(posted_.front());
-        posted_.erase(posted_.begin());
+    for (;;) {
+        while (!posted_.empty()) {
+            std::unique_ptr<BatchChunk> chunk = std::move(posted_.front());
+            posted_.erase(posted_.begin());
+            lock.unlock();
+            for (const BatchEntry& entry : chunk->batches) drawer_.draw(chunk->batch(entry));
+            chunk->clear();
+            lock.lock();
+            free_.push_back(std::move(chunk));
+            room_.notify_one();
+        }
+        if (!tilesWhenIdle || waiting_ || !drawer_.worthDrawingTilesEarly()) break;
+        needed_.store(false, std::memory_order_relaxed);
         lock.unlock();
-        for (const BatchEntry& entry : chunk->batches) drawer_.draw(chunk->batch(entry));
-        chunk->clear();
+        drawer_.drawSomeTiles([this] { return needed_.load(std::memory_order_relaxed); });
         lock.lock();
-        free_.push_back(std::move(chunk));
-        room_.notify_one();
     }
     drawing_ = false;
 }
@@ -57,7 +68,7 @@ void BatchThread::run() {
     for (;;) {
         wake_.wait(lock, [this] { return stopping_ || (!posted_.empty() && !drawing_); });
         if (stopping_) return;
-        drawPosted(lock);
+        drawPosted(lock, true);
         idle_.notify_all();
     }
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <memory>
@@ -33,8 +34,10 @@ public:
 
 private:
     void run();
-    // Draws the posted chunks in order, with the lock released while drawing; called with it held.
-    void drawPosted(std::unique_lock<std::mutex>& lock);
+    // Draws the posted chunks in order, with the lock released while drawing; called with it
+    // held. With tilesWhenIdle, once nothing is posted it goes on to draw queued tiles until a
+    // chunk is posted or someone waits.
+    void drawPosted(std::unique_lock<std::mutex>& lock, bool tilesWhenIdle);
 
     BatchDrawer& drawer_;
     std::mutex mutex_;
@@ -42,8 +45,10 @@ private:
     // Drawn first in, first out (a handful: erasing at the front is cheap and allocates nothing);
     // free ones reused last in, first out.
     std::vector<std::unique_ptr<BatchChunk>> posted_, free_;
-    bool drawing_ = false;  // posted chunks are being drawn, by the thread or by wait()'s caller
+    bool drawing_ = false;  // the drawer is in use, by the thread or by wait()'s caller
+    bool waiting_ = false;  // someone is in wait()
     bool stopping_ = false;
+    std::atomic<bool> needed_{false};  // a chunk was posted or someone waits: stop drawing tiles
     std::thread thread_;  // last: starts once the members above exist
 };
 

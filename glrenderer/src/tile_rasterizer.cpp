@@ -46,13 +46,17 @@ TileRasterizer::TileRasterizer(Framebuffer& framebuffer)
     : framebuffer_(framebuffer), pool_(workerThreadCount()),
       threadCounts_(pool_.threadCount()), shader_(bestSpanShader()) {}
 
-void TileRasterizer::resetBins() {
+void TileRasterizer::fitTilesToFramebuffer() {
+    if (binnedWidth_ == framebuffer_.width() && binnedHeight_ == framebuffer_.height()) return;
     binnedWidth_ = framebuffer_.width();
     binnedHeight_ = framebuffer_.height();
     tilesX_ = (binnedWidth_ + kTileSize - 1) / kTileSize;
     tilesY_ = (binnedHeight_ + kTileSize - 1) / kTileSize;
-    bins_.resize(static_cast<std::size_t>(tilesX_) * static_cast<std::size_t>(tilesY_));
+    const auto tiles = static_cast<std::size_t>(tilesX_) * static_cast<std::size_t>(tilesY_);
+    triangles_.clear();  // queued for a framebuffer of another size
+    bins_.resize(tiles);
     for (auto& bin : bins_) bin.clear();
+    clearPending_.assign(tiles, clear_.color || clear_.depth);
 }
 
 void TileRasterizer::bin(std::size_t index) {
@@ -63,8 +67,10 @@ void TileRasterizer::bin(std::size_t index) {
 }
 
 void TileRasterizer::clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
+    fitTilesToFramebuffer();
     if (color) clear_.color = true, clear_.rgba = rgba;
     if (depth) clear_.depth = true, clear_.depth24 = depth24;
+    std::fill(clearPending_.begin(), clearPending_.end(), std::uint8_t{1});
 }
 
 void TileRasterizer::clearTile(const PixelRect& rect, bool drawnNext) {
@@ -79,37 +85,44 @@ void TileRasterizer::clearTile(const PixelRect& rect, bool drawnNext) {
     finishStreaming();
 }
 
+void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool paintersSort) {
+    const int tx = static_cast<int>(tile % static_cast<std::size_t>(tilesX_));
+    const int ty = static_cast<int>(tile / static_cast<std::size_t>(tilesX_));
+    const PixelRect rect{tx * kTileSize, std::min((tx + 1) * kTileSize, binnedWidth_) - 1,
+                         ty * kTileSize, std::min((ty + 1) * kTileSize, binnedHeight_) - 1};
+    std::vector<std::uint32_t>& bin = bins_[tile];
+    if (paintersSort) {
+        std::stable_sort(bin.begin(), bin.end(), [this](std::uint32_t a, std::uint32_t b) {
+            return triangles_[a].meanDepth > triangles_[b].meanDepth;
+        });
+    }
+    if (clearPending_[tile]) {
+        clearTile(rect, !bin.empty());
+        clearPending_[tile] = 0;
+    }
+    for (std::uint32_t index : bin) rasterizeWithMethod(triangles_[index], rect, framebuffer_, counts, shader_);
+    bin.clear();
+}
+
+void TileRasterizer::addCounts(Stats& stats, const FragmentCounts& counts) {
+    stats.fragments += counts.fragments;
+    stats.fragmentsPassed += counts.passed;
+    stats.pixelsWritten += counts.passed;
+}
+
 void TileRasterizer::flush(Stats& stats, bool paintersSort) {
-    if (binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) triangles_.clear();
+    fitTilesToFramebuffer();
     const bool clearing = clear_.color || clear_.depth;
     if (triangles_.empty() && !clearing) return;
-    if (triangles_.empty()) resetBins();  // the tiles of the current size, none holding a triangle
     for (ThreadCounts& c : threadCounts_) c.counts = {};
-    auto drawTile = [&](std::size_t tile, unsigned thread) {
-        const int tx = static_cast<int>(tile % static_cast<std::size_t>(tilesX_));
-        const int ty = static_cast<int>(tile / static_cast<std::size_t>(tilesX_));
-        const PixelRect rect{tx * kTileSize, std::min((tx + 1) * kTileSize, binnedWidth_) - 1,
-                             ty * kTileSize, std::min((ty + 1) * kTileSize, binnedHeight_) - 1};
-        if (paintersSort) {
-            std::stable_sort(bins_[tile].begin(), bins_[tile].end(), [this](std::uint32_t a, std::uint32_t b) {
-                return triangles_[a].meanDepth > triangles_[b].meanDepth;
-            });
-        }
-        if (clearing) clearTile(rect, !bins_[tile].empty());
-        for (std::uint32_t index : bins_[tile])
-            rasterizeWithMethod(triangles_[index], rect, framebuffer_, threadCounts_[thread].counts, shader_);
-    };
+    auto drawAny = [&](std::size_t tile, unsigned thread) { drawTile(tile, threadCounts_[thread].counts, paintersSort); };
     const std::size_t pixels = static_cast<std::size_t>(binnedWidth_) * static_cast<std::size_t>(binnedHeight_);
     if (triangles_.size() < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
-        for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawTile(tile, 0);
+        for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawAny(tile, 0);
     } else {
-        pool_.run(bins_.size(), drawTile);
+        pool_.run(bins_.size(), drawAny);
     }
-    for (const ThreadCounts& c : threadCounts_) {
-        stats.fragments += c.counts.fragments;
-        stats.fragmentsPassed += c.counts.passed;
-        stats.pixelsWritten += c.counts.passed;
-    }
+    for (const ThreadCounts& c : threadCounts_) addCounts(stats, c.counts);
     triangles_.clear();
     clear_ = {};
 }

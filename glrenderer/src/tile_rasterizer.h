@@ -10,8 +10,9 @@
 namespace glrenderer {
 
 // Defers rasterization: triangles are binned into screen tiles and drawn at flush(), tiles in
-// parallel, each tile's triangles in submission order. Every pixel is computed exactly as the
-// immediate kernel computes it, so the result does not depend on tiling or threads.
+// parallel, each tile's triangles in submission order; drawSomeTiles() may draw part of the
+// queue earlier on a thread that would otherwise wait. Every pixel is computed exactly as the
+// immediate kernel computes it, so the result does not depend on tiling, threads or timing.
 class TileRasterizer {
 public:
     explicit TileRasterizer(Framebuffer& framebuffer);
@@ -20,27 +21,43 @@ public:
     // it) and bins it into the tiles it may cover.
     template <class Prepare>
     void add(Prepare&& prepare) {
-        if (triangles_.empty() || binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) {
-            resetBins();
-        }
+        fitTilesToFramebuffer();
         RasterTriangle& triangle = triangles_.emplace_back();
         if (prepare(triangle)) bin(triangles_.size() - 1);
         else triangles_.pop_back();
     }
-    // Clears the buffers at the next flush(), each tile just before its triangles while it is
-    // in cache, tiles in parallel, instead of one pass over the whole framebuffer now.
+    // Clears the buffers before the tiles are next drawn, each tile just before its triangles
+    // while it is in cache, instead of one pass over the whole framebuffer now.
     void clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);
-    // Draws everything queued; adds fragment counts to stats. The framebuffer must keep its size
-    // between add() and flush(); if it changed, the queued triangles are dropped. With
-    // paintersSort each tile draws its triangles far to near by mean depth instead of in order.
+    // Draws everything queued and every pending clear; adds fragment counts to stats. The
+    // framebuffer must keep its size between add() and flush(); if it changed, the queued
+    // triangles are dropped. With paintersSort each tile draws its triangles far to near by
+    // mean depth instead of in order.
     void flush(Stats& stats, bool paintersSort = false);
+    // Draws the tiles that hold queued triangles, on the calling thread alone, one after the
+    // other until stop() returns true; flush() draws the rest. Not for the painter's sort, which
+    // orders a tile's whole queue.
+    template <class Stop>
+    void drawSomeTiles(Stats& stats, Stop&& stop) {
+        FragmentCounts counts;
+        for (std::size_t tile = 0; tile < bins_.size(); ++tile) {
+            if (stop()) return addCounts(stats, counts);
+            if (!bins_[tile].empty()) drawTile(tile, counts, false);
+        }
+        triangles_.clear();  // every bin is empty
+        addCounts(stats, counts);
+    }
+    std::size_t queued() const { return triangles_.size(); }
 
 private:
     static constexpr int kTileSize = 64;
-    void resetBins();
+    void fitTilesToFramebuffer();
     void bin(std::size_t index);
+    // Clears the tile if a clear is pending for it, draws its queued triangles, empties its bin.
+    void drawTile(std::size_t tile, FragmentCounts& counts, bool paintersSort);
     // Clears the tile's part of the buffers being cleared; `drawnNext` if triangles follow.
     void clearTile(const PixelRect& rect, bool drawnNext);
+    static void addCounts(Stats& stats, const FragmentCounts& counts);
 
     struct PendingClear {
         bool color = false, depth = false;
@@ -56,6 +73,7 @@ private:
     std::vector<ThreadCounts> threadCounts_;
     SpanShader shader_;
     PendingClear clear_;
+    std::vector<std::uint8_t> clearPending_;  // per tile: not yet cleared by clear_
     std::vector<RasterTriangle> triangles_;
     std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into triangles_
     int tilesX_ = 0, tilesY_ = 0;
