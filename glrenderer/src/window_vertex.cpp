@@ -18,11 +18,6 @@ ViewportTransform::ViewportTransform(const DrawState& state, int framebufferHeig
     translateZ_ = state.depthNear + halfDepth;
 }
 
-// Built twice, chosen at load time: with the CPU's fma instruction where it has one, else with
-// the library's exact fma (the same bits, as a function call).
-#if defined(__x86_64__)
-__attribute__((target_clones("fma", "default")))
-#endif
 WindowVertex ViewportTransform::apply(const Vertex& vertex) const {
     const glm::vec4& p = vertex.position;
     WindowVertex out;
