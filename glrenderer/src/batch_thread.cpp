@@ -13,6 +13,7 @@ BatchThread::~BatchThread() {
     {
         std::lock_guard lock(mutex_);
         stopping_ = true;
+        needed_.store(true, std::memory_order_relaxed);  // cut a tile pass short
     }
     wake_.notify_one();
     thread_.join();
@@ -54,7 +55,7 @@ void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock, bool tilesWhenI
             free_.push_back(std::move(chunk));
             room_.notify_one();
         }
-        if (!tilesWhenIdle || waiting_ || !drawer_.worthDrawingTilesEarly()) break;
+        if (!tilesWhenIdle || waiting_ || stopping_ || !drawer_.worthDrawingTilesEarly()) break;
         needed_.store(false, std::memory_order_relaxed);
         lock.unlock();
         drawer_.drawSomeTiles([this] { return needed_.load(std::memory_order_relaxed); });
