@@ -9,22 +9,22 @@
 
 namespace glrenderer {
 
-// One draw as the reference sees it: consecutive submissions of one mode under one state,
-// merged, with the methods in force when they were submitted.
-struct Batch {
+// What a draw is, as the reference sees it: consecutive submissions of one mode under one
+// state, merged, with the methods in force when they were submitted.
+struct BatchHeader {
     DrawState state;
     Methods methods;
     PrimitiveMode mode = PrimitiveMode::Points;
     bool colorsPerVertex = false;  // glColor was called inside its glBegin/glEnd blocks
+};
+
+// One draw with its vertices.
+struct Batch : BatchHeader {
     std::span<const Vertex> vertices;
 };
 
 // A batch's place in its chunk.
-struct BatchEntry {
-    DrawState state;
-    Methods methods;
-    PrimitiveMode mode = PrimitiveMode::Points;
-    bool colorsPerVertex = false;
+struct BatchEntry : BatchHeader {
     std::size_t first = 0, count = 0;  // its vertices in the chunk
 };
 
@@ -41,8 +41,7 @@ struct BatchChunk {
     std::vector<BatchEntry> batches;
 
     Batch batch(const BatchEntry& entry) const {
-        return {entry.state, entry.methods, entry.mode, entry.colorsPerVertex,
-                std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
+        return {entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
     }
     void clear() {
         vertices.clear();

@@ -20,6 +20,10 @@ public:
     BatchDrawer(Framebuffer& framebuffer, Stats& stats);
 
     void draw(const Batch& batch);
+    // Every batch of the chunk, in order.
+    void draw(const BatchChunk& chunk) {
+        for (const BatchEntry& entry : chunk.batches) draw(chunk.batch(entry));
+    }
     // Rasterizes the binned triangles (in parallel tiles).
     void flush();
     // Whether enough is queued for drawSomeTiles() to be worth it (never under the painter's

@@ -49,7 +49,7 @@ void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock, bool tilesWhenI
             std::unique_ptr<BatchChunk> chunk = std::move(posted_.front());
             posted_.erase(posted_.begin());
             lock.unlock();
-            for (const BatchEntry& entry : chunk->batches) drawer_.draw(chunk->batch(entry));
+            drawer_.draw(*chunk);
             chunk->clear();
             lock.lock();
             free_.push_back(std::move(chunk));

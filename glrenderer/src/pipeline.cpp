@@ -18,7 +18,7 @@ bool isMergeable(PrimitiveMode mode) {
 // Filled independent triangles come out the same however a batch of them is cut, so a long
 // batch is drawn in parts while the program goes on. (Quads are not: the batch as a whole
 // decides their diagonal.)
-bool canCut(const BatchEntry& batch) {
+bool canCut(const BatchHeader& batch) {
     return batch.mode == PrimitiveMode::Triangles && batch.state.polygonFront == PolygonMode::Fill &&
            batch.state.polygonBack == PolygonMode::Fill;
 }
@@ -59,10 +59,15 @@ void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode) {
     open_.clear();
 }
 
+void Pipeline::keepOpenVertices(std::size_t count) {
+    stats_.vertices += count;
+    const auto end = open_.begin() + static_cast<std::ptrdiff_t>(count);
+    chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), end);
+    open_.erase(open_.begin(), end);
+}
+
 void Pipeline::handOverPart() {
-    stats_.vertices += open_.size();
-    chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), open_.end());
-    open_.clear();
+    keepOpenVertices(open_.size());
     const bool colors = batch_->colorsPerVertex;  // a full buffer keeps the reference's vertex format
     endBatch();
     batch_->colorsPerVertex = colors;
@@ -72,12 +77,7 @@ void Pipeline::colorPerVertex() {
     if (batch_->colorsPerVertex) return;
     // The open quads' whole quads so far belong to the draw without colors (the reference
     // carries only an incomplete quad over).
-    if (batch_->mode == PrimitiveMode::Quads) {
-        const std::size_t whole = open_.size() - open_.size() % 4;
-        stats_.vertices += whole;
-        chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(whole));
-        open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(whole));
-    }
+    if (batch_->mode == PrimitiveMode::Quads) keepOpenVertices(open_.size() - open_.size() % 4);
     endBatch();
     batch_->colorsPerVertex = true;
 }
@@ -85,10 +85,10 @@ void Pipeline::colorPerVertex() {
 void Pipeline::endPrimitive() {
     const BatchEntry& batch = *batch_;
     const std::size_t count = open_.size();
-    stats_.vertices += count;
     ++stats_.primitivesByMode[static_cast<std::size_t>(batch.mode)];
     const std::size_t usable = usableVertexCount(batch.mode, count);
-    chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(usable));
+    stats_.vertices += count - usable;  // dropped, but submitted
+    keepOpenVertices(usable);
     open_.clear();
     cuttable_ = false;
     // The reference keeps an incomplete tail's vertices in its buffer, so the next block is not
@@ -120,7 +120,7 @@ void Pipeline::handOverChunk() {
     if (thread_) {
         chunk_ = thread_->post(std::move(chunk_));
     } else {
-        for (const BatchEntry& entry : chunk_->batches) drawer_->draw(chunk_->batch(entry));
+        drawer_->draw(*chunk_);
         chunk_->clear();
     }
     batch_->first = 0;

@@ -70,6 +70,8 @@ public:
     void resetStats();
 
 private:
+    // Counts the open primitive's first `count` vertices and moves them into the batch.
+    void keepOpenVertices(std::size_t count);
     void handOverPart();
     void handOverChunk();
     std::size_t batchSize() const;
