@@ -34,8 +34,7 @@ bool isCulled(const DrawState& state, Facing facing) {
 
 }  // namespace
 
-BatchDrawer::BatchDrawer(Framebuffer& framebuffer, Stats& stats)
-    : framebuffer_(framebuffer), stats_(stats), tiles_(framebuffer) {}
+BatchDrawer::BatchDrawer(Framebuffer& framebuffer) : framebuffer_(framebuffer), tiles_(framebuffer) {}
 
 void BatchDrawer::flush() { tiles_.flush(stats_, paintersSort_); }
 

@@ -14,10 +14,14 @@ struct TriangleIndices;
 
 // The pipeline's per-batch work: window transform, decomposition, clipping, culling and
 // triangle setup, with triangles binned for the tile rasterizer and points and lines drawn at
-// once. Everything it counts goes to `stats`.
+// once.
 class BatchDrawer {
 public:
-    BatchDrawer(Framebuffer& framebuffer, Stats& stats);
+    explicit BatchDrawer(Framebuffer& framebuffer);
+
+    // What it counted (triangles and fragments) since the last reset.
+    const Stats& stats() const { return stats_; }
+    void resetStats() { stats_ = {}; }
 
     void draw(const Batch& batch);
     // Every batch of the chunk, in order.
@@ -49,7 +53,9 @@ private:
                        const glm::vec4& flatColor);
 
     Framebuffer& framebuffer_;
-    Stats& stats_;
+    // Written for every triangle on the batch thread: a line of its own, not shared with
+    // anything the program's thread writes.
+    alignas(64) Stats stats_;
     TileRasterizer tiles_;
     bool paintersSort_ = false;  // of the last batch drawn: how its tiles order triangles
     const Batch* batch_ = nullptr;  // the batch being drawn

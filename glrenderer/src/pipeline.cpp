@@ -37,7 +37,7 @@ std::unique_ptr<BatchChunk> makeChunk() {
 
 Pipeline::Pipeline(Framebuffer& framebuffer)
     : chunk_(makeChunk()), batch_(std::make_unique<BatchEntry>()),
-      drawer_(std::make_unique<BatchDrawer>(framebuffer, stats_)) {
+      drawer_(std::make_unique<BatchDrawer>(framebuffer)) {
     if (workerThreadCount() > 1) {
         std::vector<std::unique_ptr<BatchChunk>> spare(kChunks - 1);
         for (auto& chunk : spare) chunk = makeChunk();
@@ -60,7 +60,7 @@ void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode) {
 }
 
 void Pipeline::keepOpenVertices(std::size_t count) {
-    stats_.vertices += count;
+    submitted_.vertices += count;
     const auto end = open_.begin() + static_cast<std::ptrdiff_t>(count);
     chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), end);
     open_.erase(open_.begin(), end);
@@ -85,9 +85,9 @@ void Pipeline::colorPerVertex() {
 void Pipeline::endPrimitive() {
     const BatchEntry& batch = *batch_;
     const std::size_t count = open_.size();
-    ++stats_.primitivesByMode[static_cast<std::size_t>(batch.mode)];
+    ++submitted_.primitivesByMode[static_cast<std::size_t>(batch.mode)];
     const std::size_t usable = usableVertexCount(batch.mode, count);
-    stats_.vertices += count - usable;  // dropped, but submitted
+    submitted_.vertices += count - usable;  // dropped, but submitted
     keepOpenVertices(usable);
     open_.clear();
     cuttable_ = false;
@@ -133,9 +133,12 @@ void Pipeline::finish() {
     drawer_->flush();
 }
 
+Stats Pipeline::stats() const { return submitted_ + drawer_->stats(); }
+
 void Pipeline::resetStats() {
     finish();
-    stats_ = {};
+    submitted_ = {};
+    drawer_->resetStats();
 }
 
 void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {

@@ -62,7 +62,7 @@ std::vector<std::uint8_t> Context::readPixels() {
 
 void Context::setMethods(const glrenderer::Methods& methods) { state_->pipeline.setMethods(methods); }
 
-const Stats& Context::stats() {
+Stats Context::stats() {
     state_->pipeline.finish();
     return state_->pipeline.stats();
 }

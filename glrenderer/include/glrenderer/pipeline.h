@@ -65,7 +65,7 @@ public:
     const Methods& methods() const { return methods_; }
 
     // Complete after finish().
-    const Stats& stats() const { return stats_; }
+    Stats stats() const;
     // Finishes (the work queued so far is counted before the reset), then zeroes the counters.
     void resetStats();
 
@@ -76,7 +76,9 @@ private:
     void handOverChunk();
     std::size_t batchSize() const;
 
-    Stats stats_;
+    // Counted as the program submits (vertices, primitives); the batch thread counts the rest on
+    // a cache line of its own.
+    Stats submitted_;
     Methods methods_;
     std::unique_ptr<BatchChunk> chunk_;  // being filled on the caller's thread
     std::unique_ptr<BatchEntry> batch_;  // the batch being merged: the end of chunk_

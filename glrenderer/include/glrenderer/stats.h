@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 
 #include "glrenderer/draw_state.h"
 
@@ -23,23 +24,32 @@ struct Stats {
     std::uint64_t pixelsWritten = 0;   // fragments that changed the color buffer
 };
 
+// Applies `op` counter by counter.
+template <class Op>
+Stats combineStats(const Stats& a, const Stats& b, Op op) {
+    Stats r;
+    r.vertices = op(a.vertices, b.vertices);
+    for (std::size_t i = 0; i < r.primitivesByMode.size(); ++i)
+        r.primitivesByMode[i] = op(a.primitivesByMode[i], b.primitivesByMode[i]);
+    r.triangles = op(a.triangles, b.triangles);
+    r.clippedAway = op(a.clippedAway, b.clippedAway);
+    r.clipCreated = op(a.clipCreated, b.clipCreated);
+    r.culledBack = op(a.culledBack, b.culledBack);
+    r.culledFront = op(a.culledFront, b.culledFront);
+    r.culledZeroArea = op(a.culledZeroArea, b.culledZeroArea);
+    r.rasterized = op(a.rasterized, b.rasterized);
+    r.fragments = op(a.fragments, b.fragments);
+    r.fragmentsPassed = op(a.fragmentsPassed, b.fragmentsPassed);
+    r.pixelsWritten = op(a.pixelsWritten, b.pixelsWritten);
+    return r;
+}
+
 // What happened between two readings of the counters, e.g. around one draw.
 inline Stats operator-(const Stats& later, const Stats& earlier) {
-    Stats d;
-    d.vertices = later.vertices - earlier.vertices;
-    for (std::size_t i = 0; i < d.primitivesByMode.size(); ++i)
-        d.primitivesByMode[i] = later.primitivesByMode[i] - earlier.primitivesByMode[i];
-    d.triangles = later.triangles - earlier.triangles;
-    d.clippedAway = later.clippedAway - earlier.clippedAway;
-    d.clipCreated = later.clipCreated - earlier.clipCreated;
-    d.culledBack = later.culledBack - earlier.culledBack;
-    d.culledFront = later.culledFront - earlier.culledFront;
-    d.culledZeroArea = later.culledZeroArea - earlier.culledZeroArea;
-    d.rasterized = later.rasterized - earlier.rasterized;
-    d.fragments = later.fragments - earlier.fragments;
-    d.fragmentsPassed = later.fragmentsPassed - earlier.fragmentsPassed;
-    d.pixelsWritten = later.pixelsWritten - earlier.pixelsWritten;
-    return d;
+    return combineStats(later, earlier, std::minus<>{});
 }
+
+// The counts of two parts of the work together.
+inline Stats operator+(const Stats& a, const Stats& b) { return combineStats(a, b, std::plus<>{}); }
 
 }  // namespace glrenderer

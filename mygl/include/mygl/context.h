@@ -42,7 +42,7 @@ public:
     void setMethods(const glrenderer::Methods& methods);
 
     // Counters since the last glClear of the color buffer (or resetStats()); finishes the frame.
-    const Stats& stats();
+    Stats stats();
     void resetStats();
 
     struct State;  // the GL state machine; defined in mygl/src
