@@ -61,12 +61,12 @@ void rasterizeBoundingBoxFloat(const RasterTriangle& t, const PixelRect& rect, F
 }
 
 void rasterizeWithMethod(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb,
-                         FragmentCounts& counts, SpanShader shader) {
+                         FragmentCounts& counts, const ExactKernels& kernels) {
     switch (t.method) {
-    case RasterMethod::Exact: rasterizeTriangleSpans(t, rect, fb, counts, shader); break;
+    case RasterMethod::Exact: rasterizeTriangleSpans(t, rect, fb, counts, kernels); break;
     case RasterMethod::ExactPerPixel: rasterizeTriangleExact(t, rect, fb, counts); break;
-    case RasterMethod::Scanline: rasterizeScanline(t, rect, fb, counts, shader); break;
-    case RasterMethod::BoundingBoxFloat: rasterizeBoundingBoxFloat(t, rect, fb, counts, shader); break;
+    case RasterMethod::Scanline: rasterizeScanline(t, rect, fb, counts, kernels.span); break;
+    case RasterMethod::BoundingBoxFloat: rasterizeBoundingBoxFloat(t, rect, fb, counts, kernels.span); break;
     }
 }
 

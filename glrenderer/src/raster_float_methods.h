@@ -19,6 +19,6 @@ void rasterizeBoundingBoxFloat(const RasterTriangle& triangle, const PixelRect& 
 
 // Draws `triangle` with the method it was prepared for.
 void rasterizeWithMethod(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
-                         FragmentCounts& counts, SpanShader shader);
+                         FragmentCounts& counts, const ExactKernels& kernels);
 
 }  // namespace glrenderer

@@ -58,10 +58,11 @@ void shadeSpanScalar(const RasterTriangle& t, int row, int begin, int end, Frame
 }
 
 void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb,
-                            FragmentCounts& counts, SpanShader shader) {
+                            FragmentCounts& counts, const ExactKernels& kernels) {
     const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
     const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
     if (minX > maxX || minY > maxY) return;
+    if (kernels.narrow && kernels.narrow(t, {minX, maxX, minY, maxY}, fb, counts)) return;
     // The edge functions are linear: if the four corners of the area are inside an edge, all of
     // it is; if they are all outside one edge, none of it is. A tile a large triangle covers
     // whole then needs no span search, and one it misses needs nothing. (Not worth testing for
@@ -79,7 +80,7 @@ void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Fram
     }
     for (int row = minY; row <= maxY; ++row) {
         const Span span = coveredWhole ? Span{minX, maxX} : coveredSpan(t, row, minX, maxX);
-        if (span.begin <= span.end) shader(t, row, span.begin, span.end, fb, counts);
+        if (span.begin <= span.end) kernels.span(t, row, span.begin, span.end, fb, counts);
     }
 }
 
@@ -101,10 +102,10 @@ bool cpuHasAvx512() {
 #endif
 }
 
-SpanShader bestSpanShader() {
-    if (cpuHasAvx512()) return shadeSpanAvx512;
-    if (cpuHasAvx2Fma()) return shadeSpanAvx2;
-    return shadeSpanScalar;
+ExactKernels bestExactKernels() {
+    if (cpuHasAvx512()) return {shadeSpanAvx512, shadeNarrowTriangleAvx512};
+    if (cpuHasAvx2Fma()) return {shadeSpanAvx2, nullptr};
+    return {};
 }
 
 }  // namespace glrenderer

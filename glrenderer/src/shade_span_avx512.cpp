@@ -5,6 +5,8 @@
 #include <immintrin.h>
 
 #include <bit>
+#include <cstdint>
+#include <cstdlib>
 
 #include "raster_span.h"
 
@@ -47,6 +49,79 @@ __mmask16 depthPassMask(CompareFunc func, __mmask16 active, __m512i incoming, __
     return 0;
 }
 
+
+// A triangle's planes and flat color broadcast to the 16 lanes, and what every shader computes
+// from them for a block of pixels at (x, y).
+class TriangleLanes {
+public:
+    explicit TriangleLanes(const RasterTriangle& t)
+        : t_(t), depth_(t.depth), invW_(t.invW), r_(t.color[0]), g_(t.color[1]), b_(t.color[2]), a_(t.color[3]) {}
+
+    __m512i depth24(__m512 x, __m512 y) const { return toDepth24(depth_.at(x, y)); }
+
+    __m512i rgba(__m512 x, __m512 y) const {
+        if (!t_.state.smooth) return _mm512_set1_epi32(static_cast<int>(t_.flatColor));
+        const __m512 w = _mm512_div_ps(_mm512_set1_ps(1.0f), invW_.at(x, y));
+        return _mm512_or_si512(
+            _mm512_or_si512(fragmentToUnorm8(_mm512_mul_ps(r_.at(x, y), w)),
+                            _mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(g_.at(x, y), w)), 8)),
+            _mm512_or_si512(_mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(b_.at(x, y), w)), 16),
+                            _mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(a_.at(x, y), w)), 24)));
+    }
+
+private:
+    const RasterTriangle& t_;
+    PlaneLanes depth_, invW_, r_, g_, b_, a_;
+};
+
+// A function, not a constant: a static initializer would run AVX-512 code on any CPU.
+__m512i laneIndex() { return _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15); }
+
+// Rows of a narrow area as blocks of lanes: lane i is pixel (i % columns, i / columns) of the
+// block, columns a power of two. Each row of a block is accessed with one masked load or store,
+// at an address that puts the row's lanes on its pixels.
+class PixelBlock {
+public:
+    PixelBlock(int minX, int minY, int rows, unsigned columns, const Framebuffer& fb)
+        : columns_(columns),
+          firstPixel_(static_cast<std::size_t>(fb.height() - 1 - minY) * static_cast<std::size_t>(fb.width()) +
+                      static_cast<std::size_t>(minX)),
+          width_(static_cast<std::size_t>(fb.width())),
+          rows_(rows) {}
+
+    int rows() const { return rows_; }
+    __mmask16 rowLanes(int row) const {
+        return static_cast<__mmask16>(((1u << columns_) - 1) << (static_cast<unsigned>(row) * columns_));
+    }
+    // Where lane 0 would be for the lanes of `row` to land on their pixels of `buffer`. Formed
+    // as an integer: it may lie before the buffer, where only masked-off lanes point.
+    std::uint32_t* laneZero(std::uint32_t* buffer, int row) const {
+        const std::uint32_t* rowStart = buffer + firstPixel_ - static_cast<std::size_t>(row) * width_;
+        return reinterpret_cast<std::uint32_t*>(reinterpret_cast<std::uintptr_t>(rowStart) -
+                                                sizeof(std::uint32_t) * static_cast<unsigned>(row) * columns_);
+    }
+    // The lanes of `covered` loaded from `buffer`, the others zero.
+    __m512i load(std::uint32_t* buffer, __mmask16 covered) const {
+        __m512i values = _mm512_setzero_si512();
+        for (int row = 0; row < rows_; ++row) {
+            const __mmask16 lanes = covered & rowLanes(row);
+            if (lanes) values = _mm512_mask_loadu_epi32(values, lanes, laneZero(buffer, row));
+        }
+        return values;
+    }
+    void store(std::uint32_t* buffer, __mmask16 covered, __m512i values) const {
+        for (int row = 0; row < rows_; ++row) {
+            const __mmask16 lanes = covered & rowLanes(row);
+            if (lanes) _mm512_mask_storeu_epi32(laneZero(buffer, row), lanes, values);
+        }
+    }
+
+private:
+    unsigned columns_;
+    std::size_t firstPixel_, width_;  // rows go down in memory as y goes up
+    int rows_;
+};
+
 }  // namespace
 
 void shadeSpanAvx512(const RasterTriangle& t, int row, int begin, int end, Framebuffer& fb,
@@ -55,36 +130,80 @@ void shadeSpanAvx512(const RasterTriangle& t, int row, int begin, int end, Frame
     std::uint32_t* color = fb.color().data() + offset;
     std::uint32_t* depth = fb.depth().data() + offset;
     const __m512 y = _mm512_set1_ps(static_cast<float>(row));
-    const __m512i laneIndex = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-    const PlaneLanes depthPlane(t.depth), invW(t.invW);
-    const PlaneLanes r(t.color[0]), g(t.color[1]), b(t.color[2]), a(t.color[3]);
-    const __m512i flatColor = _mm512_set1_epi32(static_cast<int>(t.flatColor));
+    const TriangleLanes lanes(t);
     std::uint64_t passed = 0;
     for (int px = begin; px <= end; px += 16) {
         const int remaining = end - px + 1;
         __mmask16 mask = remaining >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << remaining) - 1);
-        const __m512 x = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(px), laneIndex));
+        const __m512 x = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(px), laneIndex()));
         if (t.state.depthTest) {
-            const __m512i z = toDepth24(depthPlane.at(x, y));
+            const __m512i z = lanes.depth24(x, y);
             const __m512i stored = _mm512_maskz_loadu_epi32(mask, depth + px);
             mask = depthPassMask(t.state.depthFunc, mask, z, stored);
             if (t.state.depthWrite) _mm512_mask_storeu_epi32(depth + px, mask, z);
         }
         if (mask == 0) continue;
         passed += static_cast<unsigned>(std::popcount(static_cast<unsigned>(mask)));
-        __m512i rgba = flatColor;
-        if (t.state.smooth) {
-            const __m512 w = _mm512_div_ps(_mm512_set1_ps(1.0f), invW.at(x, y));
-            rgba = _mm512_or_si512(
-                _mm512_or_si512(fragmentToUnorm8(_mm512_mul_ps(r.at(x, y), w)),
-                                _mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(g.at(x, y), w)), 8)),
-                _mm512_or_si512(_mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(b.at(x, y), w)), 16),
-                                _mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(a.at(x, y), w)), 24)));
-        }
-        _mm512_mask_storeu_epi32(color + px, mask, rgba);
+        _mm512_mask_storeu_epi32(color + px, mask, lanes.rgba(x, y));
     }
     counts.fragments += static_cast<std::uint64_t>(end - begin + 1);
     counts.passed += passed;
+}
+
+bool shadeNarrowTriangleAvx512(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb,
+                               FragmentCounts& counts) {
+    const int width = area.maxX - area.minX + 1;
+    if (width > 16) return false;
+    const unsigned columns = std::bit_ceil(static_cast<unsigned>(width));
+    const int blockRows = static_cast<int>(16 / columns);
+    // Edge values in 32-bit lanes: they hold every value of every block when the steps and the
+    // values at the area's corners (the extremes of a linear function) are this small, as for
+    // any triangle this narrow that is not also huge.
+    constexpr std::int64_t kStepLimit = std::int64_t{1} << 25, kValueLimit = std::int64_t{1} << 29;
+    for (const EdgeFunction& edge : t.edges) {
+        if (std::abs(edge.stepX) >= kStepLimit || std::abs(edge.stepY) >= kStepLimit) return false;
+        for (const auto& [x, y] : {std::pair{area.minX, area.minY}, std::pair{area.maxX, area.minY},
+                                  std::pair{area.minX, area.maxY}, std::pair{area.maxX, area.maxY}}) {
+            if (std::abs(edge.at(x, y)) >= kValueLimit) return false;
+        }
+    }
+    const __m512i dx = _mm512_and_epi32(laneIndex(), _mm512_set1_epi32(static_cast<int>(columns - 1)));
+    const __m512i dy = _mm512_srl_epi32(laneIndex(), _mm_cvtsi32_si128(std::countr_zero(columns)));
+    const __m512 x = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(area.minX), dx));
+    const __mmask16 inColumns = _mm512_cmplt_epi32_mask(dx, _mm512_set1_epi32(width));
+    __m512i stepX[3], stepY[3];
+    for (int k = 0; k < 3; ++k) {
+        stepX[k] = _mm512_mullo_epi32(dx, _mm512_set1_epi32(static_cast<int>(t.edges[k].stepX)));
+        stepY[k] = _mm512_mullo_epi32(dy, _mm512_set1_epi32(static_cast<int>(t.edges[k].stepY)));
+    }
+    const TriangleLanes lanes(t);
+    std::uint64_t fragments = 0, passedCount = 0;
+    for (int top = area.minY; top <= area.maxY; top += blockRows) {
+        const int rows = std::min(blockRows, area.maxY - top + 1);
+        __m512i outside = _mm512_setzero_si512();  // sign bit set where any edge is negative
+        for (int k = 0; k < 3; ++k) {
+            const __m512i first = _mm512_set1_epi32(static_cast<int>(t.edges[k].at(area.minX, top)));
+            outside = _mm512_or_si512(outside, _mm512_add_epi32(first, _mm512_add_epi32(stepX[k], stepY[k])));
+        }
+        const __mmask16 inBlock = inColumns & _mm512_cmplt_epi32_mask(dy, _mm512_set1_epi32(rows));
+        const __mmask16 covered = _mm512_mask_cmpge_epi32_mask(inBlock, outside, _mm512_setzero_si512());
+        if (covered == 0) continue;
+        fragments += static_cast<unsigned>(std::popcount(static_cast<unsigned>(covered)));
+        const PixelBlock block(area.minX, top, rows, columns, fb);
+        const __m512 y = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(top), dy));
+        __mmask16 passed = covered;
+        if (t.state.depthTest) {
+            const __m512i z = lanes.depth24(x, y);
+            passed = depthPassMask(t.state.depthFunc, covered, z, block.load(fb.depth().data(), covered));
+            if (t.state.depthWrite) block.store(fb.depth().data(), passed, z);
+            if (passed == 0) continue;
+        }
+        passedCount += static_cast<unsigned>(std::popcount(static_cast<unsigned>(passed)));
+        block.store(fb.color().data(), passed, lanes.rgba(x, y));
+    }
+    counts.fragments += fragments;
+    counts.passed += passedCount;
+    return true;
 }
 
 }  // namespace glrenderer

@@ -49,7 +49,7 @@ void prefetch(const RasterTriangle& triangle) {
 
 TileRasterizer::TileRasterizer(Framebuffer& framebuffer)
     : framebuffer_(framebuffer), pool_(workerThreadCount()),
-      threadCounts_(pool_.threadCount()), shader_(bestSpanShader()) {}
+      threadCounts_(pool_.threadCount()), kernels_(bestExactKernels()) {}
 
 void TileRasterizer::fitTilesToFramebuffer() {
     if (binnedWidth_ == framebuffer_.width() && binnedHeight_ == framebuffer_.height()) return;
@@ -110,7 +110,7 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     constexpr std::size_t kPrefetchAhead = 4;
     for (std::size_t i = 0; i < bin.size(); ++i) {
         if (i + kPrefetchAhead < bin.size()) prefetch(triangles_[bin[i + kPrefetchAhead]]);
-        rasterizeWithMethod(triangles_[bin[i]], rect, framebuffer_, counts, shader_);
+        rasterizeWithMethod(triangles_[bin[i]], rect, framebuffer_, counts, kernels_);
     }
     bin.clear();
 }

@@ -71,7 +71,7 @@ private:
     Framebuffer& framebuffer_;
     WorkerPool pool_;
     std::vector<ThreadCounts> threadCounts_;
-    SpanShader shader_;
+    ExactKernels kernels_;
     PendingClear clear_;
     std::vector<std::uint8_t> clearPending_;  // per tile: not yet cleared by clear_
     std::vector<RasterTriangle> triangles_;

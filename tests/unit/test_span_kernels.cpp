@@ -1,5 +1,6 @@
-// The fast kernels (exact spans, scalar or AVX2 shading) against the per-pixel reference kernel:
-// same colors, depths and counts, bit for bit, on random triangles in every fragment state.
+// The fast kernels (exact spans, scalar, AVX2 or AVX-512 shading, AVX-512 blocks for narrow
+// triangles) against the per-pixel reference kernel: same colors, depths and counts, bit for
+// bit, on random triangles in every fragment state, whole or cut to a rectangle as tiles are.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -36,9 +37,13 @@ TEST(SpanKernels, MatchThePerPixelKernelBitForBit) {
     std::mt19937 random(5);
     std::uniform_int_distribution<int> depthFunc(0, 7), coin(0, 1);
     std::uniform_int_distribution<std::uint32_t> depth(0, kDepthMax24);
-    std::vector<std::pair<const char*, SpanShader>> shaders{{"scalar", shadeSpanScalar}};
-    if (cpuHasAvx2Fma()) shaders.push_back({"avx2", shadeSpanAvx2});
-    if (cpuHasAvx512()) shaders.push_back({"avx512", shadeSpanAvx512});
+    std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1);
+    std::vector<std::pair<const char*, ExactKernels>> kernels{{"scalar", {shadeSpanScalar, nullptr}}};
+    if (cpuHasAvx2Fma()) kernels.push_back({"avx2", {shadeSpanAvx2, nullptr}});
+    if (cpuHasAvx512()) {
+        kernels.push_back({"avx512", {shadeSpanAvx512, nullptr}});
+        kernels.push_back({"avx512 narrow blocks", {shadeSpanAvx512, shadeNarrowTriangleAvx512}});
+    }
     int drawn = 0;
     for (int i = 0; i < 3000; ++i) {
         const float spread = i % 3 == 0 ? 3.0f : (i % 3 == 1 ? 30.0f : 400.0f);
@@ -58,14 +63,19 @@ TEST(SpanKernels, MatchThePerPixelKernelBitForBit) {
 
         std::vector<std::uint32_t> initialDepth(kWidth * kHeight);
         for (auto& d : initialDepth) d = depth(random);
-        const PixelRect whole{0, kWidth - 1, 0, kHeight - 1};
+        // Every other triangle is drawn within a random rectangle, as a tile draws its part.
+        PixelRect rect{0, kWidth - 1, 0, kHeight - 1};
+        if (i % 2) {
+            const int x0 = column(random), x1 = column(random), y0 = row(random), y1 = row(random);
+            rect = {std::min(x0, x1), std::max(x0, x1), std::min(y0, y1), std::max(y0, y1)};
+        }
         Target expected;
         std::copy(initialDepth.begin(), initialDepth.end(), expected.framebuffer.depth().begin());
-        rasterizeTriangleExact(triangle, whole, expected.framebuffer, expected.counts);
-        for (const auto& [name, shader] : shaders) {
+        rasterizeTriangleExact(triangle, rect, expected.framebuffer, expected.counts);
+        for (const auto& [name, kernel] : kernels) {
             Target actual;
             std::copy(initialDepth.begin(), initialDepth.end(), actual.framebuffer.depth().begin());
-            rasterizeTriangleSpans(triangle, whole, actual.framebuffer, actual.counts, shader);
+            rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, kernel);
             ASSERT_TRUE(std::equal(expected.framebuffer.color().begin(), expected.framebuffer.color().end(),
                                    actual.framebuffer.color().begin())) << name << " triangle " << i;
             ASSERT_TRUE(std::equal(expected.framebuffer.depth().begin(), expected.framebuffer.depth().end(),
