@@ -51,14 +51,13 @@ TileRasterizer::TileRasterizer(Framebuffer& framebuffer)
     : framebuffer_(framebuffer), pool_(workerThreadCount()),
       threadCounts_(pool_.threadCount()), kernels_(bestExactKernels()) {}
 
-void TileRasterizer::fitTilesToFramebuffer() {
-    if (binnedWidth_ == framebuffer_.width() && binnedHeight_ == framebuffer_.height()) return;
+void TileRasterizer::refitTiles() {
     binnedWidth_ = framebuffer_.width();
     binnedHeight_ = framebuffer_.height();
     tilesX_ = (binnedWidth_ + kTileSize - 1) / kTileSize;
     tilesY_ = (binnedHeight_ + kTileSize - 1) / kTileSize;
     const auto tiles = static_cast<std::size_t>(tilesX_) * static_cast<std::size_t>(tilesY_);
-    triangles_.clear();  // queued for a framebuffer of another size
+    queued_ = 0;  // queued for a framebuffer of another size
     bins_.resize(tiles);
     for (auto& bin : bins_) bin.clear();
     clearPending_.assign(tiles, clear_.color || clear_.depth);
@@ -124,17 +123,17 @@ void TileRasterizer::addCounts(Stats& stats, const FragmentCounts& counts) {
 void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     fitTilesToFramebuffer();
     const bool clearing = clear_.color || clear_.depth;
-    if (triangles_.empty() && !clearing) return;
+    if (queued_ == 0 && !clearing) return;
     for (ThreadCounts& c : threadCounts_) c.counts = {};
     auto drawAny = [&](std::size_t tile, unsigned thread) { drawTile(tile, threadCounts_[thread].counts, paintersSort); };
     const std::size_t pixels = static_cast<std::size_t>(binnedWidth_) * static_cast<std::size_t>(binnedHeight_);
-    if (triangles_.size() < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
+    if (queued_ < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawAny(tile, 0);
     } else {
         pool_.run(bins_.size(), drawAny);
     }
     for (const ThreadCounts& c : threadCounts_) addCounts(stats, c.counts);
-    triangles_.clear();
+    queued_ = 0;
     clear_ = {};
 }
 
