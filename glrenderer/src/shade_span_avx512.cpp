@@ -77,19 +77,32 @@ private:
 // A function, not a constant: a static initializer would run AVX-512 code on any CPU.
 __m512i laneIndex() { return _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15); }
 
-// Rows of a narrow area as blocks of lanes: lane i is pixel (i % columns, i / columns) of the
-// block, columns a power of two. Each row of a block is accessed with one masked load or store,
-// at an address that puts the row's lanes on its pixels.
+// Rows of a narrow area as blocks of lanes: lane i is pixel (dx, dy) = (i % columns,
+// i / columns) of the block, columns a power of two.
 class PixelBlock {
 public:
-    PixelBlock(int minX, int minY, int rows, unsigned columns, const Framebuffer& fb)
-        : columns_(columns),
+    // `laneOffsets` holds each lane's dx - dy * (framebuffer width): rows go down in memory as y
+    // goes up.
+    PixelBlock(int minX, int minY, int rows, unsigned columns, __m512i laneOffsets, const Framebuffer& fb)
+        : columns_(columns), rows_(rows), laneOffsets_(laneOffsets),
           firstPixel_(static_cast<std::size_t>(fb.height() - 1 - minY) * static_cast<std::size_t>(fb.width()) +
                       static_cast<std::size_t>(minX)),
-          width_(static_cast<std::size_t>(fb.width())),
-          rows_(rows) {}
+          width_(static_cast<std::size_t>(fb.width())) {}
 
-    int rows() const { return rows_; }
+    // The lanes of `covered` loaded from `buffer`, the others zero. One gather: it measured
+    // faster than a masked load per row, which stalls behind the previous triangle's stores.
+    __m512i load(const std::uint32_t* buffer, __mmask16 covered) const {
+        return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), covered, laneOffsets_, buffer + firstPixel_, 4);
+    }
+    // A masked store per row (a scatter measured slower).
+    void store(std::uint32_t* buffer, __mmask16 covered, __m512i values) const {
+        for (int row = 0; row < rows_; ++row) {
+            const __mmask16 lanes = covered & rowLanes(row);
+            if (lanes) _mm512_mask_storeu_epi32(laneZero(buffer, row), lanes, values);
+        }
+    }
+
+private:
     __mmask16 rowLanes(int row) const {
         return static_cast<__mmask16>(((1u << columns_) - 1) << (static_cast<unsigned>(row) * columns_));
     }
@@ -100,26 +113,11 @@ public:
         return reinterpret_cast<std::uint32_t*>(reinterpret_cast<std::uintptr_t>(rowStart) -
                                                 sizeof(std::uint32_t) * static_cast<unsigned>(row) * columns_);
     }
-    // The lanes of `covered` loaded from `buffer`, the others zero.
-    __m512i load(std::uint32_t* buffer, __mmask16 covered) const {
-        __m512i values = _mm512_setzero_si512();
-        for (int row = 0; row < rows_; ++row) {
-            const __mmask16 lanes = covered & rowLanes(row);
-            if (lanes) values = _mm512_mask_loadu_epi32(values, lanes, laneZero(buffer, row));
-        }
-        return values;
-    }
-    void store(std::uint32_t* buffer, __mmask16 covered, __m512i values) const {
-        for (int row = 0; row < rows_; ++row) {
-            const __mmask16 lanes = covered & rowLanes(row);
-            if (lanes) _mm512_mask_storeu_epi32(laneZero(buffer, row), lanes, values);
-        }
-    }
 
-private:
     unsigned columns_;
-    std::size_t firstPixel_, width_;  // rows go down in memory as y goes up
     int rows_;
+    __m512i laneOffsets_;
+    std::size_t firstPixel_, width_;
 };
 
 }  // namespace
@@ -171,6 +169,7 @@ bool shadeNarrowTriangleAvx512(const RasterTriangle& t, const PixelRect& area, F
     const __m512i dy = _mm512_srl_epi32(laneIndex(), _mm_cvtsi32_si128(std::countr_zero(columns)));
     const __m512 x = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(area.minX), dx));
     const __mmask16 inColumns = _mm512_cmplt_epi32_mask(dx, _mm512_set1_epi32(width));
+    const __m512i laneOffsets = _mm512_sub_epi32(dx, _mm512_mullo_epi32(dy, _mm512_set1_epi32(fb.width())));
     __m512i stepX[3], stepY[3];
     for (int k = 0; k < 3; ++k) {
         stepX[k] = _mm512_mullo_epi32(dx, _mm512_set1_epi32(static_cast<int>(t.edges[k].stepX)));
@@ -189,7 +188,7 @@ bool shadeNarrowTriangleAvx512(const RasterTriangle& t, const PixelRect& area, F
         const __mmask16 covered = _mm512_mask_cmpge_epi32_mask(inBlock, outside, _mm512_setzero_si512());
         if (covered == 0) continue;
         fragments += static_cast<unsigned>(std::popcount(static_cast<unsigned>(covered)));
-        const PixelBlock block(area.minX, top, rows, columns, fb);
+        const PixelBlock block(area.minX, top, rows, columns, laneOffsets, fb);
         const __m512 y = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(top), dy));
         __mmask16 passed = covered;
         if (t.state.depthTest) {
