@@ -5,7 +5,9 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/methods.h"
+#include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
+#include "triangle_slots.h"
 
 namespace glrenderer {
 
@@ -39,13 +41,26 @@ struct BatchChunk {
 
     std::vector<Vertex> vertices;
     std::vector<BatchEntry> batches;
+    // Set when the chunk's poster has set its triangles up (BatchSetup), as it does when the
+    // batch thread is behind: drawing it then only queues `triangles` and adds `setupStats`.
+    bool setUp = false;
+    TriangleSlots triangles;
+    Stats setupStats;
 
+    // The entry's batch as the reference draws it. Without a color per vertex the color is a
+    // constant of the draw, not an interpolation of equal values (which perspective would blur
+    // by one unit here and there): flat.
     Batch batch(const BatchEntry& entry) const {
-        return {entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
+        Batch batch{entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
+        if (!batch.colorsPerVertex) batch.state.shadeModel = ShadeModel::Flat;
+        return batch;
     }
     void clear() {
         vertices.clear();
         batches.clear();
+        setUp = false;
+        triangles.clear();
+        setupStats = {};
     }
 };
 

@@ -3,18 +3,15 @@
 #include <vector>
 
 #include "batch.h"
+#include "batch_setup.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
 #include "tile_rasterizer.h"
-#include "window_vertex.h"
 
 namespace glrenderer {
 
-struct TriangleIndices;
-
-// The pipeline's per-batch work: window transform, decomposition, clipping, culling and
-// triangle setup, with triangles binned for the tile rasterizer and points and lines drawn at
-// once.
+// The pipeline's per-batch work on the batch thread: triangles set up (BatchSetup) and binned
+// for the tile rasterizer, points and lines drawn at once.
 class BatchDrawer {
 public:
     explicit BatchDrawer(Framebuffer& framebuffer);
@@ -24,10 +21,9 @@ public:
     void resetStats() { stats_ = {}; }
 
     void draw(const Batch& batch);
-    // Every batch of the chunk, in order.
-    void draw(const BatchChunk& chunk) {
-        for (const BatchEntry& entry : chunk.batches) draw(chunk.batch(entry));
-    }
+    // Every batch of the chunk, in order; triangles its poster has set up already are only
+    // queued.
+    void draw(const BatchChunk& chunk);
     // Rasterizes the binned triangles (in parallel tiles).
     void flush();
     // Whether enough is queued for drawSomeTiles() to be worth it (never under the painter's
@@ -47,21 +43,15 @@ public:
 private:
     static constexpr std::size_t kEarlyTriangles = 2048;
 
-    void drawTriangles();
-    void drawTriangle(const TriangleIndices& triangle, const ViewportTransform& viewport);
-    void setupTriangle(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                       const glm::vec4& flatColor);
+    void drawUnfilled(const Batch& batch);
 
     Framebuffer& framebuffer_;
     // Written for every triangle on the batch thread: a line of its own, not shared with
     // anything the program's thread writes.
     alignas(64) Stats stats_;
     TileRasterizer tiles_;
+    BatchSetup setup_;
     bool paintersSort_ = false;  // of the last batch drawn: how its tiles order triangles
-    const Batch* batch_ = nullptr;  // the batch being drawn
-    // Per batch vertex: which clip planes it is outside of, and its window position.
-    std::vector<std::uint8_t> outcodes_;
-    std::vector<WindowVertex> windowVertices_;
 };
 
 }  // namespace glrenderer

@@ -2,8 +2,9 @@
 
 namespace glrenderer {
 
-BatchThread::BatchThread(BatchDrawer& drawer, std::vector<std::unique_ptr<BatchChunk>> chunks)
-    : drawer_(drawer), free_(std::move(chunks)) {
+BatchThread::BatchThread(BatchDrawer& drawer, const Framebuffer& framebuffer,
+                         std::vector<std::unique_ptr<BatchChunk>> chunks)
+    : drawer_(drawer), setup_(framebuffer), free_(std::move(chunks)) {
     posted_.reserve(free_.size() + 1);
     free_.reserve(free_.size() + 1);
     thread_ = std::thread([this] { run(); });
@@ -21,6 +22,11 @@ BatchThread::~BatchThread() {
 
 std::unique_ptr<BatchChunk> BatchThread::post(std::unique_ptr<BatchChunk> chunk) {
     std::unique_lock lock(mutex_);
+    if (free_.empty()) {  // the thread is behind: rather than wait, take some of its work
+        lock.unlock();
+        setup_.setUp(*chunk);
+        lock.lock();
+    }
     posted_.push_back(std::move(chunk));
     needed_.store(true, std::memory_order_relaxed);
     wake_.notify_one();
@@ -38,8 +44,24 @@ void BatchThread::wait() {
     }
     waiting_ = true;
     needed_.store(true, std::memory_order_relaxed);
+    setUpQueued(lock);
     idle_.wait(lock, [this] { return posted_.empty() && !drawing_; });
     waiting_ = false;
+}
+
+void BatchThread::setUpQueued(std::unique_lock<std::mutex>& lock) {
+    // Counted from the back: the thread only removes chunks from the front, and waits for the
+    // one being set up here if it gets to it.
+    for (std::size_t fromBack = 0; drawing_ && fromBack < posted_.size(); ++fromBack) {
+        BatchChunk& chunk = *posted_[posted_.size() - 1 - fromBack];
+        if (chunk.setUp) continue;
+        settingUp_ = &chunk;
+        lock.unlock();
+        setup_.setUp(chunk);
+        lock.lock();
+        settingUp_ = nullptr;
+        setUp_.notify_one();
+    }
 }
 
 void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock, bool tilesWhenIdle) {
@@ -48,6 +70,7 @@ void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock, bool tilesWhenI
         while (!posted_.empty()) {
             std::unique_ptr<BatchChunk> chunk = std::move(posted_.front());
             posted_.erase(posted_.begin());
+            setUp_.wait(lock, [&] { return settingUp_ != chunk.get(); });
             lock.unlock();
             drawer_.draw(*chunk);
             chunk->clear();

@@ -41,7 +41,7 @@ Pipeline::Pipeline(Framebuffer& framebuffer)
     if (workerThreadCount() > 1) {
         std::vector<std::unique_ptr<BatchChunk>> spare(kChunks - 1);
         for (auto& chunk : spare) chunk = makeChunk();
-        thread_ = std::make_unique<BatchThread>(*drawer_, std::move(spare));
+        thread_ = std::make_unique<BatchThread>(*drawer_, framebuffer, std::move(spare));
     }
 }
 

@@ -57,7 +57,7 @@ void TileRasterizer::refitTiles() {
     tilesX_ = (binnedWidth_ + kTileSize - 1) / kTileSize;
     tilesY_ = (binnedHeight_ + kTileSize - 1) / kTileSize;
     const auto tiles = static_cast<std::size_t>(tilesX_) * static_cast<std::size_t>(tilesY_);
-    queued_ = 0;  // queued for a framebuffer of another size
+    triangles_.clear();  // queued for a framebuffer of another size
     bins_.resize(tiles);
     for (auto& bin : bins_) bin.clear();
     clearPending_.assign(tiles, clear_.color || clear_.depth);
@@ -123,17 +123,17 @@ void TileRasterizer::addCounts(Stats& stats, const FragmentCounts& counts) {
 void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     fitTilesToFramebuffer();
     const bool clearing = clear_.color || clear_.depth;
-    if (queued_ == 0 && !clearing) return;
+    if (triangles_.size() == 0 && !clearing) return;
     for (ThreadCounts& c : threadCounts_) c.counts = {};
     auto drawAny = [&](std::size_t tile, unsigned thread) { drawTile(tile, threadCounts_[thread].counts, paintersSort); };
     const std::size_t pixels = static_cast<std::size_t>(binnedWidth_) * static_cast<std::size_t>(binnedHeight_);
-    if (queued_ < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
+    if (triangles_.size() < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawAny(tile, 0);
     } else {
         pool_.run(bins_.size(), drawAny);
     }
     for (const ThreadCounts& c : threadCounts_) addCounts(stats, c.counts);
-    queued_ = 0;
+    triangles_.clear();
     clear_ = {};
 }
 

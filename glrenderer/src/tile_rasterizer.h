@@ -5,6 +5,7 @@
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
 #include "raster_span.h"
+#include "triangle_slots.h"
 #include "worker_pool.h"
 
 namespace glrenderer {
@@ -13,19 +14,18 @@ namespace glrenderer {
 // parallel, each tile's triangles in submission order; drawSomeTiles() may draw part of the
 // queue earlier on a thread that would otherwise wait. Every pixel is computed exactly as the
 // immediate kernel computes it, so the result does not depend on tiling, threads or timing.
-class TileRasterizer {
+class TileRasterizer final : public TriangleTarget {
 public:
     explicit TileRasterizer(Framebuffer& framebuffer);
 
-    // Queues the triangle that `prepare(RasterTriangle&)` fills in place (returning false drops
-    // it) and bins it into the tiles it may cover. The slot is reused from an earlier frame:
-    // `prepare` writes what the triangle's state reads, over whatever the slot held (clearing
-    // 200 bytes first was a tenth of a dense mesh's setup).
-    template <class Prepare>
-    void add(Prepare&& prepare) {
+    // A triangle is prepared in slot() and queued by keep(), binned into the tiles it may cover.
+    RasterTriangle& slot() override {
         fitTilesToFramebuffer();
-        if (queued_ == triangles_.size()) triangles_.emplace_back();
-        if (prepare(triangles_[queued_])) bin(queued_++);
+        return triangles_.slot();
+    }
+    void keep() override {
+        triangles_.keep();
+        bin(triangles_.size() - 1);
     }
     // Clears the buffers before the tiles are next drawn, each tile just before its triangles
     // while it is in cache, instead of one pass over the whole framebuffer now.
@@ -45,10 +45,10 @@ public:
             if (stop()) return addCounts(stats, counts);
             if (!bins_[tile].empty()) drawTile(tile, counts, false);
         }
-        queued_ = 0;  // every bin is empty
+        triangles_.clear();  // every bin is empty
         addCounts(stats, counts);
     }
-    std::size_t queued() const { return queued_; }
+    std::size_t queued() const { return triangles_.size(); }
 
 private:
     static constexpr int kTileSize = 64;
@@ -78,8 +78,7 @@ private:
     ExactKernels kernels_;
     PendingClear clear_;
     std::vector<std::uint8_t> clearPending_;  // per tile: not yet cleared by clear_
-    std::vector<RasterTriangle> triangles_;  // the first queued_ are queued, the rest spare slots
-    std::size_t queued_ = 0;
+    TriangleSlots triangles_;
     std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into triangles_
     int tilesX_ = 0, tilesY_ = 0;
     int binnedWidth_ = 0, binnedHeight_ = 0;

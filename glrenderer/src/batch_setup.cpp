@@ -1,0 +1,148 @@
+#include "batch_setup.h"
+
+#include <cmath>
+
+#include "clip.h"
+#include "decompose.h"
+#include "seed_culling.h"
+
+namespace glrenderer {
+namespace {
+
+// Window coordinates beyond this are only reachable through degenerate w; such triangles are
+// dropped rather than fed to the fixed-point conversion.
+constexpr float kMaxWindowCoordinate = 1 << 24;
+
+bool isUsable(const WindowVertex& v) {
+    return std::fabs(v.x) < kMaxWindowCoordinate && std::fabs(v.y) < kMaxWindowCoordinate &&
+           std::isfinite(v.z) && std::isfinite(v.invW) && std::isfinite(v.color.r) &&
+           std::isfinite(v.color.g) && std::isfinite(v.color.b) && std::isfinite(v.color.a);
+}
+
+bool isCulled(const DrawState& state, Facing facing) {
+    if (!state.cullEnabled) return false;
+    switch (state.cullFace) {
+    case Face::Front: return facing == Facing::Front;
+    case Face::Back: return facing == Facing::Back;
+    case Face::FrontAndBack: return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+bool BatchSetup::handles(const BatchHeader& batch) {
+    return isTriangleMode(batch.mode) && batch.state.polygonFront == PolygonMode::Fill &&
+           batch.state.polygonBack == PolygonMode::Fill;
+}
+
+bool BatchSetup::setUp(BatchChunk& chunk) {
+    for (const BatchEntry& entry : chunk.batches) {
+        if (!handles(entry)) return false;
+    }
+    for (const BatchEntry& entry : chunk.batches) setUp(chunk.batch(entry), chunk.triangles, chunk.setupStats);
+    chunk.setUp = true;
+    return true;
+}
+
+std::uint8_t BatchSetup::transform(const Batch& batch) {
+    const ViewportTransform viewport(batch.state, framebuffer_.height());
+    const std::size_t count = batch.vertices.size();
+    outcodes_.resize(count);
+    windowVertices_.resize(count);
+    std::uint8_t anyOutside = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        outcodes_[i] = clipOutcode(batch.vertices[i].position);
+        anyOutside |= outcodes_[i];
+        windowVertices_[i] = viewport.apply(batch.vertices[i]);
+    }
+    return anyOutside;
+}
+
+void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats) {
+    const std::uint8_t anyOutside = transform(batch);
+    const ViewportTransform viewport(batch.state, framebuffer_.height());
+    const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
+    const bool flatColorsPerVertex = batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex;
+    const Call call{batch, target, stats};
+    decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, flatColorsPerVertex,
+                       [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
+}
+
+void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const ViewportTransform& viewport) {
+    const Batch& batch = call.batch;
+    const auto& vertices = batch.vertices;
+    ++call.stats.triangles;
+    const glm::vec4& flatColor = vertices[t.v[2]].color;
+    if (batch.methods.culling != CullMethod::WindowArea && batch.state.cullEnabled) {
+        const Facing facing = seedFacing(batch.methods.culling, vertices[t.v[0]], vertices[t.v[1]],
+                                         vertices[t.v[2]], batch.state.frontFaceCCW);
+        if (facing != Facing::ZeroArea && isCulled(batch.state, facing)) {  // edge-on: the seeds keep it
+            ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
+            return;
+        }
+    }
+    const std::uint8_t outsideAny = outcodes_[t.v[0]] | outcodes_[t.v[1]] | outcodes_[t.v[2]];
+    if (outsideAny == 0) {
+        setUpTriangle(call, windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]], flatColor);
+        return;
+    }
+    if (outcodes_[t.v[0]] & outcodes_[t.v[1]] & outcodes_[t.v[2]]) {
+        ++call.stats.clippedAway;
+        return;
+    }
+    const ClippedPolygon polygon = clipTriangle(vertices[t.v[0]], vertices[t.v[1]], vertices[t.v[2]], outsideAny);
+    if (polygon.count < 3) {
+        ++call.stats.clippedAway;
+        return;
+    }
+    call.stats.clipCreated += static_cast<std::uint64_t>(polygon.count - 3);
+    // Input vertices keep the window position of the vertex stage; new ones get the clipper's.
+    const auto window = [&](int i) {
+        const int source = polygon.source[static_cast<std::size_t>(i)];
+        return source == kNewVertex ? viewport.applyToClipped(polygon.vertices[static_cast<std::size_t>(i)])
+                                    : windowVertices_[t.v[source]];
+    };
+    const WindowVertex first = window(0);
+    WindowVertex previous = window(1);
+    for (int i = 2; i < polygon.count; ++i) {
+        const WindowVertex current = window(i);
+        setUpTriangle(call, previous, current, first, flatColor);
+        previous = current;
+    }
+}
+
+void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1,
+                               const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
+                               Stats& stats) {
+    setUpTriangle(Call{batch, target, stats}, v0, v1, v2, flatColor);
+}
+
+// Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.
+void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1,
+                               const WindowVertex& v2, const glm::vec4& flatColor) {
+    const DrawState& state = call.batch.state;
+    const Methods& methods = call.batch.methods;
+    if (!isUsable(v0) || !isUsable(v1) || !isUsable(v2)) {
+        ++call.stats.clippedAway;
+        return;
+    }
+    SetupTriangle triangle{{v0, v1, v2}, {snap(v0), snap(v1), snap(v2)}, 0, flatColor};
+    triangle.area = fixedArea(triangle.fixed[0], triangle.fixed[1], triangle.fixed[2]);
+    const Facing facing = facingOf(triangle.area, state.frontFaceCCW);
+    if (facing == Facing::ZeroArea) {
+        ++call.stats.culledZeroArea;
+        return;
+    }
+    // The seeds' culling methods have decided already, before clipping.
+    if (methods.culling == CullMethod::WindowArea && isCulled(state, facing)) {
+        ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
+        return;
+    }
+    ++call.stats.rasterized;
+    if (prepareTriangle(triangle, state, methods, framebuffer_.width(), framebuffer_.height(), call.target.slot())) {
+        call.target.keep();
+    }
+}
+
+}  // namespace glrenderer

@@ -1,0 +1,56 @@
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "batch.h"
+#include "glrenderer/framebuffer.h"
+#include "glrenderer/stats.h"
+#include "triangle_slots.h"
+#include "window_vertex.h"
+
+namespace glrenderer {
+
+struct TriangleIndices;
+
+// Turns the triangles of a batch into RasterTriangles: window transform, decomposition,
+// clipping, culling and setup. It touches no pixels, so it runs on whichever thread has time;
+// the triangles go to a target, and what it counts to a Stats, both given per batch.
+class BatchSetup {
+public:
+    explicit BatchSetup(const Framebuffer& framebuffer) : framebuffer_(framebuffer) {}
+
+    // Whether setUp() takes the batch: filled triangles (the unfilled stage draws lines at once).
+    static bool handles(const BatchHeader& batch);
+    // The whole batch.
+    void setUp(const Batch& batch, TriangleTarget& target, Stats& stats);
+    // Every batch of the chunk into its own triangles and counts, if it handles them all;
+    // returns whether it did.
+    bool setUp(BatchChunk& chunk);
+
+    // The parts for the unfilled stage, which decomposes and clips the batch itself: window
+    // positions and outcodes of its vertices (kept until the next batch), and the setup of one
+    // triangle already clipped.
+    std::uint8_t transform(const Batch& batch);
+    std::span<const std::uint8_t> outcodes() const { return outcodes_; }
+    std::span<const WindowVertex> windowVertices() const { return windowVertices_; }
+    void setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                       const glm::vec4& flatColor, TriangleTarget& target, Stats& stats);
+
+private:
+    struct Call {
+        const Batch& batch;
+        TriangleTarget& target;
+        Stats& stats;
+    };
+    void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
+    void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                       const glm::vec4& flatColor);
+
+    const Framebuffer& framebuffer_;  // for its size only
+    // Per batch vertex: which clip planes it is outside of, and its window position.
+    std::vector<std::uint8_t> outcodes_;
+    std::vector<WindowVertex> windowVertices_;
+};
+
+}  // namespace glrenderer
