@@ -1,11 +1,14 @@
-// Batches drawn on the pipeline's own thread, and long primitives handed over in parts, give
-// the same pixels, depths and counts as drawing on the caller's thread and as merged blocks.
+// Batches drawn on the pipeline's own thread, long primitives handed over in parts, and chunks
+// set up ahead by the program's thread give the same pixels, depths and counts as drawing on
+// the caller's thread, as merged blocks, and as the batch thread drawing the chunk itself.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <random>
 #include <vector>
 
+#include "batch_drawer.h"
+#include "batch_setup.h"
 #include "glrenderer/color_convert.h"
 #include "pipeline_fixture.h"
 
@@ -82,4 +85,91 @@ TEST(Batches, LongPrimitiveEqualsMergedBlocksAndCountsOnce) {
     EXPECT_EQ(onePrimitive.stats.fragmentsPassed, merged.stats.fragmentsPassed);
     EXPECT_EQ(onePrimitive.stats.primitivesByMode[static_cast<std::size_t>(PrimitiveMode::Triangles)], 1u);
     EXPECT_EQ(onePrimitive.stats.vertices, 3 * (glrenderer::Pipeline::kPartVertices + 100));
+}
+
+namespace {
+
+constexpr int kMixedBatches = 24;
+
+// A chunk of triangle batches in every filled mode: perspective, clipped at every plane, culled
+// or not, flat or smooth, colors per vertex or not; all of them, or only batch `only`.
+glrenderer::BatchChunk mixedTriangleChunk(int only = -1) {
+    using glrenderer::BatchEntry;
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> position(-1.6f, 1.6f), w(0.5f, 2.0f), unit(0.0f, 1.0f);
+    glrenderer::BatchChunk chunk(0, 0);
+    const PrimitiveMode modes[] = {PrimitiveMode::Triangles, PrimitiveMode::TriangleStrip, PrimitiveMode::TriangleFan,
+                                   PrimitiveMode::Quads, PrimitiveMode::QuadStrip, PrimitiveMode::Polygon};
+    for (int i = 0; i < kMixedBatches; ++i) {
+        BatchEntry entry;
+        entry.mode = modes[i % 6];
+        entry.state.viewport = {0, 0, 40, 30};
+        entry.state.depthTest = i % 3 != 0;
+        entry.state.cullEnabled = i % 4 == 1;
+        entry.state.shadeModel = i % 5 == 2 ? glrenderer::ShadeModel::Flat : glrenderer::ShadeModel::Smooth;
+        entry.colorsPerVertex = i % 7 != 3;
+        entry.first = chunk.vertices.size();
+        entry.count = 12;
+        for (std::size_t k = 0; k < entry.count; ++k) {
+            const float cw = w(random);
+            chunk.vertices.push_back(
+                {{position(random) * cw, position(random) * cw, position(random) * cw, cw},
+                 {unit(random), unit(random), unit(random), 1.0f}});
+        }
+        if (only < 0 || only == i) chunk.batches.push_back(entry);
+    }
+    return chunk;
+}
+
+Drawn drawChunk(glrenderer::BatchChunk chunk, bool setUpFirst) {
+    glrenderer::Framebuffer framebuffer(40, 30);
+    glrenderer::BatchDrawer drawer(framebuffer);
+    drawer.clearAtFlush(true, 0, true, glrenderer::kDepthMax24);
+    if (setUpFirst) {
+        glrenderer::BatchSetup setup(framebuffer);
+        EXPECT_TRUE(setup.setUp(chunk));
+        EXPECT_TRUE(chunk.setUp);
+    }
+    drawer.draw(chunk);
+    drawer.flush();
+    return {{framebuffer.color().begin(), framebuffer.color().end()},
+            {framebuffer.depth().begin(), framebuffer.depth().end()},
+            drawer.stats()};
+}
+
+}  // namespace
+
+// The poster's thread may set a chunk's triangles up before the batch thread gets to it: the
+// whole chunk (order across batches) and each batch alone (each batch's state) draw the same.
+TEST(Batches, ChunkSetUpAheadDrawsAsTheBatchThreadWould) {
+    for (int only = -1; only < kMixedBatches; ++only) {
+        SCOPED_TRACE(only);
+        const Drawn drawn = drawChunk(mixedTriangleChunk(only), false);
+        const Drawn setUpAhead = drawChunk(mixedTriangleChunk(only), true);
+        if (only < 0) {
+            EXPECT_GT(drawn.stats.fragmentsPassed, 0u);
+            EXPECT_GT(drawn.stats.clipCreated, 0u);
+            EXPECT_GT(drawn.stats.culledBack + drawn.stats.culledFront, 0u);
+        }
+        expectSame(drawn, setUpAhead);
+        EXPECT_EQ(drawn.stats.clippedAway, setUpAhead.stats.clippedAway);
+        EXPECT_EQ(drawn.stats.clipCreated, setUpAhead.stats.clipCreated);
+        EXPECT_EQ(drawn.stats.culledBack, setUpAhead.stats.culledBack);
+        EXPECT_EQ(drawn.stats.culledFront, setUpAhead.stats.culledFront);
+        EXPECT_EQ(drawn.stats.culledZeroArea, setUpAhead.stats.culledZeroArea);
+    }
+}
+
+// Lines and unfilled polygons are drawn at once, in order with the tiles: not set up ahead.
+TEST(Batches, ChunkWithLinesIsNotSetUpAhead) {
+    glrenderer::BatchChunk chunk = mixedTriangleChunk();
+    chunk.batches[5].mode = PrimitiveMode::Lines;
+    glrenderer::Framebuffer framebuffer(40, 30);
+    glrenderer::BatchSetup setup(framebuffer);
+    EXPECT_FALSE(setup.setUp(chunk));
+    EXPECT_FALSE(chunk.setUp);
+    EXPECT_EQ(chunk.triangles.size(), 0u);
+    chunk = mixedTriangleChunk();
+    chunk.batches[2].state.polygonBack = glrenderer::PolygonMode::Line;
+    EXPECT_FALSE(setup.setUp(chunk));
 }
