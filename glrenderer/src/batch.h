@@ -5,6 +5,7 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/methods.h"
+#include "glrenderer/pipeline.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
 #include "triangle_slots.h"
@@ -30,6 +31,10 @@ struct BatchEntry : BatchHeader {
     std::size_t first = 0, count = 0;  // its vertices in the chunk
 };
 
+// The vertices a chunk is made for: a part of a long primitive (Pipeline::kPartVertices) plus
+// the batch that crossed it, in the usual case.
+inline constexpr std::size_t kChunkVertices = 2 * Pipeline::kPartVertices;
+
 // Consecutive batches with their vertices in one array: what the pipeline hands to its batch
 // thread at once, so that a thousand small draws cost one hand-over. Chunks are reused frame
 // after frame, keeping their capacity.
@@ -37,6 +42,7 @@ struct BatchChunk {
     BatchChunk(std::size_t vertexCapacity, std::size_t batchCapacity) {
         vertices.reserve(vertexCapacity);
         batches.reserve(batchCapacity);
+        triangles.reserve(vertexCapacity);  // strips and fans: a triangle per vertex
     }
 
     std::vector<Vertex> vertices;

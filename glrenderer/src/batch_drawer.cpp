@@ -7,7 +7,7 @@
 namespace glrenderer {
 
 BatchDrawer::BatchDrawer(Framebuffer& framebuffer)
-    : framebuffer_(framebuffer), tiles_(framebuffer), setup_(framebuffer) {}
+    : framebuffer_(framebuffer), tiles_(framebuffer), setup_(framebuffer, kChunkVertices) {}
 
 void BatchDrawer::flush() { tiles_.flush(stats_, paintersSort_); }
 

@@ -18,7 +18,12 @@ struct TriangleIndices;
 // the triangles go to a target, and what it counts to a Stats, both given per batch.
 class BatchSetup {
 public:
-    explicit BatchSetup(const Framebuffer& framebuffer) : framebuffer_(framebuffer) {}
+    // Its scratch arrays are sized for `batchVertices`, so that a batch of up to that many
+    // allocates nothing, however rarely this instance is used.
+    BatchSetup(const Framebuffer& framebuffer, std::size_t batchVertices) : framebuffer_(framebuffer) {
+        outcodes_.reserve(batchVertices);
+        windowVertices_.reserve(batchVertices);
+    }
 
     // Whether setUp() takes the batch: filled triangles (the unfilled stage draws lines at once).
     static bool handles(const BatchHeader& batch);

@@ -4,7 +4,7 @@ namespace glrenderer {
 
 BatchThread::BatchThread(BatchDrawer& drawer, const Framebuffer& framebuffer,
                          std::vector<std::unique_ptr<BatchChunk>> chunks)
-    : drawer_(drawer), setup_(framebuffer), free_(std::move(chunks)) {
+    : drawer_(drawer), setup_(framebuffer, kChunkVertices), free_(std::move(chunks)) {
     posted_.reserve(free_.size() + 1);
     free_.reserve(free_.size() + 1);
     thread_ = std::thread([this] { run(); });

@@ -30,7 +30,7 @@ constexpr std::size_t kChunks = 8;
 constexpr std::size_t kChunkBatches = 256;
 
 std::unique_ptr<BatchChunk> makeChunk() {
-    return std::make_unique<BatchChunk>(2 * Pipeline::kPartVertices, kChunkBatches);
+    return std::make_unique<BatchChunk>(kChunkVertices, kChunkBatches);
 }
 
 }  // namespace

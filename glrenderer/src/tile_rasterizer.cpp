@@ -60,14 +60,19 @@ void TileRasterizer::refitTiles() {
     triangles_.clear();  // queued for a framebuffer of another size
     bins_.resize(tiles);
     for (auto& bin : bins_) bin.clear();
+    binnedSinceFlush_.assign(tiles, 0);
     clearPending_.assign(tiles, clear_.color || clear_.depth);
 }
 
 void TileRasterizer::bin(std::size_t index) {
     const RasterTriangle& triangle = triangles_[index];
-    for (int ty = triangle.minY / kTileSize; ty <= triangle.maxY / kTileSize; ++ty)
-        for (int tx = triangle.minX / kTileSize; tx <= triangle.maxX / kTileSize; ++tx)
-            bins_[static_cast<std::size_t>(ty * tilesX_ + tx)].push_back(static_cast<std::uint32_t>(index));
+    for (int ty = triangle.minY / kTileSize; ty <= triangle.maxY / kTileSize; ++ty) {
+        for (int tx = triangle.minX / kTileSize; tx <= triangle.maxX / kTileSize; ++tx) {
+            const auto tile = static_cast<std::size_t>(ty * tilesX_ + tx);
+            bins_[tile].push_back(static_cast<std::uint32_t>(index));
+            ++binnedSinceFlush_[tile];
+        }
+    }
 }
 
 void TileRasterizer::clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
@@ -135,6 +140,13 @@ void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     for (const ThreadCounts& c : threadCounts_) addCounts(stats, c.counts);
     triangles_.clear();
     clear_ = {};
+    // Steady state allocates nothing even if the next frame draws fewer tiles early.
+    triangles_.reserve(queuedSinceFlush_);
+    queuedSinceFlush_ = 0;
+    for (std::size_t tile = 0; tile < bins_.size(); ++tile) {
+        bins_[tile].reserve(binnedSinceFlush_[tile]);
+        binnedSinceFlush_[tile] = 0;
+    }
 }
 
 }  // namespace glrenderer

@@ -25,6 +25,7 @@ public:
     }
     void keep() override {
         triangles_.keep();
+        ++queuedSinceFlush_;
         bin(triangles_.size() - 1);
     }
     // Clears the buffers before the tiles are next drawn, each tile just before its triangles
@@ -80,6 +81,10 @@ private:
     std::vector<std::uint8_t> clearPending_;  // per tile: not yet cleared by clear_
     TriangleSlots triangles_;
     std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into triangles_
+    // Triangles queued since the last flush, in all and per tile: what the queue and each bin
+    // may have to hold next time, however much of it is drawn early (which depends on timing).
+    std::size_t queuedSinceFlush_ = 0;
+    std::vector<std::uint32_t> binnedSinceFlush_;
     int tilesX_ = 0, tilesY_ = 0;
     int binnedWidth_ = 0, binnedHeight_ = 0;
 };

@@ -31,6 +31,8 @@ public:
     std::size_t size() const { return count_; }
     const RasterTriangle& operator[](std::size_t index) const { return slots_[index]; }
     void clear() { count_ = 0; }
+    // Room for `count` triangles, so that filling them allocates nothing.
+    void reserve(std::size_t count) { slots_.reserve(count); }
 
 private:
     std::vector<RasterTriangle> slots_;  // the first count_ are kept, the rest spare

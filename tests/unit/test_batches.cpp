@@ -126,7 +126,7 @@ Drawn drawChunk(glrenderer::BatchChunk chunk, bool setUpFirst) {
     glrenderer::BatchDrawer drawer(framebuffer);
     drawer.clearAtFlush(true, 0, true, glrenderer::kDepthMax24);
     if (setUpFirst) {
-        glrenderer::BatchSetup setup(framebuffer);
+        glrenderer::BatchSetup setup(framebuffer, 0);
         EXPECT_TRUE(setup.setUp(chunk));
         EXPECT_TRUE(chunk.setUp);
     }
@@ -165,7 +165,7 @@ TEST(Batches, ChunkWithLinesIsNotSetUpAhead) {
     glrenderer::BatchChunk chunk = mixedTriangleChunk();
     chunk.batches[5].mode = PrimitiveMode::Lines;
     glrenderer::Framebuffer framebuffer(40, 30);
-    glrenderer::BatchSetup setup(framebuffer);
+    glrenderer::BatchSetup setup(framebuffer, 0);
     EXPECT_FALSE(setup.setUp(chunk));
     EXPECT_FALSE(chunk.setUp);
     EXPECT_EQ(chunk.triangles.size(), 0u);
