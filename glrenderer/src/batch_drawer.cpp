@@ -20,6 +20,7 @@ void BatchDrawer::draw(const Batch& batch) {
     } else {
         flush();  // points and lines are drawn at once: queued triangles first
         drawPointsAndLines(batch.mode, batch.vertices, batch.state, framebuffer_, stats_);
+        tiles_.forgetClearedTiles();
     }
 }
 
@@ -46,6 +47,7 @@ void BatchDrawer::drawUnfilled(const Batch& batch) {
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
                       ViewportTransform(batch.state, framebuffer_.height()), batch.state, framebuffer_, stats_,
                       target);
+    tiles_.forgetClearedTiles();  // its lines and points were drawn at once
 }
 
 }  // namespace glrenderer

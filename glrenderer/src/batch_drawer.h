@@ -24,8 +24,12 @@ public:
     // Every batch of the chunk, in order; triangles its poster has set up already are only
     // queued.
     void draw(const BatchChunk& chunk);
-    // Rasterizes the binned triangles (in parallel tiles).
+    // Rasterizes the binned triangles (in parallel tiles) and any pending clear.
     void flush();
+    // The same if triangles are queued; a pending clear alone stays pending.
+    void flushTriangles() {
+        if (tiles_.queued() > 0) flush();
+    }
     // Whether enough is queued for drawSomeTiles() to be worth it (never under the painter's
     // sort, which orders a tile's whole queue).
     bool worthDrawingTilesEarly() const { return !paintersSort_ && tiles_.queued() >= kEarlyTriangles; }

@@ -14,6 +14,7 @@ void Framebuffer::resize(int width, int height) {
     count_ = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     color_ = allocate(count_);
     depth_ = allocate(count_);
+    markWritten();
 }
 
 Framebuffer::Pixels Framebuffer::allocate(std::size_t count) {
@@ -22,8 +23,14 @@ Framebuffer::Pixels Framebuffer::allocate(std::size_t count) {
     return pixels;
 }
 
-void Framebuffer::clearColor(std::uint32_t rgba) { std::fill_n(color_.get(), count_, rgba); }
+void Framebuffer::clearColor(std::uint32_t rgba) {
+    std::fill_n(color_.get(), count_, rgba);
+    markWritten();
+}
 
-void Framebuffer::clearDepth(std::uint32_t depth24) { std::fill_n(depth_.get(), count_, depth24); }
+void Framebuffer::clearDepth(std::uint32_t depth24) {
+    std::fill_n(depth_.get(), count_, depth24);
+    markWritten();
+}
 
 }  // namespace glrenderer

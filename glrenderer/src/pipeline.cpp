@@ -126,23 +126,28 @@ void Pipeline::handOverChunk() {
     batch_->first = 0;
 }
 
-void Pipeline::finish() {
+void Pipeline::drawSubmitted() {
     endBatch();
     handOverChunk();
     if (thread_) thread_->wait();
+    drawer_->flushTriangles();
+}
+
+void Pipeline::finish() {
+    drawSubmitted();
     drawer_->flush();
 }
 
 Stats Pipeline::stats() const { return submitted_ + drawer_->stats(); }
 
 void Pipeline::resetStats() {
-    finish();
+    drawSubmitted();
     submitted_ = {};
     drawer_->resetStats();
 }
 
 void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
-    finish();
+    drawSubmitted();
     drawer_->clearAtFlush(color, rgba, depth, depth24);
 }
 

@@ -62,6 +62,7 @@ void TileRasterizer::refitTiles() {
     for (auto& bin : bins_) bin.clear();
     binnedSinceFlush_.assign(tiles, 0);
     clearPending_.assign(tiles, clear_.color || clear_.depth);
+    holdsClear_.assign(tiles, 0);
 }
 
 void TileRasterizer::bin(std::size_t index) {
@@ -82,14 +83,30 @@ void TileRasterizer::clearAtFlush(bool color, std::uint32_t rgba, bool depth, st
     std::fill(clearPending_.begin(), clearPending_.end(), std::uint8_t{1});
 }
 
-void TileRasterizer::clearTile(const PixelRect& rect, bool drawnNext) {
+void TileRasterizer::startDrawingTiles() {
+    if (heldGeneration_ != framebuffer_.writeGeneration()) {
+        forgetClearedTiles();
+        heldGeneration_ = framebuffer_.writeGeneration();
+    }
+    const auto forget = [this](std::uint8_t buffer) {
+        for (std::uint8_t& holds : holdsClear_) holds &= static_cast<std::uint8_t>(~buffer);
+    };
+    if (clear_.color && clear_.rgba != heldRgba_) forget(kHoldsColor), heldRgba_ = clear_.rgba;
+    if (clear_.depth && clear_.depth24 != heldDepth24_) forget(kHoldsDepth), heldDepth24_ = clear_.depth24;
+}
+
+void TileRasterizer::clearTile(std::size_t tile, const PixelRect& rect, bool drawnNext) {
+    const bool color = clear_.color && !(holdsClear_[tile] & kHoldsColor);
+    const bool depth = clear_.depth && !(holdsClear_[tile] & kHoldsDepth);
+    holdsClear_[tile] |= static_cast<std::uint8_t>((clear_.color ? kHoldsColor : 0) | (clear_.depth ? kHoldsDepth : 0));
+    if (!color && !depth) return;
     const std::size_t width = static_cast<std::size_t>(framebuffer_.width());
     const auto count = static_cast<std::size_t>(rect.maxX - rect.minX + 1);
     for (int row = rect.minY; row <= rect.maxY; ++row) {
         const std::size_t begin = static_cast<std::size_t>(framebuffer_.height() - 1 - row) * width +
                                   static_cast<std::size_t>(rect.minX);
-        if (clear_.color) fillPixels(framebuffer_.color().data() + begin, count, clear_.rgba, !drawnNext);
-        if (clear_.depth) fillPixels(framebuffer_.depth().data() + begin, count, clear_.depth24, !drawnNext);
+        if (color) fillPixels(framebuffer_.color().data() + begin, count, clear_.rgba, !drawnNext);
+        if (depth) fillPixels(framebuffer_.depth().data() + begin, count, clear_.depth24, !drawnNext);
     }
     finishStreaming();
 }
@@ -106,9 +123,10 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
         });
     }
     if (clearPending_[tile]) {
-        clearTile(rect, !bin.empty());
+        clearTile(tile, rect, !bin.empty());
         clearPending_[tile] = 0;
     }
+    if (!bin.empty()) holdsClear_[tile] = 0;
     // A tile's triangles lie scattered over the queue, usually far out of cache: fetch a few
     // ahead while drawing the current one.
     constexpr std::size_t kPrefetchAhead = 4;
@@ -129,6 +147,7 @@ void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     fitTilesToFramebuffer();
     const bool clearing = clear_.color || clear_.depth;
     if (triangles_.size() == 0 && !clearing) return;
+    startDrawingTiles();
     for (ThreadCounts& c : threadCounts_) c.counts = {};
     auto drawAny = [&](std::size_t tile, unsigned thread) { drawTile(tile, threadCounts_[thread].counts, paintersSort); };
     const std::size_t pixels = static_cast<std::size_t>(binnedWidth_) * static_cast<std::size_t>(binnedHeight_);

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -29,8 +30,12 @@ public:
         bin(triangles_.size() - 1);
     }
     // Clears the buffers before the tiles are next drawn, each tile just before its triangles
-    // while it is in cache, instead of one pass over the whole framebuffer now.
+    // while it is in cache, instead of one pass over the whole framebuffer now. A tile that still
+    // holds the same clear values (nothing drawn there since) is not written again.
     void clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);
+    // After pixels were drawn other than through the tiles (points and lines): no tile is then
+    // known to hold its clear values.
+    void forgetClearedTiles() { std::fill(holdsClear_.begin(), holdsClear_.end(), std::uint8_t{0}); }
     // Draws everything queued and every pending clear; adds fragment counts to stats. The
     // framebuffer must keep its size between add() and flush(); if it changed, the queued
     // triangles are dropped. With paintersSort each tile draws its triangles far to near by
@@ -42,6 +47,7 @@ public:
     template <class Stop>
     void drawSomeTiles(Stats& stats, Stop&& stop) {
         FragmentCounts counts;
+        startDrawingTiles();
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) {
             if (stop()) return addCounts(stats, counts);
             if (!bins_[tile].empty()) drawTile(tile, counts, false);
@@ -60,8 +66,11 @@ private:
     void bin(std::size_t index);
     // Clears the tile if a clear is pending for it, draws its queued triangles, empties its bin.
     void drawTile(std::size_t tile, FragmentCounts& counts, bool paintersSort);
-    // Clears the tile's part of the buffers being cleared; `drawnNext` if triangles follow.
-    void clearTile(const PixelRect& rect, bool drawnNext);
+    // Before tiles are drawn: which tiles hold the pending clear's values already.
+    void startDrawingTiles();
+    // Clears the tile's part of the buffers being cleared that do not hold the values already;
+    // `drawnNext` if triangles follow.
+    void clearTile(std::size_t tile, const PixelRect& rect, bool drawnNext);
     static void addCounts(Stats& stats, const FragmentCounts& counts);
 
     struct PendingClear {
@@ -79,6 +88,14 @@ private:
     ExactKernels kernels_;
     PendingClear clear_;
     std::vector<std::uint8_t> clearPending_;  // per tile: not yet cleared by clear_
+    // Per tile, the buffers whose pixels there still hold heldRgba_ / heldDepth24_, the values
+    // of their last clear carried out: most of a sparse scene's tiles are background, and
+    // clearing them again was most of its frame at 1080p. Valid while the framebuffer's
+    // writeGeneration() is heldGeneration_.
+    static constexpr std::uint8_t kHoldsColor = 1, kHoldsDepth = 2;
+    std::vector<std::uint8_t> holdsClear_;
+    std::uint32_t heldRgba_ = 0, heldDepth24_ = 0;
+    std::uint64_t heldGeneration_ = 0;
     TriangleSlots triangles_;
     std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into triangles_
     // Triangles queued since the last flush, in all and per tile: what the queue and each bin

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <reference/compare.h>
+#include <reference/osmesa_context.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -79,3 +80,32 @@ std::string caseName(const testing::TestParamInfo<Case>& info) {
 INSTANTIATE_TEST_SUITE_P(AllScenes, SceneConformance, testing::ValuesIn(cases()), caseName);
 
 }  // namespace
+
+// Frames drawn one after the other on the same contexts, as a program draws them: what a frame
+// leaves behind (tiles known to hold the clear values, queued work) must not show in the next.
+// Scenes with triangles, lines drawn at once, wireframe and animation, each alternating with a
+// scene of another kind on the same context.
+TEST(SceneConformance, ConsecutiveFramesOnOneContextMatchOsmesa) {
+    constexpr int kWidth = 320, kHeight = 240;
+    mygl::Context ours(kWidth, kHeight);
+    reference::OsmesaContext theirs(kWidth, kHeight);
+    const char* sequence[] = {"bench-gears", "bench-gears", "lines-points", "bench-gears", "wireframe-cube",
+                              "cube", "bench-torus", "bench-torus", "cube"};
+    int frame = 0;
+    for (const char* name : sequence) {
+        const scenes::Scene* scene = scenes::findScene(name);
+        ASSERT_NE(scene, nullptr) << name;
+        ours.makeCurrent();
+        scene->draw(kWidth, kHeight, frame);
+        reference::Image oursImage{kWidth, kHeight, ours.readPixels()};
+        const std::vector<std::uint32_t> oursDepth = scenes::readDepth(kWidth, kHeight);
+        theirs.makeCurrent();
+        scene->draw(kWidth, kHeight, frame);
+        reference::Image theirsImage{kWidth, kHeight, theirs.readPixels()};
+        const std::vector<std::uint32_t> theirsDepth = scenes::readDepth(kWidth, kHeight);
+        const reference::Comparison c = reference::compareImages(oursImage, theirsImage);
+        EXPECT_EQ(c.differing, 0) << name << " frame " << frame << ": " << reference::toString(c);
+        EXPECT_TRUE(oursDepth == theirsDepth) << name << " frame " << frame << ": depth buffers differ";
+        ++frame;
+    }
+}

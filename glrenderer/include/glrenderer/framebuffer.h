@@ -16,7 +16,9 @@ public:
     int height() const { return height_; }
     void resize(int width, int height);
 
-    // Packed R, G, B, A bytes in memory order, one std::uint32_t per pixel.
+    // Packed R, G, B, A bytes in memory order, one std::uint32_t per pixel. A Pipeline keeps
+    // track of what it writes; anyone else writing pixels through color() or depth() calls
+    // markWritten() afterwards.
     std::span<std::uint32_t> color() { return {color_.get(), count_}; }
     std::span<const std::uint32_t> color() const { return {color_.get(), count_}; }
     // Depth as an unsigned 24-bit integer (0 = near, 0xFFFFFF = far) per pixel.
@@ -25,6 +27,11 @@ public:
 
     void clearColor(std::uint32_t rgba);
     void clearDepth(std::uint32_t depth24);
+
+    // Changes whenever pixels are written other than by a Pipeline: resize, clearColor,
+    // clearDepth, markWritten.
+    std::uint64_t writeGeneration() const { return writeGeneration_; }
+    void markWritten() { ++writeGeneration_; }
 
 private:
     // Rows start on cache lines as far as the width allows, and the buffers always do: threads
@@ -39,6 +46,7 @@ private:
     int width_ = 0;
     int height_ = 0;
     std::size_t count_ = 0;
+    std::uint64_t writeGeneration_ = 0;
     Pixels color_;
     Pixels depth_;
 };

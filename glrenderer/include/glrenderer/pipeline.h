@@ -66,10 +66,14 @@ public:
 
     // Complete after finish().
     Stats stats() const;
-    // Finishes (the work queued so far is counted before the reset), then zeroes the counters.
+    // Draws what was submitted (it is counted before the reset), then zeroes the counters.
     void resetStats();
 
 private:
+    // Draws everything submitted, leaving a clear with nothing drawn after it pending: clears in
+    // a row then cost one pass over the framebuffer (a frame usually clears color and depth to
+    // one value, then color to another).
+    void drawSubmitted();
     // Counts the open primitive's first `count` vertices and moves them into the batch.
     void keepOpenVertices(std::size_t count);
     void handOverPart();
