@@ -14,7 +14,7 @@ void clear(GLbitfield mask) {
     constexpr GLbitfield kKnown = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
     if (mask & ~kKnown) return setError(*s, GL_INVALID_VALUE);
     const bool color = mask & GL_COLOR_BUFFER_BIT;
-    const bool depth = mask & GL_DEPTH_BUFFER_BIT;
+    const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite;  // glDepthMask applies
     s->pipeline.clear(color, glrenderer::clearColorRgba8(s->clearColor), depth,
                       glrenderer::toDepth24(static_cast<float>(s->clearDepth)));
     if (color) s->pipeline.resetStats();  // a frame's counts start at its clear, as the course did

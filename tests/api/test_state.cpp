@@ -161,6 +161,26 @@ TEST(ReadPixels, HonoursPackAlignmentAndTheWindowEdge) {
     EXPECT_EQ(bytes.mygl[6], 7);   // outside the window: untouched
 }
 
+// glClear honours glDepthMask: with depth writes off, the depth buffer keeps its values.
+TEST(Clear, HonoursTheDepthWriteMask) {
+    const auto depths = onBothBackends<std::vector<GLuint>>([] {
+        glClearDepth(0.25);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glDepthMask(GL_FALSE);
+        glClearDepth(0.75);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        std::vector<GLuint> out(16 * 16);
+        glReadPixels(0, 0, 16, 16, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, out.data());
+        glDepthMask(GL_TRUE);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        out.resize(out.size() + 1);
+        glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &out.back());
+        return out;
+    });
+    EXPECT_EQ(depths.mygl, depths.osmesa);
+    EXPECT_NE(depths.osmesa.front(), depths.osmesa.back());  // the masked clear was not done
+}
+
 TEST(BadInput, NonFiniteAndHugeCoordinatesDrawNothingWrongAndNeverCrash) {
     mygl::Context context(32, 32);
     context.makeCurrent();
