@@ -130,9 +130,14 @@ void shadeSpanAvx512(const RasterTriangle& t, int row, int begin, int end, Frame
     const __m512 y = _mm512_set1_ps(static_cast<float>(row));
     const TriangleLanes lanes(t);
     std::uint64_t passed = 0;
-    for (int px = begin; px <= end; px += 16) {
+    // Blocks aligned to cache lines (the buffers are): a block across two lines made every
+    // masked load and store touch both, a third of a dense frame. The first block starts at
+    // the line holding `begin`, its lanes before it masked off.
+    const int first = begin - static_cast<int>((offset + static_cast<std::size_t>(begin)) % 16);
+    for (int px = first; px <= end; px += 16) {
         const int remaining = end - px + 1;
         __mmask16 mask = remaining >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << remaining) - 1);
+        if (px < begin) mask &= static_cast<__mmask16>(~((1u << (begin - px)) - 1));
         const __m512 x = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(px), laneIndex()));
         if (t.state.depthTest) {
             const __m512i z = lanes.depth24(x, y);
