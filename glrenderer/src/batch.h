@@ -8,7 +8,7 @@
 #include "glrenderer/pipeline.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
-#include "triangle_slots.h"
+#include "raster_triangle.h"
 
 namespace glrenderer {
 
@@ -42,15 +42,16 @@ struct BatchChunk {
     BatchChunk(std::size_t vertexCapacity, std::size_t batchCapacity) {
         vertices.reserve(vertexCapacity);
         batches.reserve(batchCapacity);
-        triangles.reserve(vertexCapacity);  // strips and fans: a triangle per vertex
+        setUpTriangles.reserve(vertexCapacity);  // strips and fans: a triangle per vertex
     }
 
     std::vector<Vertex> vertices;
     std::vector<BatchEntry> batches;
-    // Set when the chunk's poster has set its triangles up (BatchSetup), as it does when the
-    // batch thread is behind: drawing it then only queues `triangles` and adds `setupStats`.
+    // Set when the chunk's poster has set its triangles up (BatchSetup, into slots of the
+    // tiles' TriangleArena), as it does when the batch thread is behind: drawing the chunk then
+    // only queues `setUpTriangles` and adds `setupStats`.
     bool setUp = false;
-    TriangleSlots triangles;
+    std::vector<const RasterTriangle*> setUpTriangles;
     Stats setupStats;
 
     // The entry's batch as the reference draws it. Without a color per vertex the color is a
@@ -65,7 +66,7 @@ struct BatchChunk {
         vertices.clear();
         batches.clear();
         setUp = false;
-        triangles.clear();
+        setUpTriangles.clear();
         setupStats = {};
     }
 };

@@ -29,10 +29,7 @@ void BatchDrawer::draw(const BatchChunk& chunk) {
         for (const BatchEntry& entry : chunk.batches) draw(chunk.batch(entry));
         return;
     }
-    for (std::size_t i = 0; i < chunk.triangles.size(); ++i) {
-        tiles_.slot() = chunk.triangles[i];
-        tiles_.keep();
-    }
+    tiles_.queue(chunk.setUpTriangles);
     stats_ = stats_ + chunk.setupStats;
     paintersSort_ = chunk.batches.back().methods.hiddenSurface == HiddenSurface::PaintersSort;
 }

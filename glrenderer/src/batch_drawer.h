@@ -30,6 +30,10 @@ public:
     void flushTriangles() {
         if (tiles_.queued() > 0) flush();
     }
+    // Where chunks' triangles are set up ahead (BatchSetup::setUp(BatchChunk&, ...)).
+    TriangleArena& triangleArena() { return tiles_.arena(); }
+    // Once nothing is queued and every other writer of the arena is released.
+    void releaseTriangles() { tiles_.releaseTriangles(); }
     // Whether enough is queued for drawSomeTiles() to be worth it (never under the painter's
     // sort, which orders a tile's whole queue).
     bool worthDrawingTilesEarly() const { return !paintersSort_ && tiles_.queued() >= kEarlyTriangles; }

@@ -36,11 +36,31 @@ bool BatchSetup::handles(const BatchHeader& batch) {
            batch.state.polygonBack == PolygonMode::Fill;
 }
 
-bool BatchSetup::setUp(BatchChunk& chunk) {
+namespace {
+
+// Keeps triangles in the writer's slots and lists them, in order.
+class ListingTarget final : public TriangleTarget {
+public:
+    ListingTarget(ArenaWriter& writer, std::vector<const RasterTriangle*>& list) : writer_(writer), list_(list) {}
+    RasterTriangle& slot() override { return writer_.slot(); }
+    void keep() override {
+        writer_.keep();
+        list_.push_back(&writer_.last());
+    }
+
+private:
+    ArenaWriter& writer_;
+    std::vector<const RasterTriangle*>& list_;
+};
+
+}  // namespace
+
+bool BatchSetup::setUp(BatchChunk& chunk, ArenaWriter& writer) {
     for (const BatchEntry& entry : chunk.batches) {
         if (!handles(entry)) return false;
     }
-    for (const BatchEntry& entry : chunk.batches) setUp(chunk.batch(entry), chunk.triangles, chunk.setupStats);
+    ListingTarget listing(writer, chunk.setUpTriangles);
+    for (const BatchEntry& entry : chunk.batches) setUp(chunk.batch(entry), listing, chunk.setupStats);
     chunk.setUp = true;
     return true;
 }

@@ -6,7 +6,7 @@
 #include "batch.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
-#include "triangle_slots.h"
+#include "triangle_arena.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -29,9 +29,9 @@ public:
     static bool handles(const BatchHeader& batch);
     // The whole batch.
     void setUp(const Batch& batch, TriangleTarget& target, Stats& stats);
-    // Every batch of the chunk into its own triangles and counts, if it handles them all;
-    // returns whether it did.
-    bool setUp(BatchChunk& chunk);
+    // Every batch of the chunk, into `writer`'s slots listed in the chunk and the chunk's
+    // counts, if it handles them all; returns whether it did.
+    bool setUp(BatchChunk& chunk, ArenaWriter& writer);
 
     // The parts for the unfilled stage, which decomposes and clips the batch itself: window
     // positions and outcodes of its vertices (kept until the next batch), and the setup of one

@@ -4,7 +4,8 @@ namespace glrenderer {
 
 BatchThread::BatchThread(BatchDrawer& drawer, const Framebuffer& framebuffer,
                          std::vector<std::unique_ptr<BatchChunk>> chunks)
-    : drawer_(drawer), setup_(framebuffer, kChunkVertices), free_(std::move(chunks)) {
+    : drawer_(drawer), setup_(framebuffer, kChunkVertices), writer_(drawer.triangleArena()),
+      free_(std::move(chunks)) {
     posted_.reserve(free_.size() + 1);
     free_.reserve(free_.size() + 1);
     thread_ = std::thread([this] { run(); });
@@ -24,7 +25,7 @@ std::unique_ptr<BatchChunk> BatchThread::post(std::unique_ptr<BatchChunk> chunk)
     std::unique_lock lock(mutex_);
     if (free_.empty()) {  // the thread is behind: rather than wait, take some of its work
         lock.unlock();
-        setup_.setUp(*chunk);
+        setup_.setUp(*chunk, writer_);
         lock.lock();
     }
     posted_.push_back(std::move(chunk));
@@ -57,7 +58,7 @@ void BatchThread::setUpQueued(std::unique_lock<std::mutex>& lock) {
         if (chunk.setUp) continue;
         settingUp_ = &chunk;
         lock.unlock();
-        setup_.setUp(chunk);
+        setup_.setUp(chunk, writer_);
         lock.lock();
         settingUp_ = nullptr;
         setUp_.notify_one();

@@ -36,6 +36,8 @@ public:
     // while the thread draws the first; if the thread sleeps, the caller draws what is left
     // itself (waking the thread takes longer than a small frame's batches on a virtual machine).
     void wait();
+    // After wait() and the tiles' flush: the triangles set up here are no longer needed.
+    void releaseTriangles() { writer_.release(); }
 
 private:
     void run();
@@ -47,7 +49,8 @@ private:
     void setUpQueued(std::unique_lock<std::mutex>& lock);
 
     BatchDrawer& drawer_;
-    BatchSetup setup_;  // the poster's
+    BatchSetup setup_;    // the poster's
+    ArenaWriter writer_;  // the poster's, into the drawer's triangle arena
     std::mutex mutex_;
     std::condition_variable wake_, idle_, room_, setUp_;
     // Drawn first in, first out (a handful: erasing at the front is cheap and allocates nothing);

@@ -131,6 +131,9 @@ void Pipeline::drawSubmitted() {
     handOverChunk();
     if (thread_) thread_->wait();
     drawer_->flushTriangles();
+    // Nothing is queued now: the triangles' slots are free for what comes next.
+    if (thread_) thread_->releaseTriangles();
+    drawer_->releaseTriangles();
 }
 
 void Pipeline::finish() {

@@ -57,7 +57,7 @@ void TileRasterizer::refitTiles() {
     tilesX_ = (binnedWidth_ + kTileSize - 1) / kTileSize;
     tilesY_ = (binnedHeight_ + kTileSize - 1) / kTileSize;
     const auto tiles = static_cast<std::size_t>(tilesX_) * static_cast<std::size_t>(tilesY_);
-    triangles_.clear();  // queued for a framebuffer of another size
+    queued_ = 0;  // queued for a framebuffer of another size
     bins_.resize(tiles);
     for (auto& bin : bins_) bin.clear();
     binnedSinceFlush_.assign(tiles, 0);
@@ -65,12 +65,22 @@ void TileRasterizer::refitTiles() {
     holdsClear_.assign(tiles, 0);
 }
 
-void TileRasterizer::bin(std::size_t index) {
-    const RasterTriangle& triangle = triangles_[index];
+void TileRasterizer::queue(std::span<const RasterTriangle* const> triangles) {
+    fitTilesToFramebuffer();
+    for (const RasterTriangle* triangle : triangles) bin(*triangle);
+}
+
+void TileRasterizer::releaseTriangles() {
+    writer_.release();
+    arena_.reset();
+}
+
+void TileRasterizer::bin(const RasterTriangle& triangle) {
+    ++queued_;
     for (int ty = triangle.minY / kTileSize; ty <= triangle.maxY / kTileSize; ++ty) {
         for (int tx = triangle.minX / kTileSize; tx <= triangle.maxX / kTileSize; ++tx) {
             const auto tile = static_cast<std::size_t>(ty * tilesX_ + tx);
-            bins_[tile].push_back(static_cast<std::uint32_t>(index));
+            bins_[tile].push_back(&triangle);
             ++binnedSinceFlush_[tile];
         }
     }
@@ -116,10 +126,10 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     const int ty = static_cast<int>(tile / static_cast<std::size_t>(tilesX_));
     const PixelRect rect{tx * kTileSize, std::min((tx + 1) * kTileSize, binnedWidth_) - 1,
                          ty * kTileSize, std::min((ty + 1) * kTileSize, binnedHeight_) - 1};
-    std::vector<std::uint32_t>& bin = bins_[tile];
+    std::vector<const RasterTriangle*>& bin = bins_[tile];
     if (paintersSort) {
-        std::stable_sort(bin.begin(), bin.end(), [this](std::uint32_t a, std::uint32_t b) {
-            return triangles_[a].meanDepth > triangles_[b].meanDepth;
+        std::stable_sort(bin.begin(), bin.end(), [](const RasterTriangle* a, const RasterTriangle* b) {
+            return a->meanDepth > b->meanDepth;
         });
     }
     if (clearPending_[tile]) {
@@ -131,8 +141,8 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     // ahead while drawing the current one.
     constexpr std::size_t kPrefetchAhead = 4;
     for (std::size_t i = 0; i < bin.size(); ++i) {
-        if (i + kPrefetchAhead < bin.size()) prefetch(triangles_[bin[i + kPrefetchAhead]]);
-        rasterizeWithMethod(triangles_[bin[i]], rect, framebuffer_, counts, kernels_);
+        if (i + kPrefetchAhead < bin.size()) prefetch(*bin[i + kPrefetchAhead]);
+        rasterizeWithMethod(*bin[i], rect, framebuffer_, counts, kernels_);
     }
     bin.clear();
 }
@@ -146,22 +156,20 @@ void TileRasterizer::addCounts(Stats& stats, const FragmentCounts& counts) {
 void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     fitTilesToFramebuffer();
     const bool clearing = clear_.color || clear_.depth;
-    if (triangles_.size() == 0 && !clearing) return;
+    if (queued_ == 0 && !clearing) return;
     startDrawingTiles();
     for (ThreadCounts& c : threadCounts_) c.counts = {};
     auto drawAny = [&](std::size_t tile, unsigned thread) { drawTile(tile, threadCounts_[thread].counts, paintersSort); };
     const std::size_t pixels = static_cast<std::size_t>(binnedWidth_) * static_cast<std::size_t>(binnedHeight_);
-    if (triangles_.size() < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
+    if (queued_ < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawAny(tile, 0);
     } else {
         pool_.run(bins_.size(), drawAny);
     }
     for (const ThreadCounts& c : threadCounts_) addCounts(stats, c.counts);
-    triangles_.clear();
+    queued_ = 0;
     clear_ = {};
     // Steady state allocates nothing even if the next frame draws fewer tiles early.
-    triangles_.reserve(queuedSinceFlush_);
-    queuedSinceFlush_ = 0;
     for (std::size_t tile = 0; tile < bins_.size(); ++tile) {
         bins_[tile].reserve(binnedSinceFlush_[tile]);
         binnedSinceFlush_[tile] = 0;

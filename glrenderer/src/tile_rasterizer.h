@@ -1,12 +1,13 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
 #include "raster_span.h"
-#include "triangle_slots.h"
+#include "triangle_arena.h"
 #include "worker_pool.h"
 
 namespace glrenderer {
@@ -22,13 +23,19 @@ public:
     // A triangle is prepared in slot() and queued by keep(), binned into the tiles it may cover.
     RasterTriangle& slot() override {
         fitTilesToFramebuffer();
-        return triangles_.slot();
+        return writer_.slot();
     }
     void keep() override {
-        triangles_.keep();
-        ++queuedSinceFlush_;
-        bin(triangles_.size() - 1);
+        writer_.keep();
+        bin(writer_.last());
     }
+    // Queues triangles set up elsewhere in arena() slots, in order.
+    void queue(std::span<const RasterTriangle* const> triangles);
+    // Where triangles are set up for queue(). Its slots stay taken until releaseTriangles().
+    TriangleArena& arena() { return arena_; }
+    // Once everything queued is drawn and every other writer of the arena released: the
+    // arena's slots are free for what comes next.
+    void releaseTriangles();
     // Clears the buffers before the tiles are next drawn, each tile just before its triangles
     // while it is in cache, instead of one pass over the whole framebuffer now. A tile that still
     // holds the same clear values (nothing drawn there since) is not written again.
@@ -52,10 +59,10 @@ public:
             if (stop()) return addCounts(stats, counts);
             if (!bins_[tile].empty()) drawTile(tile, counts, false);
         }
-        triangles_.clear();  // every bin is empty
+        queued_ = 0;  // every bin is empty
         addCounts(stats, counts);
     }
-    std::size_t queued() const { return triangles_.size(); }
+    std::size_t queued() const { return queued_; }
 
 private:
     static constexpr int kTileSize = 64;
@@ -63,7 +70,7 @@ private:
         if (binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) refitTiles();
     }
     void refitTiles();
-    void bin(std::size_t index);
+    void bin(const RasterTriangle& triangle);
     // Clears the tile if a clear is pending for it, draws its queued triangles, empties its bin.
     void drawTile(std::size_t tile, FragmentCounts& counts, bool paintersSort);
     // Before tiles are drawn: which tiles hold the pending clear's values already.
@@ -96,11 +103,12 @@ private:
     std::vector<std::uint8_t> holdsClear_;
     std::uint32_t heldRgba_ = 0, heldDepth24_ = 0;
     std::uint64_t heldGeneration_ = 0;
-    TriangleSlots triangles_;
-    std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into triangles_
-    // Triangles queued since the last flush, in all and per tile: what the queue and each bin
-    // may have to hold next time, however much of it is drawn early (which depends on timing).
-    std::size_t queuedSinceFlush_ = 0;
+    TriangleArena arena_;
+    ArenaWriter writer_{arena_};  // for slot() and keep()
+    std::size_t queued_ = 0;      // binned and not drawn yet
+    std::vector<std::vector<const RasterTriangle*>> bins_;  // per tile, in submission order
+    // Per tile, triangles binned since the last flush: what its bin may have to hold next time,
+    // however much of it is drawn early (which depends on timing).
     std::vector<std::uint32_t> binnedSinceFlush_;
     int tilesX_ = 0, tilesY_ = 0;
     int binnedWidth_ = 0, binnedHeight_ = 0;

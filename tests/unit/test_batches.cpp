@@ -125,9 +125,10 @@ Drawn drawChunk(glrenderer::BatchChunk chunk, bool setUpFirst) {
     glrenderer::Framebuffer framebuffer(40, 30);
     glrenderer::BatchDrawer drawer(framebuffer);
     drawer.clearAtFlush(true, 0, true, glrenderer::kDepthMax24);
+    glrenderer::ArenaWriter writer(drawer.triangleArena());
     if (setUpFirst) {
         glrenderer::BatchSetup setup(framebuffer, 0);
-        EXPECT_TRUE(setup.setUp(chunk));
+        EXPECT_TRUE(setup.setUp(chunk, writer));
         EXPECT_TRUE(chunk.setUp);
     }
     drawer.draw(chunk);
@@ -165,11 +166,13 @@ TEST(Batches, ChunkWithLinesIsNotSetUpAhead) {
     glrenderer::BatchChunk chunk = mixedTriangleChunk();
     chunk.batches[5].mode = PrimitiveMode::Lines;
     glrenderer::Framebuffer framebuffer(40, 30);
+    glrenderer::TriangleArena arena;
+    glrenderer::ArenaWriter writer(arena);
     glrenderer::BatchSetup setup(framebuffer, 0);
-    EXPECT_FALSE(setup.setUp(chunk));
+    EXPECT_FALSE(setup.setUp(chunk, writer));
     EXPECT_FALSE(chunk.setUp);
-    EXPECT_EQ(chunk.triangles.size(), 0u);
+    EXPECT_TRUE(chunk.setUpTriangles.empty());
     chunk = mixedTriangleChunk();
     chunk.batches[2].state.polygonBack = glrenderer::PolygonMode::Line;
-    EXPECT_FALSE(setup.setUp(chunk));
+    EXPECT_FALSE(setup.setUp(chunk, writer));
 }

@@ -1,0 +1,79 @@
+#pragma once
+#include <cstddef>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "raster_triangle.h"
+
+namespace glrenderer {
+
+// Where set-up triangles go: a slot to prepare the next one in place, and keep() if it is to be
+// drawn (an unkept slot is offered again).
+class TriangleTarget {
+public:
+    virtual RasterTriangle& slot() = 0;
+    virtual void keep() = 0;
+
+protected:
+    ~TriangleTarget() = default;
+};
+
+// The slots of the triangles queued for the tiles: blocks that never move (the tile bins point
+// into them), taken by whichever thread sets triangles up, and all given back at once when
+// everything queued is drawn. Slots are reused: preparing a triangle writes what its state
+// reads over whatever the slot held (clearing 200 bytes first was a tenth of a dense mesh's
+// setup), and steady state allocates nothing.
+class TriangleArena {
+public:
+    static constexpr std::size_t kBlockTriangles = 4096;
+
+    // A block of kBlockTriangles slots, the taker's until reset(); any thread.
+    RasterTriangle* takeBlock();
+    // A writer is done until the reset: it kept `triangles` in its blocks.
+    void writerDone(std::size_t triangles);
+    // Every block is free again: nothing may point into them any more. Keeps enough blocks for
+    // as many triangles however two writers share them (each may leave a block part full), so
+    // that doing the same again allocates nothing whatever the timing.
+    void reset();
+
+private:
+    std::mutex mutex_;
+    std::vector<std::unique_ptr<RasterTriangle[]>> blocks_;
+    std::size_t taken_ = 0;
+    std::size_t kept_ = 0;  // triangles, reported by the writers done
+};
+
+// Fills arena blocks one slot after the other, for one thread.
+class ArenaWriter final : public TriangleTarget {
+public:
+    explicit ArenaWriter(TriangleArena& arena) : arena_(arena) {}
+
+    RasterTriangle& slot() override {
+        if (used_ == TriangleArena::kBlockTriangles) {
+            block_ = arena_.takeBlock();
+            used_ = 0;
+        }
+        return block_[used_];
+    }
+    void keep() override {
+        ++used_;
+        ++kept_;
+    }
+    const RasterTriangle& last() const { return block_[used_ - 1]; }
+    // Before the arena's reset(): its block is no longer this writer's.
+    void release() {
+        arena_.writerDone(kept_);
+        block_ = nullptr;
+        used_ = TriangleArena::kBlockTriangles;
+        kept_ = 0;
+    }
+
+private:
+    TriangleArena& arena_;
+    RasterTriangle* block_ = nullptr;
+    std::size_t used_ = TriangleArena::kBlockTriangles;
+    std::size_t kept_ = 0;  // since the last release
+};
+
+}  // namespace glrenderer
