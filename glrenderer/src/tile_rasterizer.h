@@ -44,7 +44,7 @@ public:
     // known to hold its clear values.
     void forgetClearedTiles() { std::fill(holdsClear_.begin(), holdsClear_.end(), std::uint8_t{0}); }
     // Draws everything queued and every pending clear; adds fragment counts to stats. The
-    // framebuffer must keep its size between add() and flush(); if it changed, the queued
+    // framebuffer must keep its size between queuing and flush(); if it changed, the queued
     // triangles are dropped. With paintersSort each tile draws its triangles far to near by
     // mean depth instead of in order.
     void flush(Stats& stats, bool paintersSort = false);
