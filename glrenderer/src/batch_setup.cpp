@@ -29,15 +29,6 @@ bool isCulled(const DrawState& state, Facing facing) {
     return false;
 }
 
-}  // namespace
-
-bool BatchSetup::handles(const BatchHeader& batch) {
-    return isTriangleMode(batch.mode) && batch.state.polygonFront == PolygonMode::Fill &&
-           batch.state.polygonBack == PolygonMode::Fill;
-}
-
-namespace {
-
 // Keeps triangles in the writer's slots and lists them, in order.
 class ListingTarget final : public TriangleTarget {
 public:
@@ -54,6 +45,11 @@ private:
 };
 
 }  // namespace
+
+bool BatchSetup::handles(const BatchHeader& batch) {
+    return isTriangleMode(batch.mode) && batch.state.polygonFront == PolygonMode::Fill &&
+           batch.state.polygonBack == PolygonMode::Fill;
+}
 
 bool BatchSetup::setUp(BatchChunk& chunk, ArenaWriter& writer) {
     for (const BatchEntry& entry : chunk.batches) {

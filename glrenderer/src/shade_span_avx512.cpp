@@ -1,7 +1,8 @@
-// The span shader for CPUs with AVX-512F, 16 pixels per step. Compiled with -mavx512f -mfma and
-// called only after cpuHasAvx512(). Each lane performs the scalar kernel's operations in the
-// same order, so the bits match shadeSpanScalar (and the AVX2 shader) exactly; what changes is
-// the width and the mask registers, which make the partial blocks as cheap as whole ones.
+// The shaders for CPUs with AVX-512F, 16 pixels per step: spans, and 2D blocks for narrow
+// triangles. Compiled with -mavx512f -mfma and called only after cpuHasAvx512(). Each lane
+// performs the scalar kernel's operations in the same order, so the bits match shadeSpanScalar
+// (and the AVX2 shader) exactly; what changes is the width and the mask registers, which make
+// the partial blocks as cheap as whole ones.
 #include <immintrin.h>
 
 #include <bit>
@@ -48,7 +49,6 @@ __mmask16 depthPassMask(CompareFunc func, __mmask16 active, __m512i incoming, __
     }
     return 0;
 }
-
 
 // A triangle's planes and flat color broadcast to the 16 lanes, and what every shader computes
 // from them for a block of pixels at (x, y).
