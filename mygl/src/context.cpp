@@ -7,8 +7,6 @@
 namespace mygl {
 namespace {
 
-thread_local Context* currentContext = nullptr;
-
 void requireValidSize(int width, int height) {
     if (width < 1 || height < 1 || width > Context::kMaxSize || height > Context::kMaxSize) {
         throw std::invalid_argument("MyGL context size must be between 1 and " +
@@ -18,7 +16,7 @@ void requireValidSize(int width, int height) {
 
 }  // namespace
 
-Context::State* currentState() { return currentContext ? &currentContext->state() : nullptr; }
+constinit thread_local Context* currentContext = nullptr;
 
 void setError(Context::State& state, GLenum error) {
     if (state.error == GL_NO_ERROR) state.error = error;

@@ -75,8 +75,10 @@ struct Context::State {
     }
 };
 
-// The context that receives gl* calls on this thread, or nullptr.
-Context::State* currentState();
+// The context that receives gl* calls on this thread, or nullptr. Inline: every glVertex and
+// glColor asks for it.
+extern constinit thread_local Context* currentContext;
+inline Context::State* currentState() { return currentContext ? &currentContext->state() : nullptr; }
 
 // Records `error` unless one is pending (the first error wins until glGetError reads it).
 void setError(Context::State& state, GLenum error);
