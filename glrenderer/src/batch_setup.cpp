@@ -5,6 +5,7 @@
 #include "clip.h"
 #include "decompose.h"
 #include "seed_culling.h"
+#include "vertex_stage.h"
 
 namespace glrenderer {
 namespace {
@@ -66,13 +67,7 @@ std::uint8_t BatchSetup::transform(const Batch& batch) {
     const std::size_t count = batch.vertices.size();
     outcodes_.resize(count);
     windowVertices_.resize(count);
-    std::uint8_t anyOutside = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        outcodes_[i] = clipOutcode(batch.vertices[i].position);
-        anyOutside |= outcodes_[i];
-        windowVertices_[i] = viewport.apply(batch.vertices[i]);
-    }
-    return anyOutside;
+    return transformVertices(batch.vertices, viewport, outcodes_.data(), windowVertices_.data());
 }
 
 void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats) {

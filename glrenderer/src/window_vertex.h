@@ -27,6 +27,13 @@ public:
     // reference's clipper computes it.
     WindowVertex applyToClipped(const Vertex& vertex) const;
 
+    float scaleX() const { return scaleX_; }
+    float scaleY() const { return scaleY_; }
+    float scaleZ() const { return scaleZ_; }
+    float translateX() const { return translateX_; }
+    float translateY() const { return translateY_; }
+    float translateZ() const { return translateZ_; }
+
 private:
     float scaleX_, scaleY_, scaleZ_;
     float translateX_, translateY_, translateZ_;

@@ -1,0 +1,45 @@
+// The vertex stage for CPUs with FMA, compiled with -mfma -msse4.1 and called only after
+// cpuHasFma(). Each lane performs clipOutcode's and ViewportTransform::apply's float operations
+// in the same order, so the bits match theirs.
+#include <immintrin.h>
+
+#include "vertex_stage.h"
+
+namespace glrenderer {
+namespace {
+
+// clipOutcode's plane bits from the lanes (x, y, z) of w - p and of p + w that are outside
+// (not >= 0, so NaN is outside): planes 0, 2, 5 are w - x, w - y, w - z; 1, 3, 4 are x + w,
+// y + w, z + w.
+std::uint8_t outcodeFromLanes(int outsideMinus, int outsidePlus) {
+    const int minus = (outsideMinus & 1) | (outsideMinus & 2) << 1 | (outsideMinus & 4) << 3;
+    const int plus = (outsidePlus & 1) << 1 | (outsidePlus & 2) << 2 | (outsidePlus & 4) << 2;
+    return static_cast<std::uint8_t>(minus | plus);
+}
+
+}  // namespace
+
+std::uint8_t transformVerticesFma(std::span<const Vertex> vertices, const ViewportTransform& viewport,
+                                  std::uint8_t* outcodes, WindowVertex* windowVertices) {
+    const __m128 scale = _mm_setr_ps(viewport.scaleX(), viewport.scaleY(), viewport.scaleZ(), 0.0f);
+    const __m128 translate = _mm_setr_ps(viewport.translateX(), viewport.translateY(), viewport.translateZ(), 0.0f);
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+    std::uint8_t anyOutside = 0;
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const __m128 p = _mm_loadu_ps(&vertices[i].position.x);
+        const __m128 w = _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 3, 3, 3));
+        const int outsideMinus = ~_mm_movemask_ps(_mm_cmpge_ps(_mm_sub_ps(w, p), zero)) & 7;
+        const int outsidePlus = ~_mm_movemask_ps(_mm_cmpge_ps(_mm_add_ps(p, w), zero)) & 7;
+        outcodes[i] = outcodeFromLanes(outsideMinus, outsidePlus);
+        anyOutside |= outcodes[i];
+
+        const __m128 invW = _mm_div_ps(one, w);
+        const __m128 window = _mm_fmadd_ps(_mm_mul_ps(p, invW), scale, translate);
+        WindowVertex& out = windowVertices[i];
+        _mm_storeu_ps(&out.x, _mm_blend_ps(window, invW, 0b1000));  // x, y, z, invW
+        _mm_storeu_ps(&out.color.x, _mm_loadu_ps(&vertices[i].color.x));
+    }
+    return anyOutside;
+}
+
+}  // namespace glrenderer

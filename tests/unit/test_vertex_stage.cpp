@@ -1,0 +1,68 @@
+// The vertex stage's FMA version against the scalar operations it reproduces (clipOutcode and
+// ViewportTransform::apply): the same outcodes and window vertices bit for bit, on ordinary
+// vertices and on the ones that break things (w = 0, negative w, NaN, infinities, huge values).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "clip.h"
+#include "vertex_stage.h"
+
+using namespace glrenderer;
+
+namespace {
+
+// Equal bits, or both NaN (a NaN's payload is not part of the contract).
+bool sameFloat(float a, float b) {
+    return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b) || (std::isnan(a) && std::isnan(b));
+}
+
+std::vector<Vertex> testVertices() {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float special[] = {0.0f, -0.0f, 1.0f, -1.0f, 1e-30f, -1e-30f, 1e30f, -1e30f, inf, -inf, nan, 0.5f, 3.0f};
+    std::vector<Vertex> vertices;
+    std::mt19937 random(11);
+    std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f), w(-1.0f, 4.0f);
+    std::uniform_int_distribution<std::size_t> pick(0, std::size(special) - 1);
+    for (int i = 0; i < 4000; ++i) {
+        Vertex v;
+        v.position = {coordinate(random), coordinate(random), coordinate(random), w(random)};
+        if (i % 4 == 0) v.position[i / 4 % 4] = special[pick(random)];  // one special coordinate
+        if (i % 16 == 1) v.position = {special[pick(random)], special[pick(random)], special[pick(random)], special[pick(random)]};
+        v.color = {coordinate(random), 0.25f, i % 7 == 0 ? nan : 0.5f, 1.0f};
+        vertices.push_back(v);
+    }
+    return vertices;
+}
+
+}  // namespace
+
+TEST(VertexStage, FmaVersionMatchesTheScalarOperationsBitForBit) {
+    if (!cpuHasFma()) GTEST_SKIP() << "this CPU has no FMA";
+    const std::vector<Vertex> vertices = testVertices();
+    DrawState state;
+    state.viewport = {13, -7, 641, 479};
+    state.depthNear = 0.25f;
+    state.depthFar = 0.75f;
+    const ViewportTransform viewport(state, 500);
+    std::vector<std::uint8_t> outcodes(vertices.size());
+    std::vector<WindowVertex> window(vertices.size());
+    const std::uint8_t anyOutside = transformVerticesFma(vertices, viewport, outcodes.data(), window.data());
+    std::uint8_t expectedAnyOutside = 0;
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const std::uint8_t outcode = clipOutcode(vertices[i].position);
+        const WindowVertex expected = viewport.apply(vertices[i]);
+        expectedAnyOutside |= outcode;
+        ASSERT_EQ(outcodes[i], outcode) << "vertex " << i;
+        const float got[] = {window[i].x, window[i].y, window[i].z, window[i].invW, window[i].color.r, window[i].color.b};
+        const float want[] = {expected.x, expected.y, expected.z, expected.invW, expected.color.r, expected.color.b};
+        for (std::size_t k = 0; k < std::size(got); ++k) {
+            ASSERT_TRUE(sameFloat(got[k], want[k])) << "vertex " << i << " component " << k << ": " << got[k] << " vs " << want[k];
+        }
+    }
+    EXPECT_EQ(anyOutside, expectedAnyOutside);
+}
