@@ -158,20 +158,23 @@ bool shadeNarrowTriangleAvx512(const RasterTriangle& t, const PixelRect& area, F
     const int width = area.maxX - area.minX + 1;
     if (width > 16) return false;
     const unsigned columns = std::bit_ceil(static_cast<unsigned>(width));
-    const int blockRows = static_cast<int>(16 / columns);
+    const int columnBits = std::countr_zero(columns);
+    const int blockRows = 16 >> columnBits;
     // Edge values in 32-bit lanes: they hold every value of every block when the steps and the
     // values at the area's corners (the extremes of a linear function) are this small, as for
     // any triangle this narrow that is not also huge.
     constexpr std::int64_t kStepLimit = std::int64_t{1} << 25, kValueLimit = std::int64_t{1} << 29;
+    const int height = area.maxY - area.minY + 1;  // at most a tile's
     for (const EdgeFunction& edge : t.edges) {
         if (std::abs(edge.stepX) >= kStepLimit || std::abs(edge.stepY) >= kStepLimit) return false;
-        for (const auto& [x, y] : {std::pair{area.minX, area.minY}, std::pair{area.maxX, area.minY},
-                                  std::pair{area.minX, area.maxY}, std::pair{area.maxX, area.maxY}}) {
-            if (std::abs(edge.at(x, y)) >= kValueLimit) return false;
+        const std::int64_t corner = edge.at(area.minX, area.minY);
+        const std::int64_t acrossX = edge.stepX * (width - 1), acrossY = edge.stepY * (height - 1);
+        for (const std::int64_t value : {corner, corner + acrossX, corner + acrossY, corner + acrossX + acrossY}) {
+            if (std::abs(value) >= kValueLimit) return false;
         }
     }
     const __m512i dx = _mm512_and_epi32(laneIndex(), _mm512_set1_epi32(static_cast<int>(columns - 1)));
-    const __m512i dy = _mm512_srl_epi32(laneIndex(), _mm_cvtsi32_si128(std::countr_zero(columns)));
+    const __m512i dy = _mm512_srl_epi32(laneIndex(), _mm_cvtsi32_si128(columnBits));
     const __m512 x = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(area.minX), dx));
     const __mmask16 inColumns = _mm512_cmplt_epi32_mask(dx, _mm512_set1_epi32(width));
     const __m512i laneOffsets = _mm512_sub_epi32(dx, _mm512_mullo_epi32(dy, _mm512_set1_epi32(fb.width())));
