@@ -65,7 +65,8 @@ public:
     std::size_t queued() const { return queued_; }
 
 private:
-    static constexpr int kTileSize = 64;
+    // Tiles are 2^tileShift_ pixels square, chosen per framebuffer size in refitTiles().
+    int tileSize() const { return 1 << tileShift_; }
     void fitTilesToFramebuffer() {
         if (binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) refitTiles();
     }
@@ -110,6 +111,7 @@ private:
     // Per tile, triangles binned since the last flush: what its bin may have to hold next time,
     // however much of it is drawn early (which depends on timing).
     std::vector<std::uint32_t> binnedSinceFlush_;
+    int tileShift_ = 7;
     int tilesX_ = 0, tilesY_ = 0;
     int binnedWidth_ = 0, binnedHeight_ = 0;
 };
