@@ -45,10 +45,12 @@ void shadeSpanScalar(const RasterTriangle& t, int row, int begin, int end, Frame
             if (t.state.depthWrite) depth[px] = z;
         }
         ++passed;
-        if (t.state.smooth) {
+        if (t.state.smooth && t.state.perspective) {
             const float w = 1.0f / t.invW.at(x, y);
             color[px] = fragmentRgba8({t.color[0].at(x, y) * w, t.color[1].at(x, y) * w,
                                        t.color[2].at(x, y) * w, t.color[3].at(x, y) * w});
+        } else if (t.state.smooth) {
+            color[px] = fragmentRgba8({t.color[0].at(x, y), t.color[1].at(x, y), t.color[2].at(x, y), t.color[3].at(x, y)});
         } else {
             color[px] = t.flatColor;
         }

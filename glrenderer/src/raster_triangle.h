@@ -39,6 +39,11 @@ struct FragmentState {
     CompareFunc depthFunc = CompareFunc::Less;
     bool depthWrite = true;
     bool smooth = true;
+    // The color planes hold color / w and need the interpolated 1 / w to divide by. False when
+    // 1 / w is the constant 1 (every vertex has w = 1, as orthographic scenes do, or the
+    // screen-linear interpolation): the division is by one and changes no bit, so the fast
+    // kernels skip it (the per-pixel kernel, the reference for them, always divides).
+    bool perspective = true;
 };
 
 // Everything the kernel needs, computed once per triangle so that any tile can draw its part.

@@ -85,12 +85,16 @@ void shadeSpanAvx2(const RasterTriangle& t, int row, int begin, int end, Framebu
         passed += static_cast<unsigned>(std::popcount(lanes));
         __m256i rgba = flatColor;
         if (t.state.smooth) {
-            const __m256 w = _mm256_div_ps(_mm256_set1_ps(1.0f), invW.at(x, y));
+            __m256 red = r.at(x, y), green = g.at(x, y), blue = b.at(x, y), alpha = a.at(x, y);
+            if (t.state.perspective) {
+                const __m256 w = _mm256_div_ps(_mm256_set1_ps(1.0f), invW.at(x, y));
+                red = _mm256_mul_ps(red, w), green = _mm256_mul_ps(green, w);
+                blue = _mm256_mul_ps(blue, w), alpha = _mm256_mul_ps(alpha, w);
+            }
             rgba = _mm256_or_si256(
-                _mm256_or_si256(fragmentToUnorm8(_mm256_mul_ps(r.at(x, y), w)),
-                                _mm256_slli_epi32(fragmentToUnorm8(_mm256_mul_ps(g.at(x, y), w)), 8)),
-                _mm256_or_si256(_mm256_slli_epi32(fragmentToUnorm8(_mm256_mul_ps(b.at(x, y), w)), 16),
-                                _mm256_slli_epi32(fragmentToUnorm8(_mm256_mul_ps(a.at(x, y), w)), 24)));
+                _mm256_or_si256(fragmentToUnorm8(red), _mm256_slli_epi32(fragmentToUnorm8(green), 8)),
+                _mm256_or_si256(_mm256_slli_epi32(fragmentToUnorm8(blue), 16),
+                                _mm256_slli_epi32(fragmentToUnorm8(alpha), 24)));
         }
         if (lanes == 0xFF) _mm256_storeu_si256(colorBlock, rgba);
         else if (whole) _mm256_storeu_si256(colorBlock, _mm256_blendv_epi8(_mm256_loadu_si256(colorBlock), rgba, mask));

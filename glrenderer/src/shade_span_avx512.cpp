@@ -61,12 +61,15 @@ public:
 
     __m512i rgba(__m512 x, __m512 y) const {
         if (!t_.state.smooth) return _mm512_set1_epi32(static_cast<int>(t_.flatColor));
-        const __m512 w = _mm512_div_ps(_mm512_set1_ps(1.0f), invW_.at(x, y));
+        __m512 red = r_.at(x, y), green = g_.at(x, y), blue = b_.at(x, y), alpha = a_.at(x, y);
+        if (t_.state.perspective) {
+            const __m512 w = _mm512_div_ps(_mm512_set1_ps(1.0f), invW_.at(x, y));
+            red = _mm512_mul_ps(red, w), green = _mm512_mul_ps(green, w);
+            blue = _mm512_mul_ps(blue, w), alpha = _mm512_mul_ps(alpha, w);
+        }
         return _mm512_or_si512(
-            _mm512_or_si512(fragmentToUnorm8(_mm512_mul_ps(r_.at(x, y), w)),
-                            _mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(g_.at(x, y), w)), 8)),
-            _mm512_or_si512(_mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(b_.at(x, y), w)), 16),
-                            _mm512_slli_epi32(fragmentToUnorm8(_mm512_mul_ps(a_.at(x, y), w)), 24)));
+            _mm512_or_si512(fragmentToUnorm8(red), _mm512_slli_epi32(fragmentToUnorm8(green), 8)),
+            _mm512_or_si512(_mm512_slli_epi32(fragmentToUnorm8(blue), 16), _mm512_slli_epi32(fragmentToUnorm8(alpha), 24)));
     }
 
 private:
