@@ -1,8 +1,8 @@
 // mygl-bench: time per frame against pixels differing from OSMesa llvmpipe, for every MyGL
 // method and the reference renderers, on the benchmark scenes. Writes a CSV, a markdown table
-// and (through plot_bench.py) a chart. In-process variants alternate frame by frame; OSMesa
-// variants that need their own environment (one llvmpipe thread, softpipe) run in a child
-// process of this program.
+// and (through plot_bench.py) a chart. In-process variants alternate frame by frame; variants
+// that need their own environment (one llvmpipe thread, softpipe, MyGL with AVX2 kernels only)
+// run in a child process of this program.
 #include <glad/gl.h>
 #include <reference/compare.h>
 #include <reference/osmesa_context.h>
@@ -32,7 +32,7 @@ struct Variant {
     std::string name;
     bool isReference;
     glrenderer::Methods methods;  // MyGL variants
-    std::string environment;      // child-process OSMesa variants: "NAME=value", empty = in-process
+    std::string environment;      // child-process variants: "NAME=value", empty = in-process
 };
 
 std::vector<Variant> variants() {
@@ -47,6 +47,8 @@ std::vector<Variant> variants() {
         {"osmesa llvmpipe", true, {}, ""},
         {"osmesa llvmpipe 1 thread", true, {}, "LP_NUM_THREADS=1"},
         {"osmesa softpipe", true, {}, "GALLIUM_DRIVER=softpipe"},
+        // How a CPU without AVX-512 runs the exact method (the same pixels).
+        {"mygl exact avx2", false, {RasterMethod::Exact, Interpolation::PerspectiveCorrect}, "MYGL_KERNELS=avx2"},
     };
 }
 
@@ -89,11 +91,13 @@ private:
     std::unique_ptr<reference::OsmesaContext> osmesa_;
 };
 
-// Child mode: time one OSMesa variant (its environment already set) and print the times.
-int runWorker(const std::string& sceneName, int width, int height, int repetitions, const std::string& framePath) {
+// Child mode: time one variant in its environment (already set), with the default methods if
+// it is MyGL, and print the times.
+int runWorker(const std::string& backend, const std::string& sceneName, int width, int height, int repetitions,
+              const std::string& framePath) {
     const scenes::Scene* scene = scenes::findScene(sceneName);
-    if (!scene) return 2;
-    Target target(Variant{"", true, {}, ""}, width, height);
+    if (!scene || (backend != "osmesa" && backend != "mygl")) return 2;
+    Target target(Variant{"", backend == "osmesa", {}, ""}, width, height);
     target.drawFrame(*scene, width, height);  // warm-up: shader compilation
     for (int i = 0; i < repetitions; ++i) std::printf("%f\n", target.drawFrame(*scene, width, height));
     reference::writePng(framePath, target.frame(width, height));
@@ -104,7 +108,8 @@ Timing runInChild(const char* self, const Variant& v, const std::string& scene, 
     // One file per process: benchmark runs may overlap (tests run in parallel).
     const std::string framePath =
         (std::filesystem::temp_directory_path() / ("mygl-bench-frame-" + std::to_string(getpid()) + ".png")).string();
-    const std::string command = "env " + v.environment + " '" + std::string(self) + "' --worker " + scene + " " +
+    const std::string backend = v.isReference ? "osmesa" : "mygl";
+    const std::string command = "env " + v.environment + " '" + std::string(self) + "' --worker " + backend + " " + scene + " " +
                                 std::to_string(width) + " " + std::to_string(height) + " " +
                                 std::to_string(repetitions) + " '" + framePath + "'";
     Timing timing;
@@ -138,8 +143,8 @@ void keepFreedMemory() {
 
 int main(int argc, char** argv) {
     keepFreedMemory();
-    if (argc == 7 && std::string(argv[1]) == "--worker")
-        return runWorker(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5]), argv[6]);
+    if (argc == 8 && std::string(argv[1]) == "--worker")
+        return runWorker(argv[2], argv[3], std::atoi(argv[4]), std::atoi(argv[5]), std::atoi(argv[6]), argv[7]);
     bool quick = false;
     std::string out = "bench";
     for (int i = 1; i < argc; ++i) {

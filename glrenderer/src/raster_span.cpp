@@ -1,7 +1,9 @@
 #include "raster_span.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <limits>
+#include <string_view>
 
 #include "depth_test.h"
 #include "glrenderer/color_convert.h"
@@ -105,8 +107,12 @@ bool cpuHasAvx512() {
 }
 
 ExactKernels bestExactKernels() {
-    if (cpuHasAvx512()) return {shadeSpanAvx512, shadeNarrowTriangleAvx512};
-    if (cpuHasAvx2Fma()) return {shadeSpanAvx2, nullptr};
+    // MYGL_KERNELS=avx2 or scalar caps the choice, to see how a CPU without AVX-512 (or AVX2)
+    // would run: the pixels are the same.
+    const char* cap = std::getenv("MYGL_KERNELS");
+    const std::string_view limit = cap ? cap : "";
+    if (cpuHasAvx512() && limit != "avx2" && limit != "scalar") return {shadeSpanAvx512, shadeNarrowTriangleAvx512};
+    if (cpuHasAvx2Fma() && limit != "scalar") return {shadeSpanAvx2, nullptr};
     return {};
 }
 
