@@ -5,6 +5,7 @@
 #include <limits>
 #include <string_view>
 
+#include "cpu_features.h"
 #include "depth_test.h"
 #include "glrenderer/color_convert.h"
 
@@ -86,24 +87,6 @@ void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Fram
         const Span span = coveredWhole ? Span{minX, maxX} : coveredSpan(t, row, minX, maxX);
         if (span.begin <= span.end) kernels.span(t, row, span.begin, span.end, fb, counts);
     }
-}
-
-bool cpuHasAvx2Fma() {
-#if defined(__x86_64__) || defined(__i386__)
-    static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    return has;
-#else
-    return false;
-#endif
-}
-
-bool cpuHasAvx512() {
-#if defined(__x86_64__) || defined(__i386__)
-    static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma");
-    return has;
-#else
-    return false;
-#endif
 }
 
 ExactKernels bestExactKernels() {

@@ -15,14 +15,12 @@ using SpanShader = void (*)(const RasterTriangle& triangle, int row, int begin, 
                             Framebuffer& framebuffer, FragmentCounts& counts);
 void shadeSpanScalar(const RasterTriangle& triangle, int row, int begin, int end,
                      Framebuffer& framebuffer, FragmentCounts& counts);
-// 8 pixels at a time with AVX2 and FMA; only on CPUs that have both.
+// 8 pixels at a time with AVX2 and FMA; only on CPUs that have both (cpuHasAvx2Fma()).
 void shadeSpanAvx2(const RasterTriangle& triangle, int row, int begin, int end,
                    Framebuffer& framebuffer, FragmentCounts& counts);
-bool cpuHasAvx2Fma();
-// 16 pixels at a time with AVX-512F; only on CPUs that have it.
+// 16 pixels at a time with AVX-512F; only on CPUs that have it (cpuHasAvx512()).
 void shadeSpanAvx512(const RasterTriangle& triangle, int row, int begin, int end,
                      Framebuffer& framebuffer, FragmentCounts& counts);
-bool cpuHasAvx512();
 
 // Draws a narrow triangle's part in `area` (its bounds within a tile) in 2D blocks of pixels,
 // with no span search, exactly as rasterizeTriangleExact would; returns false, drawing nothing,

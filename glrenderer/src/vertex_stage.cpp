@@ -1,17 +1,9 @@
 #include "vertex_stage.h"
 
 #include "clip.h"
+#include "cpu_features.h"
 
 namespace glrenderer {
-
-bool cpuHasFma() {
-#if defined(__x86_64__) || defined(__i386__)
-    static const bool has = __builtin_cpu_supports("fma") && __builtin_cpu_supports("sse4.1");
-    return has;
-#else
-    return false;
-#endif
-}
 
 std::uint8_t transformVertices(std::span<const Vertex> vertices, const ViewportTransform& viewport,
                                std::uint8_t* outcodes, WindowVertex* windowVertices) {

@@ -17,6 +17,5 @@ std::uint8_t transformVertices(std::span<const Vertex> vertices, const ViewportT
 // The version for CPUs with FMA, compiled for them; only call it after cpuHasFma().
 std::uint8_t transformVerticesFma(std::span<const Vertex> vertices, const ViewportTransform& viewport,
                                   std::uint8_t* outcodes, WindowVertex* windowVertices);
-bool cpuHasFma();
 
 }  // namespace glrenderer

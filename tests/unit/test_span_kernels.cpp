@@ -7,6 +7,7 @@
 #include <random>
 
 #include "glrenderer/color_convert.h"
+#include "cpu_features.h"
 #include "raster_span.h"
 #include "window_vertex.h"
 

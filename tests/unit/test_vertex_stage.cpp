@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "clip.h"
+#include "cpu_features.h"
 #include "vertex_stage.h"
 
 using namespace glrenderer;
