@@ -26,7 +26,7 @@ namespace {
 }
 
 template <class T>
-void vertexv(const T* v, int n) {
+[[gnu::always_inline]] inline void vertexv(const T* v, int n) {  // as addVertex
     if (!v) return;
     addVertex({static_cast<float>(v[0]), static_cast<float>(v[1]), n > 2 ? static_cast<float>(v[2]) : 0.0f,
                n > 3 ? static_cast<float>(v[3]) : 1.0f});
@@ -50,7 +50,7 @@ float toFloat(GLfloat v) { return v; }
 float toFloat(GLdouble v) { return static_cast<float>(v); }
 
 template <class T>
-void colorv(const T* v, int n) {
+[[gnu::always_inline]] inline void colorv(const T* v, int n) {  // as addVertex
     if (v) setColor({toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f});
 }
 
