@@ -15,8 +15,22 @@ WorkerPool::~WorkerPool() {
     for (std::thread& worker : workers_) worker.join();
 }
 
+bool WorkerPool::take(unsigned thread, std::size_t& index) {
+    std::uint64_t range = remaining_.load(std::memory_order_relaxed);
+    for (;;) {
+        const std::uint64_t front = range & 0xFFFFFFFFu, back = range >> 32;
+        if (front >= back) return false;
+        const bool fromFront = thread % 2 == 0;
+        const std::uint64_t next = fromFront ? range + 1 : range - (std::uint64_t{1} << 32);
+        if (remaining_.compare_exchange_weak(range, next, std::memory_order_relaxed)) {
+            index = static_cast<std::size_t>(fromFront ? front : back - 1);
+            return true;
+        }
+    }
+}
+
 void WorkerPool::drain(unsigned thread) {
-    for (std::size_t i = next_.fetch_add(1); i < count_; i = next_.fetch_add(1)) job_.invoke(job_.task, i, thread);
+    for (std::size_t i = 0; take(thread, i);) job_.invoke(job_.task, i, thread);
 }
 
 void WorkerPool::run(std::size_t count, Job job) {
@@ -27,8 +41,7 @@ void WorkerPool::run(std::size_t count, Job job) {
     {
         std::lock_guard lock(mutex_);
         job_ = job;
-        count_ = count;
-        next_ = 0;
+        remaining_ = std::uint64_t{count} << 32;
         ++generation_;
     }
     wake_.notify_all();
