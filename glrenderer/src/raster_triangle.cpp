@@ -112,8 +112,9 @@ bool prepareTriangle(const SetupTriangle& t, const DrawState& state, const Metho
         }
         out.invW = planes.plane(v0.invW, v1.invW, v2.invW);
     }
-    // 1 * x is x for every float x, and the plane (1, 0, 0) is 1 at every pixel.
-    out.state.perspective = out.state.smooth && !(out.invW.a0 == 1.0f && out.invW.dadx == 0.0f && out.invW.dady == 0.0f);
+    // The plane (1, 0, 0) is 1 at every pixel, and x * 1 is x for every float x.
+    const bool constantOne = out.invW.a0 == 1.0f && out.invW.dadx == 0.0f && out.invW.dady == 0.0f;
+    out.state.perspective = out.state.smooth && !constantOne;
     if (out.state.depthTest) out.depth = planes.plane(v0.z, v1.z, v2.z);
     return true;
 }

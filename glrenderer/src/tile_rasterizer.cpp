@@ -14,6 +14,7 @@ namespace {
 
 // Below this many queued triangles, or pixels to clear, the threads cost more than they save.
 constexpr std::size_t kParallelThreshold = 64;
+constexpr std::size_t kParallelClearPixels = 64 * 1024;
 
 // Tile sizes, as powers of two. Bigger tiles cost less per triangle (fewer triangles cross a
 // tile border and are visited twice, fewer bin entries) while a tile's color and depth still
@@ -25,7 +26,6 @@ constexpr int kSmallTileShift = 7, kLargeTileShift = 8;
 constexpr int kMinLargeTiles = 16;
 
 int tilesAlong(int pixels, int shift) { return (pixels + (1 << shift) - 1) >> shift; }
-constexpr std::size_t kParallelClearPixels = 64 * 1024;
 
 // Fills pixels with one value. A tile that no triangle draws is not read again soon: streaming
 // stores write it without first reading each line into the cache (half the memory traffic,
