@@ -53,7 +53,8 @@ void shadeSpanScalar(const RasterTriangle& t, int row, int begin, int end, Frame
             color[px] = fragmentRgba8({t.color[0].at(x, y) * w, t.color[1].at(x, y) * w,
                                        t.color[2].at(x, y) * w, t.color[3].at(x, y) * w});
         } else if (t.state.smooth) {
-            color[px] = fragmentRgba8({t.color[0].at(x, y), t.color[1].at(x, y), t.color[2].at(x, y), t.color[3].at(x, y)});
+            color[px] = fragmentRgba8({t.color[0].at(x, y), t.color[1].at(x, y), t.color[2].at(x, y),
+                                       t.color[3].at(x, y)});
         } else {
             color[px] = t.flatColor;
         }

@@ -69,7 +69,8 @@ public:
         }
         return _mm512_or_si512(
             _mm512_or_si512(fragmentToUnorm8(red), _mm512_slli_epi32(fragmentToUnorm8(green), 8)),
-            _mm512_or_si512(_mm512_slli_epi32(fragmentToUnorm8(blue), 16), _mm512_slli_epi32(fragmentToUnorm8(alpha), 24)));
+            _mm512_or_si512(_mm512_slli_epi32(fragmentToUnorm8(blue), 16),
+                            _mm512_slli_epi32(fragmentToUnorm8(alpha), 24)));
     }
 
 private:
