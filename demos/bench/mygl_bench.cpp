@@ -1,8 +1,8 @@
 // mygl-bench: time per frame against pixels differing from OSMesa llvmpipe, for every MyGL
 // method and the reference renderers, on the benchmark scenes. Writes a CSV, a markdown table
-// and (through plot_bench.py) a chart. In-process variants alternate frame by frame; variants
-// that need their own environment (one llvmpipe thread, softpipe, MyGL with AVX2 kernels only)
-// run in a child process of this program.
+// and (through plot_bench.py) a chart. In-process variants alternate, each timing a frame after
+// an untimed one of its own; variants that need their own environment (one llvmpipe thread,
+// softpipe, MyGL with AVX2 kernels only) run in a child process of this program.
 #include <glad/gl.h>
 #include <reference/compare.h>
 #include <reference/osmesa_context.h>
