@@ -276,8 +276,9 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
                    const DrawState& state, Framebuffer& framebuffer, Stats& stats) {
     if (!isUsable(start) || !isUsable(end)) return;
     if (start.x == end.x && start.y == end.y) return;  // zero length draws nothing
-    // Width rounded to an integer (halves up), at least one pixel.
-    const float width = std::min(std::max(state.lineWidth, 1.0f), kMaxLineWidth);
+    // Width rounded to an integer (halves up), at least one pixel; NaN draws as 1, as the
+    // reference's comparisons with NaN all fail.
+    const float width = state.lineWidth > 1.0f ? std::min(state.lineWidth, kMaxLineWidth) : 1.0f;
     const std::int64_t fixedWidth = roundHalfAway(width) << kSubpixelBits;
     const LineQuad quad = buildQuad(start.x, start.y, end.x, end.y, fixedWidth);
 

@@ -73,7 +73,7 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, Framebuff
           std::isfinite(point.z) && std::isfinite(point.invW))) {
         return;
     }
-    const float size = std::min(std::max(state.pointSize, 1.0f), kMaxPointSize);
+    const float size = state.pointSize > 1.0f ? std::min(state.pointSize, kMaxPointSize) : 1.0f;  // NaN: 1
     PixelBox box = pointBox(point, size);
     box.x0 = std::max<std::int64_t>(box.x0, 0);
     box.y0 = std::max<std::int64_t>(box.y0, 0);

@@ -2,6 +2,7 @@
 // and handed to the pipeline at glEnd.
 #include <array>
 
+#include "clamp_to_unit.h"
 #include "entry_points.h"
 
 namespace mygl {
@@ -14,10 +15,10 @@ namespace {
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
     glrenderer::Vertex& v = s->pipeline.addVertex();
     v.position = transform(s->modelviewProjection, object);
-    v.color = s->color;
+    v.color = s->vertexColor;
     v.edgeFlag = s->edgeFlag;
     if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
-        const Matrix& m = s->modelview.top();
+        const Matrix& m = s->modelview.top().matrix();
         v.eye = glm::vec3(transform(m, object));
         v.normal = {at(m, 0, 0) * s->normal.x + at(m, 0, 1) * s->normal.y + at(m, 0, 2) * s->normal.z,
                     at(m, 1, 0) * s->normal.x + at(m, 1, 1) * s->normal.y + at(m, 1, 2) * s->normal.z,
@@ -32,14 +33,18 @@ template <class T>
                n > 3 ? static_cast<float>(v[3]) : 1.0f});
 }
 
+// GL clamps a vertex's colour to [0, 1] before it is interpolated (the reference's vertex stage
+// saturates it); the current colour itself stays as given, as glGet reports it.
 [[gnu::always_inline]] inline void setColor(const glm::vec4& c) {  // as addVertex
     Context::State* s = currentState();
     if (!s) return;
     s->color = c;
+    s->vertexColor = {saturate(c.r), saturate(c.g), saturate(c.b), saturate(c.a)};
     if (s->insideBeginEnd) s->pipeline.colorPerVertex();
 }
 
-// Integer color components to float as the GL spec (and the reference) converts them.
+// Integer colour and normal components to float as the GL spec (and the reference) converts
+// them: unsigned c to c / (2^b - 1), signed c to (2c + 1) / (2^b - 1).
 float toFloat(GLubyte v) { return static_cast<float>(v) / 255.0f; }
 float toFloat(GLushort v) { return static_cast<float>(v) * (1.0f / 65535.0f); }
 float toFloat(GLuint v) { return static_cast<float>(static_cast<double>(v) * (1.0 / 4294967295.0)); }
@@ -56,8 +61,7 @@ template <class T>
 
 template <class T>
 void normalv(const T* v) {
-    if (Context::State* s = currentState(); s && v)
-        s->normal = {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+    if (Context::State* s = currentState(); s && v) s->normal = {toFloat(v[0]), toFloat(v[1]), toFloat(v[2])};
 }
 
 template <class T>
@@ -69,12 +73,9 @@ void texCoordv(const T* v) {
 void begin(GLenum mode) {
     Context::State* s = currentState();
     if (!s) return;
+    if (s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);  // before the mode, as every call inside
     if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
-    if (s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);
-    if (s->modelviewProjectionStale) {
-        s->modelviewProjection = multiply(s->projection.top(), s->modelview.top());
-        s->modelviewProjectionStale = false;
-    }
+    s->updateModelviewProjection();
     s->insideBeginEnd = true;
     s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode));
 }
@@ -87,11 +88,12 @@ void end() {
     s->pipeline.endPrimitive();
 }
 
+// glRect is the quad (x1,y1) (x2,y1) (x2,y2) (x1,y2), as the reference issues it.
 template <class T>
 void rect(T x1, T y1, T x2, T y2) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    begin(GL_POLYGON);
+    begin(GL_QUADS);
     const float fx1 = static_cast<float>(x1), fy1 = static_cast<float>(y1);
     const float fx2 = static_cast<float>(x2), fy2 = static_cast<float>(y2);
     addVertex({fx1, fy1, 0, 1});

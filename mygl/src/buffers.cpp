@@ -1,4 +1,6 @@
 // glClear, glFlush, glFinish and glReadPixels.
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include <glrenderer/color_convert.h>
@@ -16,7 +18,7 @@ void clear(GLbitfield mask) {
     const bool color = mask & GL_COLOR_BUFFER_BIT;
     const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite;  // glDepthMask applies
     s->pipeline.clear(color, glrenderer::clearColorRgba8(s->clearColor), depth,
-                      glrenderer::toDepth24(static_cast<float>(s->clearDepth)));
+                      glrenderer::clearDepth24(s->clearDepth));
     if (color) s->pipeline.resetStats();  // a frame's counts start at its clear, as the course did
 }
 
@@ -31,7 +33,7 @@ int bytesPerPixel(GLenum format, GLenum type) {
 bool isKnownFormat(GLenum format) {
     return format == GL_RGBA || format == GL_RGB || format == GL_DEPTH_COMPONENT || format == GL_RED ||
            format == GL_GREEN || format == GL_BLUE || format == GL_ALPHA || format == GL_LUMINANCE ||
-           format == GL_LUMINANCE_ALPHA;
+           format == GL_LUMINANCE_ALPHA || format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
 }
 
 bool isKnownType(GLenum type) {
@@ -39,24 +41,40 @@ bool isKnownType(GLenum type) {
            type == GL_UNSIGNED_INT || type == GL_INT || type == GL_FLOAT;
 }
 
+// The part of [start, start + length) inside [0, limit), as an offset into the range and a
+// count; computed in 64 bits, so no start or length overflows.
+struct Span {
+    std::int64_t offset = 0, count = 0;
+};
+Span clipToWindow(GLint start, GLsizei length, int limit) {
+    const std::int64_t first = std::max<std::int64_t>(start, 0);
+    const std::int64_t last = std::min<std::int64_t>(std::int64_t{start} + length, limit);
+    return last > first ? Span{first - start, last - first} : Span{};
+}
+
 void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, void* pixels) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    if (!isKnownFormat(format) || !isKnownType(type)) return setError(*s, GL_INVALID_ENUM);
+    // The reference checks the size before the format and type.
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
+    s->updateModelviewProjection();  // the reference validates its state here
+    if (!isKnownFormat(format) || !isKnownType(type)) return setError(*s, GL_INVALID_ENUM);
+    // An RGBA buffer has no colour indices, and there is no stencil buffer.
+    if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX) return setError(*s, GL_INVALID_OPERATION);
     const int pixelBytes = bytesPerPixel(format, type);
     if (pixelBytes == 0) return setError(*s, GL_INVALID_OPERATION);  // valid in GL, not offered here
-    if (!pixels || width == 0 || height == 0) return;
+    if (!pixels) return;
     s->pipeline.finish();
     const auto& fb = s->framebuffer;
-    const std::size_t align = static_cast<std::size_t>(s->packAlignment);
+    const Span columns = clipToWindow(x, width, fb.width()), rows = clipToWindow(y, height, fb.height());
+    const auto align = static_cast<std::size_t>(s->packAlignment);
     const std::size_t rowBytes = (static_cast<std::size_t>(width) * static_cast<std::size_t>(pixelBytes) + align - 1) / align * align;
     auto* out = static_cast<std::uint8_t*>(pixels);
     // Only the part inside the window is written; the rest of the caller's memory is untouched.
-    for (GLint row = std::max(0, -y); row < height && y + row < fb.height(); ++row) {
-        for (GLint column = std::max(0, -x); column < width && x + column < fb.width(); ++column) {
-            const std::size_t source = static_cast<std::size_t>(y + row) * static_cast<std::size_t>(fb.width()) + static_cast<std::size_t>(x + column);
-            std::uint8_t* target = out + static_cast<std::size_t>(row) * rowBytes + static_cast<std::size_t>(column) * static_cast<std::size_t>(pixelBytes);
+    for (std::int64_t row = rows.offset; row < rows.offset + rows.count; ++row) {
+        for (std::int64_t column = columns.offset; column < columns.offset + columns.count; ++column) {
+            const auto source = static_cast<std::size_t>((y + row) * fb.width() + (x + column));
+            std::uint8_t* target = out + static_cast<std::size_t>(row) * rowBytes + static_cast<std::size_t>(column * pixelBytes);
             if (format == GL_DEPTH_COMPONENT) {
                 const std::uint32_t depth24 = fb.depth()[source];
                 if (type == GL_FLOAT) {

@@ -8,20 +8,21 @@
 
 #include <glm/vec3.hpp>
 
-#include "matrix_math.h"
+#include "stack_matrix.h"
 #include "mygl/context.h"
 
 namespace mygl {
 
 class MatrixStack {
 public:
-    explicit MatrixStack(std::size_t maxDepth) : maxDepth_(maxDepth) { stack_.reserve(maxDepth); stack_.push_back(kIdentity); }
-    Matrix& top() { return stack_.back(); }
-    const Matrix& top() const { return stack_.back(); }
+    explicit MatrixStack(std::size_t maxDepth) : maxDepth_(maxDepth) { stack_.reserve(maxDepth); stack_.emplace_back(); }
+    StackMatrix& top() { return stack_.back(); }
+    const StackMatrix& top() const { return stack_.back(); }
     std::size_t depth() const { return stack_.size(); }
     std::size_t maxDepth() const { return maxDepth_; }
     bool push() {
         if (stack_.size() == maxDepth_) return false;
+        stack_.back().settleKind();  // the reference analyses the matrix it copies
         stack_.push_back(stack_.back());
         return true;
     }
@@ -33,7 +34,7 @@ public:
 
 private:
     std::size_t maxDepth_;
-    std::vector<Matrix> stack_;
+    std::vector<StackMatrix> stack_;
 };
 
 struct Context::State {
@@ -47,12 +48,14 @@ struct Context::State {
 
     // glBegin/glEnd assembly: the vertices go straight to the pipeline.
     bool insideBeginEnd = false;
-    glm::vec4 color{1, 1, 1, 1};
+    glm::vec4 color{1, 1, 1, 1};        // as given, as glGet reports it
+    glm::vec4 vertexColor{1, 1, 1, 1};  // clamped to [0, 1]: what vertices carry
     glm::vec3 normal{0, 0, 1};
     glm::vec4 texCoord{0, 0, 0, 1};
     bool edgeFlag = true;
 
-    // Matrices; the combined projection * modelview is recomputed when either changes.
+    // Matrices; the combined projection * modelview is recomputed when either changes
+    // (updateModelviewProjection).
     MatrixStack modelview{32}, projection{32}, texture{10};
     GLenum matrixMode = GL_MODELVIEW;
     Matrix modelviewProjection = kIdentity;
@@ -69,6 +72,16 @@ struct Context::State {
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
     int packAlignment = 4, unpackAlignment = 4;
+
+    // What the reference does when it validates state before a draw or a read: settle the
+    // kinds of the current matrices and form their product.
+    void updateModelviewProjection() {
+        if (!modelviewProjectionStale) return;
+        modelview.top().settleKind();
+        projection.top().settleKind();
+        modelviewProjection = combine(projection.top(), modelview.top());
+        modelviewProjectionStale = false;
+    }
 
     MatrixStack& currentStack() {
         return matrixMode == GL_PROJECTION ? projection : matrixMode == GL_TEXTURE ? texture : modelview;

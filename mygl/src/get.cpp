@@ -27,9 +27,9 @@ Value query(const Context::State& s, GLenum name) {
     const auto& d = s.draw;
     switch (name) {
     case GL_VIEWPORT: return Value{{double(d.viewport.x), double(d.viewport.y), double(d.viewport.width), double(d.viewport.height)}};
-    case GL_MODELVIEW_MATRIX: return matrix(s.modelview.top());
-    case GL_PROJECTION_MATRIX: return matrix(s.projection.top());
-    case GL_TEXTURE_MATRIX: return matrix(s.texture.top());
+    case GL_MODELVIEW_MATRIX: return matrix(s.modelview.top().matrix());
+    case GL_PROJECTION_MATRIX: return matrix(s.projection.top().matrix());
+    case GL_TEXTURE_MATRIX: return matrix(s.texture.top().matrix());
     case GL_MATRIX_MODE: return one(s.matrixMode);
     case GL_MODELVIEW_STACK_DEPTH: return one(double(s.modelview.depth()));
     case GL_PROJECTION_STACK_DEPTH: return one(double(s.projection.depth()));
@@ -77,6 +77,7 @@ void get(GLenum name, T* out, Convert convert) {
 }
 
 GLint toInteger(const Value& v, double x) {
+    if (std::isnan(x)) return 0;
     if (v.isColorOrNormalized) {  // [-1, 1] maps linearly onto the integer range, truncated as the reference does
         return static_cast<GLint>(std::clamp(x, -1.0, 1.0) * 2147483647.0);
     }

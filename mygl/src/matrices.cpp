@@ -1,24 +1,29 @@
 // Matrix modes and stacks. Double-precision entry points convert to float first, as the
-// reference stores its matrices in float.
-#include <cmath>
-
+// reference stores its matrices in float and builds them with its float arithmetic.
 #include "entry_points.h"
 
 namespace mygl {
 namespace {
 
-// Runs `change` on the current matrix, then marks the combined matrix stale.
+// Runs `change` on the current matrix. It returns whether anything changed: the reference
+// ends its vertex batch before a matrix call unless the call changes nothing it tracks.
 template <class Change>
-void changeMatrix(Change&& change) {
+void changeMatrix(bool endsBatchAlways, Change&& change) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    endBatch(*s);
-    change(*s, s->currentStack().top());
+    if (endsBatchAlways) endBatch(*s);
+    if (!change(s->currentStack().top())) return;
+    if (!endsBatchAlways) endBatch(*s);
     s->modelviewProjectionStale = true;
 }
 
-void multiplyCurrent(const Matrix& m) {
-    changeMatrix([&](Context::State&, Matrix& top) { top = multiply(top, m); });
+// The in-place and known-kind operations, which always count as a change.
+template <class Operation>
+void alwaysChange(Operation&& operation) {
+    changeMatrix(true, [&](StackMatrix& top) {
+        operation(top);
+        return true;
+    });
 }
 
 template <class T>
@@ -50,50 +55,55 @@ void popMatrix() {
 
 template <class T>
 void loadMatrix(const T* m) {
-    if (m) changeMatrix([&](Context::State&, Matrix& top) { top = toMatrix(m); });
+    if (m) changeMatrix(false, [&](StackMatrix& top) { return top.load(toMatrix(m)); });
 }
 
 template <class T>
 void multMatrix(const T* m) {
-    if (m) multiplyCurrent(toMatrix(m));
+    if (m) changeMatrix(false, [&](StackMatrix& top) { return top.multiply(toMatrix(m)); });
 }
 
-void frustumOrOrtho(bool isFrustum, double l, double r, double b, double t, double n, double f) {
+void rotate(float angle, float x, float y, float z) {
+    alwaysChange([&](StackMatrix& top) { top.rotate(angle, x, y, z); });
+}
+
+void frustumOrOrtho(bool isFrustum, float l, float r, float b, float t, float n, float f) {
     Context::State* s = currentState();
     if (!s) return;
-    const bool invalid = isFrustum ? (n <= 0.0 || f <= 0.0 || l == r || b == t || n == f) : (l == r || b == t || n == f);
+    // Checked after the conversion to float, as the reference does.
+    const bool invalid = isFrustum ? (n <= 0.0f || f <= 0.0f || l == r || b == t || n == f) : (l == r || b == t || n == f);
     if (invalid && !s->insideBeginEnd) return setError(*s, GL_INVALID_VALUE);
-    const auto F = [](double v) { return static_cast<float>(v); };
-    multiplyCurrent(isFrustum ? frustum(F(l), F(r), F(b), F(t), F(n), F(f)) : ortho(F(l), F(r), F(b), F(t), F(n), F(f)));
+    alwaysChange([&](StackMatrix& top) { isFrustum ? top.frustum(l, r, b, t, n, f) : top.ortho(l, r, b, t, n, f); });
 }
+
+float F(double v) { return static_cast<float>(v); }
 
 const EntryPoint kEntryPoints[] = {
     {"glMatrixMode", entry(+[](GLenum mode) { matrixMode(mode); })},
     {"glPushMatrix", entry(+[] { pushMatrix(); })},
     {"glPopMatrix", entry(+[] { popMatrix(); })},
-    {"glLoadIdentity", entry(+[] { changeMatrix([](Context::State&, Matrix& top) { top = kIdentity; }); })},
+    {"glLoadIdentity", entry(+[] { alwaysChange([](StackMatrix& top) { top.loadIdentity(); }); })},
     {"glLoadMatrixf", entry(+[](const GLfloat* m) { loadMatrix(m); })},
     {"glLoadMatrixd", entry(+[](const GLdouble* m) { loadMatrix(m); })},
     {"glMultMatrixf", entry(+[](const GLfloat* m) { multMatrix(m); })},
     {"glMultMatrixd", entry(+[](const GLdouble* m) { multMatrix(m); })},
-    {"glTranslatef", entry(+[](GLfloat x, GLfloat y, GLfloat z) { multiplyCurrent(translation(x, y, z)); })},
+    {"glTranslatef", entry(+[](GLfloat x, GLfloat y, GLfloat z) {
+         alwaysChange([&](StackMatrix& top) { top.translate(x, y, z); });
+     })},
     {"glTranslated", entry(+[](GLdouble x, GLdouble y, GLdouble z) {
-         multiplyCurrent(translation(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)));
+         alwaysChange([&](StackMatrix& top) { top.translate(F(x), F(y), F(z)); });
      })},
-    {"glScalef", entry(+[](GLfloat x, GLfloat y, GLfloat z) { multiplyCurrent(scaling(x, y, z)); })},
+    {"glScalef", entry(+[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); })},
     {"glScaled", entry(+[](GLdouble x, GLdouble y, GLdouble z) {
-         multiplyCurrent(scaling(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)));
+         alwaysChange([&](StackMatrix& top) { top.scale(F(x), F(y), F(z)); });
      })},
-    {"glRotatef", entry(+[](GLfloat a, GLfloat x, GLfloat y, GLfloat z) { multiplyCurrent(rotation(a, x, y, z)); })},
-    {"glRotated", entry(+[](GLdouble a, GLdouble x, GLdouble y, GLdouble z) {
-         multiplyCurrent(rotation(static_cast<float>(a), static_cast<float>(x), static_cast<float>(y),
-                                  static_cast<float>(z)));
-     })},
+    {"glRotatef", entry(+[](GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); })},
+    {"glRotated", entry(+[](GLdouble a, GLdouble x, GLdouble y, GLdouble z) { rotate(F(a), F(x), F(y), F(z)); })},
     {"glFrustum", entry(+[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-         frustumOrOrtho(true, l, r, b, t, n, f);
+         frustumOrOrtho(true, F(l), F(r), F(b), F(t), F(n), F(f));
      })},
     {"glOrtho", entry(+[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-         frustumOrOrtho(false, l, r, b, t, n, f);
+         frustumOrOrtho(false, F(l), F(r), F(b), F(t), F(n), F(f));
      })},
 };
 

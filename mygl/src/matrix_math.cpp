@@ -15,23 +15,19 @@ Matrix multiply(const Matrix& a, const Matrix& b) {
     return p;
 }
 
-Matrix translation(float x, float y, float z) {
-    Matrix m = kIdentity;
-    at(m, 0, 3) = x;
-    at(m, 1, 3) = y;
-    at(m, 2, 3) = z;
-    return m;
+Matrix multiplyAffine(const Matrix& a, const Matrix& b) {
+    Matrix p = kIdentity;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            at(p, i, j) = at(a, i, 0) * at(b, 0, j) + at(a, i, 1) * at(b, 1, j) + at(a, i, 2) * at(b, 2, j);
+        }
+        at(p, i, 3) = at(a, i, 0) * at(b, 0, 3) + at(a, i, 1) * at(b, 1, 3) + at(a, i, 2) * at(b, 2, 3) + at(a, i, 3);
+    }
+    return p;
 }
 
-Matrix scaling(float x, float y, float z) {
-    Matrix m = kIdentity;
-    at(m, 0, 0) = x;
-    at(m, 1, 1) = y;
-    at(m, 2, 2) = z;
-    return m;
-}
-
-Matrix rotation(float angleDegrees, float x, float y, float z) {
+std::optional<Matrix> rotation(float angleDegrees, float x, float y, float z) {
+    if (angleDegrees == 0.0f) return std::nullopt;
     // The angle goes to radians in double, then sine and cosine in float, as the reference does.
     const float radians = static_cast<float>(static_cast<double>(angleDegrees) * M_PI / 180.0);
     float s = std::sin(radians);
@@ -54,7 +50,7 @@ Matrix rotation(float angleDegrees, float x, float y, float z) {
         return m;
     }
     const float length = std::sqrt(x * x + y * y + z * z);
-    if (length <= 1.0e-4f) return m;  // no usable axis: the reference leaves the matrix alone
+    if (length <= 1.0e-4f) return std::nullopt;
     x /= length, y /= length, z /= length;
     const float xx = x * x, yy = y * y, zz = z * z, xy = x * y, yz = y * z, zx = z * x;
     const float xs = x * s, ys = y * s, zs = z * s, oneMinusC = 1.0f - c;

@@ -2,6 +2,7 @@
 // 4x4 float matrices, column-major as GL stores them, with the reference's float arithmetic:
 // products summed left to right, one rounding per operation (the build disables contraction).
 #include <array>
+#include <optional>
 
 #include <glm/vec4.hpp>
 
@@ -17,12 +18,14 @@ inline float at(const Matrix& m, int row, int column) { return m[static_cast<std
 
 // a * b.
 Matrix multiply(const Matrix& a, const Matrix& b);
+// a * b for matrices whose bottom rows are taken as 0 0 0 1: the terms of the bottom rows are
+// left out, and the product's bottom row is 0 0 0 1.
+Matrix multiplyAffine(const Matrix& a, const Matrix& b);
 
-// The matrices glTranslate, glScale, glRotate, glFrustum and glOrtho multiply onto the current
-// one, built in float as the reference builds them.
-Matrix translation(float x, float y, float z);
-Matrix scaling(float x, float y, float z);
-Matrix rotation(float angleDegrees, float x, float y, float z);
+// The matrices glRotate, glFrustum and glOrtho multiply onto the current one, built in float
+// as the reference builds them. No rotation at all (nullopt) for a zero angle or an axis of
+// length 1e-4 or less: the reference then leaves the matrix alone.
+std::optional<Matrix> rotation(float angleDegrees, float x, float y, float z);
 Matrix frustum(float left, float right, float bottom, float top, float nearVal, float farVal);
 Matrix ortho(float left, float right, float bottom, float top, float nearVal, float farVal);
 

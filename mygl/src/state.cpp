@@ -1,8 +1,7 @@
 // Enables and fixed-function state, translated into the pipeline's DrawState.
 #include <algorithm>
 
-#include <glm/common.hpp>
-
+#include "clamp_to_unit.h"
 #include "entry_points.h"
 
 namespace mygl {
@@ -106,10 +105,11 @@ void polygonMode(GLenum face, GLenum mode) {
     }
 }
 
+// Only sizes <= 0 are errors: NaN is stored, as GL says and the reference does.
 void positiveSize(float& field, GLfloat size) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    if (!(size > 0.0f)) return setError(*s, GL_INVALID_VALUE);
+    if (size <= 0.0f) return setError(*s, GL_INVALID_VALUE);
     assign(*s, field, size);
 }
 
@@ -129,8 +129,8 @@ void viewport(GLint x, GLint y, GLsizei width, GLsizei height) {
 void depthRange(GLdouble nearVal, GLdouble farVal) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    assign(*s, s->draw.depthNear, static_cast<float>(std::clamp(nearVal, 0.0, 1.0)));
-    assign(*s, s->draw.depthFar, static_cast<float>(std::clamp(farVal, 0.0, 1.0)));
+    assign(*s, s->draw.depthNear, static_cast<float>(clampToUnit(nearVal)));
+    assign(*s, s->draw.depthFar, static_cast<float>(clampToUnit(farVal)));
 }
 
 void pixelStore(GLenum name, GLint value) {
@@ -163,10 +163,10 @@ const EntryPoint kEntryPoints[] = {
     {"glDepthRange", entry(+[](GLdouble n, GLdouble f) { depthRange(n, f); })},
     {"glClearColor", entry(+[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
          if (Context::State* s = stateOutsideBeginEnd())
-             s->clearColor = glm::clamp(glm::vec4(r, g, b, a), glm::vec4(0.0f), glm::vec4(1.0f));
+             s->clearColor = {clampToUnit(r), clampToUnit(g), clampToUnit(b), clampToUnit(a)};
      })},
     {"glClearDepth", entry(+[](GLdouble depth) {
-         if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = std::clamp(depth, 0.0, 1.0);
+         if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
      })},
     {"glPixelStorei", entry(+[](GLenum name, GLint value) { pixelStore(name, value); })},
     {"glHint", entry(+[](GLenum, GLenum) { stateOutsideBeginEnd(); })},

@@ -5,6 +5,7 @@
 #include <reference/osmesa_context.h>
 
 #include <functional>
+#include <vector>
 
 namespace testing_support {
 
@@ -28,6 +29,21 @@ BothResults<Result> onBothBackends(const std::function<Result()>& calls, int wid
         results.osmesa = calls();
     }
     return results;
+}
+
+// The colour (RGBA8) and 24-bit depth (as GL_UNSIGNED_INT) of every pixel, after glFinish.
+struct Frame {
+    std::vector<GLubyte> color;
+    std::vector<GLuint> depth;
+    bool operator==(const Frame&) const = default;
+};
+
+inline Frame readFrame(int width, int height) {
+    Frame frame{std::vector<GLubyte>(static_cast<std::size_t>(width * height) * 4),
+                std::vector<GLuint>(static_cast<std::size_t>(width * height))};
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, frame.color.data());
+    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, frame.depth.data());
+    return frame;
 }
 
 }  // namespace testing_support

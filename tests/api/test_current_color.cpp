@@ -12,23 +12,12 @@
 
 #include "backends.h"
 
+using testing_support::Frame;
 using testing_support::onBothBackends;
 
 namespace {
 
 constexpr int kWidth = 96, kHeight = 72;
-
-struct Frame {
-    std::vector<GLubyte> color;
-    std::vector<GLuint> depth;
-};
-
-Frame readFrame() {
-    Frame frame{std::vector<GLubyte>(kWidth * kHeight * 4), std::vector<GLuint>(kWidth * kHeight)};
-    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, frame.color.data());
-    glReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, frame.depth.data());
-    return frame;
-}
 
 // A perspective view where interpolating a color blurs it and where the split of a quad shows
 // in the last bits of its depth.
@@ -87,7 +76,7 @@ TEST(CurrentColor, DrawsAsTheReferenceWhetherColorsComePerVertexOrNot) {
         const auto frames = onBothBackends<Frame>(
             [&] {
                 draw(variant);
-                return readFrame();
+                return testing_support::readFrame(kWidth, kHeight);
             },
             kWidth, kHeight);
         EXPECT_EQ(frames.mygl.color, frames.osmesa.color) << variant.name;

@@ -2,6 +2,7 @@
 // for the very same calls; the offending call must have no other effect.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ std::vector<Misuse> misuses() {
     return {
         {"glBegin with a bad mode", GL_INVALID_ENUM, [] { glBegin(0x20); }},
         {"glBegin inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_TRIANGLES); glBegin(GL_TRIANGLES); glEnd(); }},
+        {"glBegin with a bad mode inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_TRIANGLES); glBegin(0x20); glEnd(); }},
         {"glEnd without glBegin", GL_INVALID_OPERATION, [] { glEnd(); }},
         {"glClear inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_POINTS); glClear(GL_COLOR_BUFFER_BIT); glEnd(); }},
         {"glEnable inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_LINES); glEnable(GL_CULL_FACE); glEnd(); }},
@@ -47,6 +49,11 @@ std::vector<Misuse> misuses() {
         {"glOrtho with near = far", GL_INVALID_VALUE, [] { glOrtho(-1, 1, -1, 1, 2, 2); }},
         {"glClear with unknown bits", GL_INVALID_VALUE, [] { glClear(0x1); }},
         {"glReadPixels with a negative size", GL_INVALID_VALUE, [] { GLubyte p[64]; glReadPixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p); }},
+        {"glReadPixels with a negative size and a bad format", GL_INVALID_VALUE, [] { GLubyte p[64]; glReadPixels(0, 0, 1, -1, 0x1234, GL_UNSIGNED_BYTE, p); }},
+        {"glReadPixels of colour indices from an RGBA buffer", GL_INVALID_OPERATION, [] { GLubyte p[64]; glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, p); }},
+        {"glReadPixels of stencil without a stencil buffer", GL_INVALID_OPERATION, [] { GLubyte p[64]; glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, p); }},
+        {"glLineWidth of NaN is stored, not an error", GL_NO_ERROR, [] { glLineWidth(std::nanf("")); }},
+        {"glPointSize of NaN is stored, not an error", GL_NO_ERROR, [] { glPointSize(std::nanf("")); }},
         {"glPixelStorei with alignment 3", GL_INVALID_VALUE, [] { glPixelStorei(GL_PACK_ALIGNMENT, 3); }},
         {"glPopMatrix on an empty stack", GL_STACK_UNDERFLOW, [] { glPopMatrix(); }},
         {"glPushMatrix past the modelview depth", GL_STACK_OVERFLOW, [] { for (int i = 0; i < 32; ++i) glPushMatrix(); }},

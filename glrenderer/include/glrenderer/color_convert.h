@@ -52,4 +52,12 @@ inline std::uint32_t toDepth24(float depth) {
     return static_cast<std::uint32_t>(roundToEven(clamped * 16777215.0f));
 }
 
+// glClear's depth: the clear value (a double in [0, 1]) times 16777215, rounded in double to
+// nearest even.
+inline std::uint32_t clearDepth24(double depth) {
+    if (!(depth > 0.0)) return 0;
+    if (depth >= 1.0) return kDepthMax24;
+    return static_cast<std::uint32_t>(std::nearbyint(depth * 16777215.0));
+}
+
 }  // namespace glrenderer
