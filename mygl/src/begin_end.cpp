@@ -50,7 +50,8 @@ float toFloat(GLushort v) { return static_cast<float>(v) * (1.0f / 65535.0f); }
 float toFloat(GLuint v) { return static_cast<float>(static_cast<double>(v) * (1.0 / 4294967295.0)); }
 float toFloat(GLbyte v) { return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 255.0f); }
 float toFloat(GLshort v) { return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 65535.0f); }
-float toFloat(GLint v) { return static_cast<float>((2.0 * v + 1.0) * (1.0 / 4294967295.0)); }
+// In float, then scaled in double, as the reference's INT_TO_FLOAT (not the exact (2c + 1) / (2^32 - 1)).
+float toFloat(GLint v) { return static_cast<float>((2.0f * static_cast<float>(v) + 1.0f) * (1.0 / 4294967294.0)); }
 float toFloat(GLfloat v) { return v; }
 float toFloat(GLdouble v) { return static_cast<float>(v); }
 

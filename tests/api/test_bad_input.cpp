@@ -155,6 +155,34 @@ TEST(BadInput, IntegerNormalsAreMappedToTheUnitRange) {
     EXPECT_EQ(normals.mygl, normals.osmesa);
 }
 
+TEST(BadInput, IntegerColorsAndNormalsConvertAsTheReference) {
+    std::mt19937 random(7);
+    std::vector<GLint> ints = {INT_MIN, INT_MAX, 0, -1, -22256267, 362119120, 24383753};
+    for (int i = 0; i < 300; ++i) ints.push_back(static_cast<GLint>(random()));
+    const auto converted = onBothBackends<std::vector<GLfloat>>([&] {
+        std::vector<GLfloat> all;
+        const auto keep = [&](GLenum name, std::size_t count) {
+            const auto values = getFloats(name, count);
+            all.insert(all.end(), values.begin(), values.end());
+        };
+        for (std::size_t i = 0; i + 2 < ints.size(); i += 3) {
+            const GLint* v = &ints[i];
+            glColor3iv(v);
+            keep(GL_CURRENT_COLOR, 4);
+            glNormal3iv(v);
+            keep(GL_CURRENT_NORMAL, 3);
+            glColor4ui(static_cast<GLuint>(v[0]), static_cast<GLuint>(v[1]), static_cast<GLuint>(v[2]), 7u);
+            keep(GL_CURRENT_COLOR, 4);
+            glColor4s(static_cast<GLshort>(v[0]), static_cast<GLshort>(v[1]), static_cast<GLshort>(v[2]), -1);
+            keep(GL_CURRENT_COLOR, 4);
+            glNormal3s(static_cast<GLshort>(v[0]), static_cast<GLshort>(v[1]), static_cast<GLshort>(v[2]));
+            keep(GL_CURRENT_NORMAL, 3);
+        }
+        return all;
+    });
+    EXPECT_EQ(converted.mygl, converted.osmesa);
+}
+
 TEST(BadInput, ClearDepthRoundsTheDoubleValue) {
     std::mt19937_64 random(12);
     std::vector<double> values = {0.60005601727195224, 0.0, 1.0, 0.5, 1e-9, 1.0 - 1e-9, -0.5, 2.0};
