@@ -4,17 +4,25 @@
 #include <cstring>
 #include <vector>
 
+#include "not_implemented.h"
+
 namespace mygl {
 namespace {
 
+bool byName(const EntryPoint& a, const EntryPoint& b) { return std::strcmp(a.name, b.name) < 0; }
+
+// Every entry point by name: the implemented ones, and a stub for each GL 1.1 function that
+// is not (yet).
 std::vector<EntryPoint> sortedTable() {
     std::vector<EntryPoint> table;
     for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
                       bufferEntryPoints()}) {
         table.insert(table.end(), area.begin(), area.end());
     }
-    std::sort(table.begin(), table.end(),
-              [](const EntryPoint& a, const EntryPoint& b) { return std::strcmp(a.name, b.name) < 0; });
+    std::sort(table.begin(), table.end(), byName);
+    const std::vector<EntryPoint> missing = notImplementedEntryPoints(table);
+    table.insert(table.end(), missing.begin(), missing.end());
+    std::sort(table.begin(), table.end(), byName);
     return table;
 }
 

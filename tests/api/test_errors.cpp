@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,51 @@ TEST(GlErrors, UnknownEntryPointsAreNull) {
     EXPECT_EQ(mygl::getProcAddress("glNoSuchFunction"), nullptr);
     EXPECT_EQ(mygl::getProcAddress(nullptr), nullptr);
     EXPECT_NE(mygl::getProcAddress("glBegin"), nullptr);
+}
+
+namespace {
+std::set<std::string> requested;
+std::vector<std::string> unresolved;
+GLADapiproc recordingLoader(const char* name) {
+    requested.insert(name);
+    const auto proc = reinterpret_cast<GLADapiproc>(mygl::getProcAddress(name));
+    if (!proc) unresolved.emplace_back(name);
+    return proc;
+}
+}  // namespace
+
+TEST(GlErrors, EveryGl11FunctionHasAnEntryPoint) {
+    mygl::Context context(8, 8);
+    context.makeCurrent();
+    requested.clear();
+    unresolved.clear();
+    ASSERT_NE(gladLoadGL(recordingLoader), 0);
+    EXPECT_EQ(requested.size(), 336u);  // glad's GL 1.0 + 1.1, each once (glGetString is asked twice)
+    EXPECT_EQ(unresolved, std::vector<std::string>{});
+    context.makeCurrent();
+}
+
+TEST(GlErrors, NotImplementedFunctionsReportThemselvesInsteadOfCrashing) {
+    mygl::Context context(8, 8);
+    context.makeCurrent();
+    const GLfloat position[4] = {0, 0, 1, 0};
+    testing::internal::CaptureStderr();
+    glLightfv(GL_LIGHT0, GL_POSITION, position);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
+    glLightfv(GL_LIGHT1, GL_POSITION, position);  // named once per process
+    EXPECT_EQ(glGenLists(2), 0u);                   // a value-returning one returns zero
+    EXPECT_EQ(glIsTexture(1), GL_FALSE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, position);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(said, "MyGL: glLightfv is not implemented yet (GL_INVALID_OPERATION)\n"
+                    "MyGL: glGenLists is not implemented yet (GL_INVALID_OPERATION)\n"
+                    "MyGL: glIsTexture is not implemented yet (GL_INVALID_OPERATION)\n"
+                    "MyGL: glTexImage2D is not implemented yet (GL_INVALID_OPERATION)\n");
+    // The program goes on drawing.
+    glClearColor(0, 1, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    EXPECT_EQ(context.readPixels()[1], 255);
 }
 
 TEST(Context, RejectsBadSizes) {

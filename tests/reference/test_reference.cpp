@@ -134,3 +134,28 @@ TEST(CallRecorder, AFrameRecordedOnMyglReplaysIdenticallyOnBothBackends) {
     EXPECT_GT(coveredPixels(theirs.rgba), 100);
     EXPECT_EQ(counter, 1);  // replay never runs the program's code
 }
+
+TEST(CallRecorder, AFrameCallingFunctionsMyglLacksIsComparedWithoutACrash) {
+    const auto display = [] {
+        glClearColor(0.0f, 0.0f, 1.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const GLfloat white[4] = {1, 1, 1, 1};
+        glLightfv(GL_LIGHT0, GL_DIFFUSE, white);  // not implemented by MyGL yet
+        glNewList(glGenLists(1), GL_COMPILE);     // neither
+        glEndList();
+        glRectf(-0.5f, -0.5f, 0.5f, 0.5f);
+    };
+    reference::CallRecorder recorder;
+    mygl::Context mygl(32, 32);
+    mygl.makeCurrent();
+    recorder.start();
+    display();
+    recorder.stop();
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
+    const reference::Image ours{32, 32, mygl.readPixels()};
+    reference::OsmesaContext osmesa(32, 32);
+    osmesa.makeCurrent();
+    recorder.replay();
+    const reference::Image theirs{32, 32, osmesa.readPixels()};
+    EXPECT_EQ(reference::compareImages(ours, theirs).differing, 0);
+}
