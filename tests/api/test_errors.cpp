@@ -48,6 +48,8 @@ std::vector<Misuse> misuses() {
         {"glFrustum with near = 0", GL_INVALID_VALUE, [] { glFrustum(-1, 1, -1, 1, 0, 10); }},
         {"glFrustum with left = right", GL_INVALID_VALUE, [] { glFrustum(1, 1, -1, 1, 1, 10); }},
         {"glOrtho with near = far", GL_INVALID_VALUE, [] { glOrtho(-1, 1, -1, 1, 2, 2); }},
+        {"glFrustum with a near plane that is 0 in float", GL_INVALID_VALUE, [] { glFrustum(-1, 1, -1, 1, 1e-50, 10); }},
+        {"glOrtho with left = right in float", GL_INVALID_VALUE, [] { glOrtho(0, 1e-46, -1, 1, -1, 1); }},
         {"glClear with unknown bits", GL_INVALID_VALUE, [] { glClear(0x1); }},
         {"glReadPixels with a negative size", GL_INVALID_VALUE, [] { GLubyte p[64]; glReadPixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p); }},
         {"glReadPixels with a negative size and a bad format", GL_INVALID_VALUE, [] { GLubyte p[64]; glReadPixels(0, 0, 1, -1, 0x1234, GL_UNSIGNED_BYTE, p); }},
