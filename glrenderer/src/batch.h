@@ -18,6 +18,7 @@ struct BatchHeader {
     DrawState state;
     Methods methods;
     PrimitiveMode mode = PrimitiveMode::Points;
+    PrimitiveSource source = PrimitiveSource::Immediate;
     bool colorsPerVertex = false;  // glColor was called inside its glBegin/glEnd blocks
 };
 

@@ -74,9 +74,10 @@ void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats)
     const std::uint8_t anyOutside = transform(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
-    const bool flatColorsPerVertex = batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex;
+    const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
+                           batch.source == PrimitiveSource::DisplayList;
     const Call call{batch, target, stats};
-    decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, flatColorsPerVertex,
+    decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
                        [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
 

@@ -23,13 +23,14 @@ std::size_t usableVertexCount(PrimitiveMode mode, std::size_t count);
 bool isTriangleMode(PrimitiveMode mode);
 
 // Calls emit(TriangleIndices) for each triangle of a triangle-type mode, in the reference's order.
-// flatColorsPerVertex: flat shading, and the draw's vertices carry colors of their own (glColor
-// inside glBegin/glEnd); only then does the reference's direct path keep quads' provoking v3
-// last in both triangles. With one current color for all vertices it splits flat quads like
-// smooth ones (measured on the depth buffer).
+// v1v3Quads: quads take the v1-v3 diagonal on the direct path too. The reference does so for
+// flat shading where the draw's vertices carry colors of their own (glColor inside
+// glBegin/glEnd), keeping quads' provoking v3 last in both triangles (with one current color
+// for all vertices it splits flat quads like smooth ones, measured on the depth buffer), and
+// for display lists, whose quads it turns into (0,1,3), (1,2,3) triangles when it compiles them.
 template <class Emit>
-void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPath path,
-                        bool flatColorsPerVertex, Emit&& emit) {
+void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPath path, bool v1v3Quads,
+                        Emit&& emit) {
     switch (mode) {
     case PrimitiveMode::Triangles:
         for (std::uint32_t i = 0; i + 2 < count; i += 3) emit(TriangleIndices{{i, i + 1, i + 2}});
@@ -44,9 +45,9 @@ void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPa
         for (std::uint32_t i = 1; i + 1 < count; ++i) emit(TriangleIndices{{0, i, i + 1}});
         break;
     case PrimitiveMode::Quads: {
-        // The direct path keeps the v0-v2 diagonal unless flat colors come per vertex; those and
-        // the draw module use the v1-v3 diagonal so that both triangles end on the provoking v3.
-        const bool v0v2Diagonal = path == DecompositionPath::Direct && !flatColorsPerVertex;
+        // The direct path keeps the v0-v2 diagonal unless told otherwise; the draw module uses
+        // the v1-v3 diagonal so that both triangles end on the provoking v3.
+        const bool v0v2Diagonal = path == DecompositionPath::Direct && !v1v3Quads;
         for (std::uint32_t i = 0; i + 3 < count; i += 4) {
             if (v0v2Diagonal) {
                 emit(TriangleIndices{{i, i + 1, i + 2}});

@@ -3,7 +3,7 @@
 #include <array>
 
 #include "clamp_to_unit.h"
-#include "entry_points.h"
+#include "compiled.h"
 
 namespace mygl {
 namespace {
@@ -78,7 +78,9 @@ void begin(GLenum mode) {
     if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
     s->updateModelviewProjection();
     s->insideBeginEnd = true;
-    s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode));
+    s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode),
+                               s->lists.replaying() ? glrenderer::PrimitiveSource::DisplayList
+                                                    : glrenderer::PrimitiveSource::Immediate);
 }
 
 void end() {
@@ -106,30 +108,30 @@ void rect(T x1, T y1, T x2, T y2) {
 
 // glVertex, glColor, ... in every type: one line per entry point.
 #define MYGL_VERTEX(suffix, T)                                                                  \
-    {"glVertex2" #suffix, entry(+[](T x, T y) { vertexv(std::array<T, 2>{x, y}.data(), 2); })},        \
-    {"glVertex3" #suffix, entry(+[](T x, T y, T z) { vertexv(std::array<T, 3>{x, y, z}.data(), 3); })}, \
-    {"glVertex4" #suffix, entry(+[](T x, T y, T z, T w) { vertexv(std::array<T, 4>{x, y, z, w}.data(), 4); })}, \
-    {"glVertex2" #suffix "v", entry(+[](const T* v) { vertexv(v, 2); })},                          \
-    {"glVertex3" #suffix "v", entry(+[](const T* v) { vertexv(v, 3); })},                          \
-    {"glVertex4" #suffix "v", entry(+[](const T* v) { vertexv(v, 4); })}
+    {"glVertex2" #suffix, compiled<+[](T x, T y) { vertexv(std::array<T, 2>{x, y}.data(), 2); }>()},        \
+    {"glVertex3" #suffix, compiled<+[](T x, T y, T z) { vertexv(std::array<T, 3>{x, y, z}.data(), 3); }>()}, \
+    {"glVertex4" #suffix, compiled<+[](T x, T y, T z, T w) { vertexv(std::array<T, 4>{x, y, z, w}.data(), 4); }>()}, \
+    {"glVertex2" #suffix "v", compiled<+[](const T* v) { vertexv(v, 2); }, 2>()},                          \
+    {"glVertex3" #suffix "v", compiled<+[](const T* v) { vertexv(v, 3); }, 3>()},                          \
+    {"glVertex4" #suffix "v", compiled<+[](const T* v) { vertexv(v, 4); }, 4>()}
 #define MYGL_COLOR(suffix, T)                                                                    \
-    {"glColor3" #suffix, entry(+[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); })},  \
-    {"glColor4" #suffix, entry(+[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); })}, \
-    {"glColor3" #suffix "v", entry(+[](const T* v) { colorv(v, 3); })},                            \
-    {"glColor4" #suffix "v", entry(+[](const T* v) { colorv(v, 4); })}
+    {"glColor3" #suffix, compiled<+[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }>()},  \
+    {"glColor4" #suffix, compiled<+[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); }>()}, \
+    {"glColor3" #suffix "v", compiled<+[](const T* v) { colorv(v, 3); }, 3>()},                            \
+    {"glColor4" #suffix "v", compiled<+[](const T* v) { colorv(v, 4); }, 4>()}
 #define MYGL_NORMAL(suffix, T)                                                                    \
-    {"glNormal3" #suffix, entry(+[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); })},  \
-    {"glNormal3" #suffix "v", entry(+[](const T* v) { normalv(v); })}
+    {"glNormal3" #suffix, compiled<+[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }>()},  \
+    {"glNormal3" #suffix "v", compiled<+[](const T* v) { normalv(v); }, 3>()}
 #define MYGL_TEXCOORD(suffix, T)                                                                  \
-    {"glTexCoord2" #suffix, entry(+[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data()); })},     \
-    {"glTexCoord2" #suffix "v", entry(+[](const T* v) { texCoordv(v); })}
+    {"glTexCoord2" #suffix, compiled<+[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data()); }>()},     \
+    {"glTexCoord2" #suffix "v", compiled<+[](const T* v) { texCoordv(v); }, 2>()}
 #define MYGL_RECT(suffix, T)                                                                      \
-    {"glRect" #suffix, entry(+[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); })},               \
-    {"glRect" #suffix "v", entry(+[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); })}
+    {"glRect" #suffix, compiled<+[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }>()},               \
+    {"glRect" #suffix "v", compiled<+[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); }, 2>()}
 
 const EntryPoint kEntryPoints[] = {
-    {"glBegin", entry(+[](GLenum mode) { begin(mode); })},
-    {"glEnd", entry(+[] { end(); })},
+    {"glBegin", compiled<+[](GLenum mode) { begin(mode); }>()},
+    {"glEnd", compiled<+[] { end(); }>()},
     MYGL_VERTEX(s, GLshort), MYGL_VERTEX(i, GLint), MYGL_VERTEX(f, GLfloat), MYGL_VERTEX(d, GLdouble),
     MYGL_COLOR(b, GLbyte), MYGL_COLOR(ub, GLubyte), MYGL_COLOR(s, GLshort), MYGL_COLOR(us, GLushort),
     MYGL_COLOR(i, GLint), MYGL_COLOR(ui, GLuint), MYGL_COLOR(f, GLfloat), MYGL_COLOR(d, GLdouble),
@@ -137,12 +139,12 @@ const EntryPoint kEntryPoints[] = {
     MYGL_NORMAL(d, GLdouble),
     MYGL_TEXCOORD(s, GLshort), MYGL_TEXCOORD(i, GLint), MYGL_TEXCOORD(f, GLfloat), MYGL_TEXCOORD(d, GLdouble),
     MYGL_RECT(s, GLshort), MYGL_RECT(i, GLint), MYGL_RECT(f, GLfloat), MYGL_RECT(d, GLdouble),
-    {"glEdgeFlag", entry(+[](GLboolean flag) {
+    {"glEdgeFlag", compiled<+[](GLboolean flag) {
          if (Context::State* s = currentState()) s->edgeFlag = flag != GL_FALSE;
-     })},
-    {"glEdgeFlagv", entry(+[](const GLboolean* flag) {
+     }>()},
+    {"glEdgeFlagv", compiled<+[](const GLboolean* flag) {
          if (Context::State* s = currentState(); s && flag) s->edgeFlag = *flag != GL_FALSE;
-     })},
+     }, 1>()},
 };
 
 }  // namespace

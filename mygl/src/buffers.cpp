@@ -5,7 +5,7 @@
 
 #include <glrenderer/color_convert.h>
 
-#include "entry_points.h"
+#include "compiled.h"
 
 namespace mygl {
 namespace {
@@ -92,7 +92,7 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glClear", entry(+[](GLbitfield mask) { clear(mask); })},
+    {"glClear", compiled<+[](GLbitfield mask) { clear(mask); }>()},
     {"glFlush", entry(+[] {
          if (Context::State* s = stateOutsideBeginEnd()) s->pipeline.endBatch();
      })},

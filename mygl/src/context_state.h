@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "display_lists.h"
 #include "stack_matrix.h"
 #include "mygl/context.h"
 
@@ -72,6 +73,7 @@ struct Context::State {
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
     int packAlignment = 4, unpackAlignment = 4;
+    DisplayLists lists;
 
     // What the reference does when it validates state before a draw or a read: settle the
     // kinds of the current matrices and form their product.

@@ -62,6 +62,10 @@ Value query(const Context::State& s, GLenum name) {
     case GL_PACK_ALIGNMENT: return one(s.packAlignment);
     case GL_UNPACK_ALIGNMENT: return one(s.unpackAlignment);
     case GL_DOUBLEBUFFER: return flag(false);
+    case GL_LIST_BASE: return one(s.lists.base);
+    case GL_LIST_INDEX: return one(s.lists.compilingName());
+    case GL_LIST_MODE: return one(s.lists.compilingMode());
+    case GL_MAX_LIST_NESTING: return one(DisplayLists::kMaxNesting);
     default: return {};
     }
 }

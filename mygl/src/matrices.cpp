@@ -1,6 +1,6 @@
 // Matrix modes and stacks. Double-precision entry points convert to float first, as the
 // reference stores its matrices in float and builds them with its float arithmetic.
-#include "entry_points.h"
+#include "compiled.h"
 
 namespace mygl {
 namespace {
@@ -79,32 +79,32 @@ void frustumOrOrtho(bool isFrustum, float l, float r, float b, float t, float n,
 float F(double v) { return static_cast<float>(v); }
 
 const EntryPoint kEntryPoints[] = {
-    {"glMatrixMode", entry(+[](GLenum mode) { matrixMode(mode); })},
-    {"glPushMatrix", entry(+[] { pushMatrix(); })},
-    {"glPopMatrix", entry(+[] { popMatrix(); })},
-    {"glLoadIdentity", entry(+[] { alwaysChange([](StackMatrix& top) { top.loadIdentity(); }); })},
-    {"glLoadMatrixf", entry(+[](const GLfloat* m) { loadMatrix(m); })},
-    {"glLoadMatrixd", entry(+[](const GLdouble* m) { loadMatrix(m); })},
-    {"glMultMatrixf", entry(+[](const GLfloat* m) { multMatrix(m); })},
-    {"glMultMatrixd", entry(+[](const GLdouble* m) { multMatrix(m); })},
-    {"glTranslatef", entry(+[](GLfloat x, GLfloat y, GLfloat z) {
+    {"glMatrixMode", compiled<+[](GLenum mode) { matrixMode(mode); }>()},
+    {"glPushMatrix", compiled<+[] { pushMatrix(); }>()},
+    {"glPopMatrix", compiled<+[] { popMatrix(); }>()},
+    {"glLoadIdentity", compiled<+[] { alwaysChange([](StackMatrix& top) { top.loadIdentity(); }); }>()},
+    {"glLoadMatrixf", compiled<+[](const GLfloat* m) { loadMatrix(m); }, 16>()},
+    {"glLoadMatrixd", compiled<+[](const GLdouble* m) { loadMatrix(m); }, 16>()},
+    {"glMultMatrixf", compiled<+[](const GLfloat* m) { multMatrix(m); }, 16>()},
+    {"glMultMatrixd", compiled<+[](const GLdouble* m) { multMatrix(m); }, 16>()},
+    {"glTranslatef", compiled<+[](GLfloat x, GLfloat y, GLfloat z) {
          alwaysChange([&](StackMatrix& top) { top.translate(x, y, z); });
-     })},
-    {"glTranslated", entry(+[](GLdouble x, GLdouble y, GLdouble z) {
+     }>()},
+    {"glTranslated", compiled<+[](GLdouble x, GLdouble y, GLdouble z) {
          alwaysChange([&](StackMatrix& top) { top.translate(F(x), F(y), F(z)); });
-     })},
-    {"glScalef", entry(+[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); })},
-    {"glScaled", entry(+[](GLdouble x, GLdouble y, GLdouble z) {
+     }>()},
+    {"glScalef", compiled<+[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); }>()},
+    {"glScaled", compiled<+[](GLdouble x, GLdouble y, GLdouble z) {
          alwaysChange([&](StackMatrix& top) { top.scale(F(x), F(y), F(z)); });
-     })},
-    {"glRotatef", entry(+[](GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); })},
-    {"glRotated", entry(+[](GLdouble a, GLdouble x, GLdouble y, GLdouble z) { rotate(F(a), F(x), F(y), F(z)); })},
-    {"glFrustum", entry(+[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
+     }>()},
+    {"glRotatef", compiled<+[](GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); }>()},
+    {"glRotated", compiled<+[](GLdouble a, GLdouble x, GLdouble y, GLdouble z) { rotate(F(a), F(x), F(y), F(z)); }>()},
+    {"glFrustum", compiled<+[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
          frustumOrOrtho(true, F(l), F(r), F(b), F(t), F(n), F(f));
-     })},
-    {"glOrtho", entry(+[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
+     }>()},
+    {"glOrtho", compiled<+[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
          frustumOrOrtho(false, F(l), F(r), F(b), F(t), F(n), F(f));
-     })},
+     }>()},
 };
 
 }  // namespace

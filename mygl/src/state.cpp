@@ -2,7 +2,7 @@
 #include <algorithm>
 
 #include "clamp_to_unit.h"
-#include "entry_points.h"
+#include "compiled.h"
 
 namespace mygl {
 namespace {
@@ -142,34 +142,34 @@ void pixelStore(GLenum name, GLint value) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glEnable", entry(+[](GLenum cap) { setCapability(cap, true); })},
-    {"glDisable", entry(+[](GLenum cap) { setCapability(cap, false); })},
+    {"glEnable", compiled<+[](GLenum cap) { setCapability(cap, true); }>()},
+    {"glDisable", compiled<+[](GLenum cap) { setCapability(cap, false); }>()},
     {"glIsEnabled", entry(+[](GLenum cap) { return isEnabled(cap); })},
-    {"glCullFace", entry(+[](GLenum mode) { cullFace(mode); })},
-    {"glFrontFace", entry(+[](GLenum mode) { frontFace(mode); })},
-    {"glDepthFunc", entry(+[](GLenum func) { depthFunc(func); })},
-    {"glDepthMask", entry(+[](GLboolean flag) {
+    {"glCullFace", compiled<+[](GLenum mode) { cullFace(mode); }>()},
+    {"glFrontFace", compiled<+[](GLenum mode) { frontFace(mode); }>()},
+    {"glDepthFunc", compiled<+[](GLenum func) { depthFunc(func); }>()},
+    {"glDepthMask", compiled<+[](GLboolean flag) {
          if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.depthWrite, flag != GL_FALSE);
-     })},
-    {"glShadeModel", entry(+[](GLenum mode) { shadeModel(mode); })},
-    {"glPolygonMode", entry(+[](GLenum face, GLenum mode) { polygonMode(face, mode); })},
-    {"glLineWidth", entry(+[](GLfloat width) {
+     }>()},
+    {"glShadeModel", compiled<+[](GLenum mode) { shadeModel(mode); }>()},
+    {"glPolygonMode", compiled<+[](GLenum face, GLenum mode) { polygonMode(face, mode); }>()},
+    {"glLineWidth", compiled<+[](GLfloat width) {
          if (Context::State* s = currentState()) positiveSize(s->draw.lineWidth, width);
-     })},
-    {"glPointSize", entry(+[](GLfloat size) {
+     }>()},
+    {"glPointSize", compiled<+[](GLfloat size) {
          if (Context::State* s = currentState()) positiveSize(s->draw.pointSize, size);
-     })},
-    {"glViewport", entry(+[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); })},
-    {"glDepthRange", entry(+[](GLdouble n, GLdouble f) { depthRange(n, f); })},
-    {"glClearColor", entry(+[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+     }>()},
+    {"glViewport", compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); }>()},
+    {"glDepthRange", compiled<+[](GLdouble n, GLdouble f) { depthRange(n, f); }>()},
+    {"glClearColor", compiled<+[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
          if (Context::State* s = stateOutsideBeginEnd())
              s->clearColor = {clampToUnit(r), clampToUnit(g), clampToUnit(b), clampToUnit(a)};
-     })},
-    {"glClearDepth", entry(+[](GLdouble depth) {
+     }>()},
+    {"glClearDepth", compiled<+[](GLdouble depth) {
          if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
-     })},
+     }>()},
     {"glPixelStorei", entry(+[](GLenum name, GLint value) { pixelStore(name, value); })},
-    {"glHint", entry(+[](GLenum, GLenum) { stateOutsideBeginEnd(); })},
+    {"glHint", compiled<+[](GLenum, GLenum) { stateOutsideBeginEnd(); }>()},
     {"glGetError", entry(+[]() -> GLenum {
          Context::State* s = stateOutsideBeginEnd();
          if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)

@@ -60,6 +60,16 @@ std::vector<Misuse> misuses() {
         {"glPixelStorei with alignment 3", GL_INVALID_VALUE, [] { glPixelStorei(GL_PACK_ALIGNMENT, 3); }},
         {"glPopMatrix on an empty stack", GL_STACK_UNDERFLOW, [] { glPopMatrix(); }},
         {"glPushMatrix past the modelview depth", GL_STACK_OVERFLOW, [] { for (int i = 0; i < 32; ++i) glPushMatrix(); }},
+        {"glNewList with name 0", GL_INVALID_VALUE, [] { glNewList(0, GL_COMPILE); }},
+        {"glNewList with a bad mode", GL_INVALID_ENUM, [] { glNewList(1, GL_FILL); }},
+        {"glNewList while compiling", GL_INVALID_OPERATION, [] { glNewList(1, GL_COMPILE); glNewList(2, GL_COMPILE); glEndList(); }},
+        {"glNewList inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_POINTS); glNewList(1, GL_COMPILE); glEnd(); }},
+        {"glEndList without glNewList", GL_INVALID_OPERATION, [] { glEndList(); }},
+        {"glGenLists of a negative range", GL_INVALID_VALUE, [] { glGenLists(-1); }},
+        {"glDeleteLists of a negative range", GL_INVALID_VALUE, [] { glDeleteLists(1, -1); }},
+        {"glCallLists with a bad type", GL_INVALID_ENUM, [] { const GLuint n[1] = {1}; glCallLists(1, GL_DOUBLE, n); }},
+        {"glCallLists with a negative count", GL_INVALID_VALUE, [] { const GLuint n[1] = {1}; glCallLists(-1, GL_UNSIGNED_INT, n); }},
+        {"glCallLists with a negative count and a bad type", GL_INVALID_ENUM, [] { const GLuint n[1] = {1}; glCallLists(-1, GL_DOUBLE, n); }},
         {"the first error is kept", GL_INVALID_ENUM, [] { glEnable(0x1234); glViewport(0, 0, -1, -1); }},
     };
 }
@@ -158,13 +168,13 @@ TEST(GlErrors, NotImplementedFunctionsReportThemselvesInsteadOfCrashing) {
     glLightfv(GL_LIGHT0, GL_POSITION, position);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
     glLightfv(GL_LIGHT1, GL_POSITION, position);  // named once per process
-    EXPECT_EQ(glGenLists(2), 0u);                   // a value-returning one returns zero
+    EXPECT_EQ(glRenderMode(GL_SELECT), 0);          // a value-returning one returns zero
     EXPECT_EQ(glIsTexture(1), GL_FALSE);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, position);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
     const std::string said = testing::internal::GetCapturedStderr();
     EXPECT_EQ(said, "MyGL: glLightfv is not implemented yet (GL_INVALID_OPERATION)\n"
-                    "MyGL: glGenLists is not implemented yet (GL_INVALID_OPERATION)\n"
+                    "MyGL: glRenderMode is not implemented yet (GL_INVALID_OPERATION)\n"
                     "MyGL: glIsTexture is not implemented yet (GL_INVALID_OPERATION)\n"
                     "MyGL: glTexImage2D is not implemented yet (GL_INVALID_OPERATION)\n");
     // The program goes on drawing.

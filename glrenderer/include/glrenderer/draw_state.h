@@ -10,6 +10,10 @@ enum class PrimitiveMode : std::uint8_t {
 };
 inline constexpr int kPrimitiveModeCount = 10;
 
+// Where a primitive comes from: the reference compiles display lists into draws of their own,
+// with quads already split into triangles.
+enum class PrimitiveSource : std::uint8_t { Immediate, DisplayList };
+
 enum class Face : std::uint8_t { Front, Back, FrontAndBack };
 enum class CompareFunc : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual,
                                         GreaterEqual, Always };

@@ -1,0 +1,51 @@
+#pragma once
+// Entry points of commands that go into display lists. While a list is being compiled the call
+// is kept in it (with a copy of the data behind a pointer argument: `Count` elements) and, in
+// GL_COMPILE mode, not executed. The implementation is a template argument, so that it is
+// inlined into the entry point and the check costs one branch.
+#include <tuple>
+#include <vector>
+
+#include "entry_points.h"
+
+namespace mygl {
+
+// An argument kept for replay: a value as it is; for a pointer to const data, the `Count`
+// elements behind it (the program's memory may change or be gone when the list runs).
+template <class T>
+struct KeptArgument {
+    T value;
+    KeptArgument(T v, std::size_t) : value(v) {}
+    T get() const { return value; }
+};
+template <class T>
+struct KeptArgument<const T*> {
+    std::vector<T> data;
+    bool null;
+    KeptArgument(const T* p, std::size_t count) : data(p ? std::vector<T>(p, p + count) : std::vector<T>()), null(!p) {}
+    const T* get() const { return null ? nullptr : data.data(); }
+};
+
+template <auto Implementation, std::size_t Count, class Pointer = decltype(Implementation)>
+struct Compiled;
+template <auto Implementation, std::size_t Count, class R, class... Args>
+struct Compiled<Implementation, Count, R (*)(Args...)> {
+    static R call(Args... args) {
+        if (Context::State* s = currentState(); s && s->lists.compiling()) [[unlikely]] {
+            s->lists.add([kept = std::make_tuple(KeptArgument<Args>(args, Count)...)] {
+                std::apply([](const auto&... k) { Implementation(k.get()...); }, kept);
+            });
+            if (!s->lists.executingWhileCompiling()) return R();
+        }
+        return Implementation(args...);
+    }
+};
+
+// The entry point of a command that display lists compile; `Count`: the elements behind its
+// pointer arguments.
+template <auto Implementation, std::size_t Count = 0>
+ProcAddress compiled() {
+    return entry(&Compiled<Implementation, Count>::call);
+}
+
+}  // namespace mygl
