@@ -18,7 +18,7 @@ struct BatchHeader {
     DrawState state;
     Methods methods;
     PrimitiveMode mode = PrimitiveMode::Points;
-    PrimitiveSource source = PrimitiveSource::Immediate;
+    QuadSplit quadSplit = QuadSplit::ByPath;
     bool colorsPerVertex = false;  // glColor was called inside its glBegin/glEnd blocks
 };
 

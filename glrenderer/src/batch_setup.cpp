@@ -75,7 +75,7 @@ void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats)
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
-                           batch.source == PrimitiveSource::DisplayList;
+                           batch.quadSplit == QuadSplit::V1V3;
     const Call call{batch, target, stats};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
                        [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });

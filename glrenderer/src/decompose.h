@@ -27,7 +27,7 @@ bool isTriangleMode(PrimitiveMode mode);
 // flat shading where the draw's vertices carry colors of their own (glColor inside
 // glBegin/glEnd), keeping quads' provoking v3 last in both triangles (with one current color
 // for all vertices it splits flat quads like smooth ones, measured on the depth buffer), and
-// for display lists, whose quads it turns into (0,1,3), (1,2,3) triangles when it compiles them.
+// for quads it has converted into triangles before drawing (QuadSplit::V1V3).
 template <class Emit>
 void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPath path, bool v1v3Quads,
                         Emit&& emit) {

@@ -50,15 +50,15 @@ Pipeline::~Pipeline() = default;
 
 std::size_t Pipeline::batchSize() const { return chunk_->vertices.size() - batch_->first; }
 
-void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode, PrimitiveSource source) {
+void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSplit quadSplit) {
     BatchEntry& batch = *batch_;
-    if (batchSize() > 0 && (mode != batch.mode || source != batch.source || !isMergeable(mode) || !(state == batch.state))) {
+    if (batchSize() > 0 && (mode != batch.mode || quadSplit != batch.quadSplit || !isMergeable(mode) || !(state == batch.state))) {
         endBatch();
     }
     batch.state = state;
     batch.methods = methods_;
     batch.mode = mode;
-    batch.source = source;
+    batch.quadSplit = quadSplit;
     cuttable_ = canCut(batch);
     open_.clear();
 }
@@ -104,7 +104,7 @@ void Pipeline::endPrimitive() {
 }
 
 void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
-    beginPrimitive(state, mode, PrimitiveSource::Immediate);
+    beginPrimitive(state, mode, QuadSplit::ByPath);
     colorPerVertex();  // vertices given whole carry their own colors
     for (const Vertex& vertex : vertices) addVertex() = vertex;
     endPrimitive();

@@ -2,85 +2,19 @@
 // and handed to the pipeline at glEnd.
 #include <array>
 
-#include "clamp_to_unit.h"
 #include "compiled.h"
+#include "vertex_input.h"
 
 namespace mygl {
-namespace {
 
-// Inlined into each glVertex: built in registers there, the position is not stored to the stack
-// in parts and read back whole (a store-forwarding stall that was a third of this function).
-[[gnu::always_inline]] inline void addVertex(const glm::vec4& object) {
-    Context::State* s = currentState();
-    if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
-    glrenderer::Vertex& v = s->pipeline.addVertex();
-    v.position = transform(s->modelviewProjection, object);
-    v.color = s->vertexColor;
-    v.edgeFlag = s->edgeFlag;
-    if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
-        const Matrix& m = s->modelview.top().matrix();
-        v.eye = glm::vec3(transform(m, object));
-        v.normal = {at(m, 0, 0) * s->normal.x + at(m, 0, 1) * s->normal.y + at(m, 0, 2) * s->normal.z,
-                    at(m, 1, 0) * s->normal.x + at(m, 1, 1) * s->normal.y + at(m, 1, 2) * s->normal.z,
-                    at(m, 2, 0) * s->normal.x + at(m, 2, 1) * s->normal.y + at(m, 2, 2) * s->normal.z};
-    }
-}
-
-template <class T>
-[[gnu::always_inline]] inline void vertexv(const T* v, int n) {  // as addVertex
-    if (!v) return;
-    addVertex({static_cast<float>(v[0]), static_cast<float>(v[1]), n > 2 ? static_cast<float>(v[2]) : 0.0f,
-               n > 3 ? static_cast<float>(v[3]) : 1.0f});
-}
-
-// GL clamps a vertex's colour to [0, 1] before it is interpolated (the reference's vertex stage
-// saturates it); the current colour itself stays as given, as glGet reports it.
-[[gnu::always_inline]] inline void setColor(const glm::vec4& c) {  // as addVertex
-    Context::State* s = currentState();
-    if (!s) return;
-    s->color = c;
-    s->vertexColor = {saturate(c.r), saturate(c.g), saturate(c.b), saturate(c.a)};
-    if (s->insideBeginEnd) s->pipeline.colorPerVertex();
-}
-
-// Integer colour and normal components to float as the GL spec (and the reference) converts
-// them: unsigned c to c / (2^b - 1), signed c to (2c + 1) / (2^b - 1).
-float toFloat(GLubyte v) { return static_cast<float>(v) / 255.0f; }
-float toFloat(GLushort v) { return static_cast<float>(v) * (1.0f / 65535.0f); }
-float toFloat(GLuint v) { return static_cast<float>(static_cast<double>(v) * (1.0 / 4294967295.0)); }
-float toFloat(GLbyte v) { return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 255.0f); }
-float toFloat(GLshort v) { return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 65535.0f); }
-// In float, then scaled in double, as the reference's INT_TO_FLOAT (not the exact (2c + 1) / (2^32 - 1)).
-float toFloat(GLint v) { return static_cast<float>((2.0f * static_cast<float>(v) + 1.0f) * (1.0 / 4294967294.0)); }
-float toFloat(GLfloat v) { return v; }
-float toFloat(GLdouble v) { return static_cast<float>(v); }
-
-template <class T>
-[[gnu::always_inline]] inline void colorv(const T* v, int n) {  // as addVertex
-    if (v) setColor({toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f});
-}
-
-template <class T>
-void normalv(const T* v) {
-    if (Context::State* s = currentState(); s && v) s->normal = {toFloat(v[0]), toFloat(v[1]), toFloat(v[2])};
-}
-
-template <class T>
-void texCoordv(const T* v) {
-    if (Context::State* s = currentState(); s && v)
-        s->texCoord = {static_cast<float>(v[0]), static_cast<float>(v[1]), 0.0f, 1.0f};
-}
-
-void begin(GLenum mode) {
+void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     Context::State* s = currentState();
     if (!s) return;
     if (s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);  // before the mode, as every call inside
     if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
     s->updateModelviewProjection();
     s->insideBeginEnd = true;
-    s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode),
-                               s->lists.replaying() ? glrenderer::PrimitiveSource::DisplayList
-                                                    : glrenderer::PrimitiveSource::Immediate);
+    s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
 }
 
 void end() {
@@ -91,12 +25,14 @@ void end() {
     s->pipeline.endPrimitive();
 }
 
+namespace {
+
 // glRect is the quad (x1,y1) (x2,y1) (x2,y2) (x1,y2), as the reference issues it.
 template <class T>
 void rect(T x1, T y1, T x2, T y2) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    begin(GL_QUADS);
+    begin(GL_QUADS, quadSplitOf(*s));
     const float fx1 = static_cast<float>(x1), fy1 = static_cast<float>(y1);
     const float fx2 = static_cast<float>(x2), fy2 = static_cast<float>(y2);
     addVertex({fx1, fy1, 0, 1});
@@ -123,14 +59,16 @@ void rect(T x1, T y1, T x2, T y2) {
     {"glNormal3" #suffix, compiled<+[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }>()},  \
     {"glNormal3" #suffix "v", compiled<+[](const T* v) { normalv(v); }, 3>()}
 #define MYGL_TEXCOORD(suffix, T)                                                                  \
-    {"glTexCoord2" #suffix, compiled<+[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data()); }>()},     \
-    {"glTexCoord2" #suffix "v", compiled<+[](const T* v) { texCoordv(v); }, 2>()}
+    {"glTexCoord2" #suffix, compiled<+[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data(), 2); }>()},     \
+    {"glTexCoord2" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 2); }, 2>()}
 #define MYGL_RECT(suffix, T)                                                                      \
     {"glRect" #suffix, compiled<+[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }>()},               \
     {"glRect" #suffix "v", compiled<+[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); }, 2>()}
 
 const EntryPoint kEntryPoints[] = {
-    {"glBegin", compiled<+[](GLenum mode) { begin(mode); }>()},
+    {"glBegin", compiled<+[](GLenum mode) {
+         if (Context::State* s = currentState()) begin(mode, quadSplitOf(*s));
+     }>()},
     {"glEnd", compiled<+[] { end(); }>()},
     MYGL_VERTEX(s, GLshort), MYGL_VERTEX(i, GLint), MYGL_VERTEX(f, GLfloat), MYGL_VERTEX(d, GLdouble),
     MYGL_COLOR(b, GLbyte), MYGL_COLOR(ub, GLubyte), MYGL_COLOR(s, GLshort), MYGL_COLOR(us, GLushort),

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "client_arrays.h"
 #include "display_lists.h"
 #include "stack_matrix.h"
 #include "mygl/context.h"
@@ -74,6 +75,7 @@ struct Context::State {
     double clearDepth = 1.0;
     int packAlignment = 4, unpackAlignment = 4;
     DisplayLists lists;
+    ClientArrays arrays;
 
     // What the reference does when it validates state before a draw or a read: settle the
     // kinds of the current matrices and form their product.

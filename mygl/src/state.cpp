@@ -43,6 +43,7 @@ GLboolean isEnabled(GLenum cap) {
     if (!s) return GL_FALSE;
     if (cap == GL_CULL_FACE) return s->draw.cullEnabled;
     if (cap == GL_DEPTH_TEST) return s->draw.depthTest;
+    if (const ClientArray* array = s->arrays.find(cap)) return array->enabled;
     if (!isInert(cap)) {
         setError(*s, GL_INVALID_ENUM);
         return GL_FALSE;

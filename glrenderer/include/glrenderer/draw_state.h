@@ -10,9 +10,10 @@ enum class PrimitiveMode : std::uint8_t {
 };
 inline constexpr int kPrimitiveModeCount = 10;
 
-// Where a primitive comes from: the reference compiles display lists into draws of their own,
-// with quads already split into triangles.
-enum class PrimitiveSource : std::uint8_t { Immediate, DisplayList };
+// How a draw's quads become triangles. ByPath: as the reference's direct path or draw module
+// splits them (see decompose.h). V1V3: always (0,1,3), (1,2,3), as the reference's quads arrive
+// already converted into indexed triangles from display lists and glDrawElements.
+enum class QuadSplit : std::uint8_t { ByPath, V1V3 };
 
 enum class Face : std::uint8_t { Front, Back, FrontAndBack };
 enum class CompareFunc : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual,

@@ -37,7 +37,7 @@ public:
     // of batches goes to the batch thread once it holds kPartVertices vertices, and a long
     // primitive of independent filled triangles is cut into parts of that size to go too.
     static constexpr std::size_t kPartVertices = 3072;
-    void beginPrimitive(const DrawState& state, PrimitiveMode mode, PrimitiveSource source);
+    void beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSplit quadSplit);
     // A new vertex of the open primitive, to be filled in place.
     Vertex& addVertex() {
         if (cuttable_ && open_.size() == kPartVertices) handOverPart();

@@ -1,0 +1,298 @@
+// Vertex arrays: the gl*Pointer calls, glEnableClientState, glArrayElement, glDrawArrays,
+// glDrawElements, glInterleavedArrays and glGetPointerv. An element is fed through the same
+// calls as glColor/glNormal/glTexCoord/glEdgeFlag/glVertex; a draw is one glBegin/glEnd of its
+// own, as the reference draws it, leaving the current attributes as they were.
+#include <array>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "client_arrays.h"
+#include "compiled.h"
+#include "vertex_input.h"
+
+namespace mygl {
+namespace {
+
+// The `n` components at `p` (any alignment) handed to `f` as a T*.
+template <class T, class F>
+void withComponents(const void* p, int n, F&& f) {
+    std::array<T, 4> values{};
+    std::memcpy(values.data(), p, static_cast<std::size_t>(n) * sizeof(T));
+    f(values.data());
+}
+
+// Calls f(const T*) with the element's components in the array's type.
+template <class F>
+void withElement(const ClientArray& a, std::size_t i, F&& f) {
+    const void* p = a.element(i);
+    switch (a.type) {
+    case GL_BYTE: return withComponents<GLbyte>(p, a.size, f);
+    case GL_UNSIGNED_BYTE: return withComponents<GLubyte>(p, a.size, f);
+    case GL_SHORT: return withComponents<GLshort>(p, a.size, f);
+    case GL_UNSIGNED_SHORT: return withComponents<GLushort>(p, a.size, f);
+    case GL_INT: return withComponents<GLint>(p, a.size, f);
+    case GL_UNSIGNED_INT: return withComponents<GLuint>(p, a.size, f);
+    case GL_FLOAT: return withComponents<GLfloat>(p, a.size, f);
+    case GL_DOUBLE: return withComponents<GLdouble>(p, a.size, f);
+    default: return;
+    }
+}
+
+// glArrayElement(i): the enabled arrays' values in GL's order, the vertex last.
+void emitElement(const ClientArrays& arrays, std::size_t i) {
+    if (arrays.edgeFlag.enabled) {
+        GLubyte flag = 0;
+        std::memcpy(&flag, arrays.edgeFlag.element(i), 1);
+        if (Context::State* s = currentState()) s->edgeFlag = flag != 0;
+    }
+    if (arrays.texCoord.enabled) withElement(arrays.texCoord, i, [&](const auto* v) { texCoordv(v, arrays.texCoord.size); });
+    if (arrays.color.enabled) withElement(arrays.color, i, [&](const auto* v) { colorv(v, arrays.color.size); });
+    if (arrays.normal.enabled) withElement(arrays.normal, i, [](const auto* v) { normalv(v); });
+    if (arrays.vertex.enabled) withElement(arrays.vertex, i, [&](const auto* v) { vertexv(v, arrays.vertex.size); });
+}
+
+// The elements a draw reads, copied, with arrays that point into the copy: what a display list
+// keeps of glArrayElement, glDrawArrays and glDrawElements (GL reads the arrays when the command
+// is compiled, not when the list runs).
+struct ArraySnapshot {
+    ClientArrays arrays;
+    std::vector<unsigned char> bytes;
+};
+
+std::shared_ptr<const ArraySnapshot> snapshot(const ClientArrays& source, const std::vector<std::size_t>& elements) {
+    auto copy = std::make_shared<ArraySnapshot>();
+    copy->arrays = source;
+    ClientArray* all[] = {&copy->arrays.vertex, &copy->arrays.normal, &copy->arrays.color,
+                          &copy->arrays.index, &copy->arrays.texCoord, &copy->arrays.edgeFlag};
+    std::vector<std::size_t> offsets;
+    for (ClientArray* a : all) {
+        offsets.push_back(copy->bytes.size());
+        if (!a->enabled) continue;
+        const std::size_t elementBytes = static_cast<std::size_t>(a->size) * componentBytes(a->type);
+        for (std::size_t i : elements) {
+            const auto* from = static_cast<const unsigned char*>(a->element(i));
+            copy->bytes.insert(copy->bytes.end(), from, from + elementBytes);
+        }
+        a->stride = 0;
+    }
+    for (std::size_t k = 0; k < std::size(all); ++k) all[k]->pointer = copy->bytes.data() + offsets[k];
+    return copy;
+}
+
+// Draws `elements` of `arrays` as one primitive of `mode`, a draw of its own. The reference
+// converts indexed quads to triangles before it draws them.
+void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, const std::vector<std::size_t>& elements,
+                    bool indexed) {
+    if (!arrays.vertex.enabled) return;  // no positions: nothing is drawn
+    const glm::vec4 color = s.color, vertexColor = s.vertexColor, texCoord = s.texCoord;
+    const glm::vec3 normal = s.normal;
+    const bool edgeFlag = s.edgeFlag;
+    endBatch(s);
+    begin(mode, quadSplitOf(s, indexed));
+    for (std::size_t i : elements) emitElement(arrays, i);
+    end();
+    endBatch(s);
+    s.color = color, s.vertexColor = vertexColor, s.texCoord = texCoord, s.normal = normal, s.edgeFlag = edgeFlag;
+}
+
+// Runs a draw now, or keeps it in the list being compiled (and runs it too in
+// GL_COMPILE_AND_EXECUTE).
+void drawOrCompile(Context::State& s, GLenum mode, std::vector<std::size_t> elements, bool indexed) {
+    if (s.lists.compiling()) {
+        std::vector<std::size_t> order(elements.size());
+        for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+        s.lists.add([mode, kept = snapshot(s.arrays, elements), order, indexed] {
+            if (Context::State* now = stateOutsideBeginEnd()) drawElementsOf(*now, mode, kept->arrays, order, indexed);
+        });
+        if (!s.lists.executingWhileCompiling()) return;
+    }
+    drawElementsOf(s, mode, s.arrays, elements, indexed);
+}
+
+void drawArrays(GLenum mode, GLint first, GLsizei count) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
+    if (first < 0 || count < 0) return setError(*s, GL_INVALID_VALUE);
+    std::vector<std::size_t> elements(static_cast<std::size_t>(count));
+    for (std::size_t k = 0; k < elements.size(); ++k) elements[k] = static_cast<std::size_t>(first) + k;
+    drawOrCompile(*s, mode, std::move(elements), false);
+}
+
+std::size_t readIndex(GLenum type, const void* indices, std::size_t k) {
+    const auto* bytes = static_cast<const unsigned char*>(indices);
+    if (type == GL_UNSIGNED_BYTE) return bytes[k];
+    if (type == GL_UNSIGNED_SHORT) {
+        GLushort index;
+        std::memcpy(&index, bytes + 2 * k, 2);
+        return index;
+    }
+    GLuint index;
+    std::memcpy(&index, bytes + 4 * k, 4);
+    return index;
+}
+
+void drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
+    if (count < 0) return setError(*s, GL_INVALID_VALUE);
+    if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return setError(*s, GL_INVALID_ENUM);
+    if (!indices) return;
+    std::vector<std::size_t> elements(static_cast<std::size_t>(count));
+    for (std::size_t k = 0; k < elements.size(); ++k) elements[k] = readIndex(type, indices, k);
+    drawOrCompile(*s, mode, std::move(elements), true);
+}
+
+// glArrayElement may be called inside glBegin/glEnd (that is what it is for).
+void arrayElement(GLint i) {
+    Context::State* s = currentState();
+    if (!s || i < 0) return;
+    const auto element = static_cast<std::size_t>(i);
+    if (s->lists.compiling()) {
+        s->lists.add([kept = snapshot(s->arrays, {element})] { emitElement(kept->arrays, 0); });
+        if (!s->lists.executingWhileCompiling()) return;
+    }
+    emitElement(s->arrays, element);
+}
+
+// Sets an array after the reference's checks: stride, then type, then size.
+void setPointer(ClientArray& (*select)(ClientArrays&), GLint size, bool sizeValid, GLenum type, bool typeValid,
+                GLsizei stride, const void* pointer) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (stride < 0) return setError(*s, GL_INVALID_VALUE);
+    if (!typeValid) return setError(*s, GL_INVALID_ENUM);
+    if (!sizeValid) return setError(*s, GL_INVALID_VALUE);
+    ClientArray& a = select(s->arrays);
+    a.size = size, a.type = type, a.stride = stride, a.pointer = pointer;
+}
+
+bool isOneOf(GLenum type, std::initializer_list<GLenum> types) {
+    for (GLenum t : types) {
+        if (t == type) return true;
+    }
+    return false;
+}
+
+void enableClientState(GLenum name, bool enabled) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    ClientArray* a = s->arrays.find(name);
+    if (!a) return setError(*s, GL_INVALID_ENUM);
+    a->enabled = enabled;
+}
+
+// glInterleavedArrays' formats: which arrays, their sizes, and the colour type.
+struct InterleavedFormat {
+    GLenum format;
+    int texCoords, colors, normals, vertices;
+    GLenum colorType;
+};
+constexpr InterleavedFormat kInterleavedFormats[] = {
+    {GL_V2F, 0, 0, 0, 2, 0},
+    {GL_V3F, 0, 0, 0, 3, 0},
+    {GL_C4UB_V2F, 0, 4, 0, 2, GL_UNSIGNED_BYTE},
+    {GL_C4UB_V3F, 0, 4, 0, 3, GL_UNSIGNED_BYTE},
+    {GL_C3F_V3F, 0, 3, 0, 3, GL_FLOAT},
+    {GL_N3F_V3F, 0, 0, 3, 3, 0},
+    {GL_C4F_N3F_V3F, 0, 4, 3, 3, GL_FLOAT},
+    {GL_T2F_V3F, 2, 0, 0, 3, 0},
+    {GL_T4F_V4F, 4, 0, 0, 4, 0},
+    {GL_T2F_C4UB_V3F, 2, 4, 0, 3, GL_UNSIGNED_BYTE},
+    {GL_T2F_C3F_V3F, 2, 3, 0, 3, GL_FLOAT},
+    {GL_T2F_N3F_V3F, 2, 0, 3, 3, 0},
+    {GL_T2F_C4F_N3F_V3F, 2, 4, 3, 3, GL_FLOAT},
+    {GL_T4F_C4F_N3F_V4F, 4, 4, 3, 4, GL_FLOAT},
+};
+
+void interleavedArrays(GLenum format, GLsizei stride, const void* pointer) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (stride < 0) return setError(*s, GL_INVALID_VALUE);
+    const InterleavedFormat* f = nullptr;
+    for (const InterleavedFormat& candidate : kInterleavedFormats) {
+        if (candidate.format == format) f = &candidate;
+    }
+    if (!f) return setError(*s, GL_INVALID_ENUM);
+    const auto* base = static_cast<const unsigned char*>(pointer);
+    const std::size_t colorBytes = f->colorType == GL_UNSIGNED_BYTE ? 4 : 4 * static_cast<std::size_t>(f->colors);
+    const std::size_t texBytes = 4 * static_cast<std::size_t>(f->texCoords), normalBytes = 4 * static_cast<std::size_t>(f->normals);
+    const std::size_t total = texBytes + (f->colors ? colorBytes : 0) + normalBytes + 4 * static_cast<std::size_t>(f->vertices);
+    const auto step = stride ? stride : static_cast<GLsizei>(total);
+    ClientArrays& a = s->arrays;
+    a.edgeFlag.enabled = a.index.enabled = false;
+    a.texCoord = {f->texCoords > 0, f->texCoords ? f->texCoords : a.texCoord.size, GL_FLOAT, step, base};
+    a.color = {f->colors > 0, f->colors ? f->colors : a.color.size, f->colors ? f->colorType : a.color.type, step,
+               base + texBytes};
+    const std::size_t normalOffset = texBytes + (f->colors ? colorBytes : 0);
+    a.normal = {f->normals > 0, 3, GL_FLOAT, step, base + normalOffset};
+    a.vertex = {true, f->vertices, GL_FLOAT, step, base + normalOffset + normalBytes};
+    if (!f->texCoords) a.texCoord.pointer = nullptr;
+    if (!f->colors) a.color.pointer = nullptr;
+    if (!f->normals) a.normal.pointer = nullptr;
+}
+
+const void* arrayPointer(const Context::State& s, GLenum name) {
+    switch (name) {
+    case GL_VERTEX_ARRAY_POINTER: return s.arrays.vertex.pointer;
+    case GL_NORMAL_ARRAY_POINTER: return s.arrays.normal.pointer;
+    case GL_COLOR_ARRAY_POINTER: return s.arrays.color.pointer;
+    case GL_INDEX_ARRAY_POINTER: return s.arrays.index.pointer;
+    case GL_TEXTURE_COORD_ARRAY_POINTER: return s.arrays.texCoord.pointer;
+    case GL_EDGE_FLAG_ARRAY_POINTER: return s.arrays.edgeFlag.pointer;
+    default: return nullptr;
+    }
+}
+
+ClientArray& vertexArray(ClientArrays& a) { return a.vertex; }
+ClientArray& normalArray(ClientArrays& a) { return a.normal; }
+ClientArray& colorArray(ClientArrays& a) { return a.color; }
+ClientArray& indexArray(ClientArrays& a) { return a.index; }
+ClientArray& texCoordArray(ClientArrays& a) { return a.texCoord; }
+ClientArray& edgeFlagArray(ClientArrays& a) { return a.edgeFlag; }
+
+const EntryPoint kEntryPoints[] = {
+    {"glVertexPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
+         setPointer(vertexArray, size, size >= 2 && size <= 4, type, isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+     })},
+    {"glNormalPointer", entry(+[](GLenum type, GLsizei stride, const void* p) {
+         setPointer(normalArray, 3, true, type, isOneOf(type, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+     })},
+    {"glColorPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
+         setPointer(colorArray, size, size == 3 || size == 4, type,
+                    isOneOf(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE}),
+                    stride, p);
+     })},
+    {"glIndexPointer", entry(+[](GLenum type, GLsizei stride, const void* p) {
+         setPointer(indexArray, 1, true, type, isOneOf(type, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+     })},
+    {"glTexCoordPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
+         setPointer(texCoordArray, size, size >= 1 && size <= 4, type, isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+     })},
+    {"glEdgeFlagPointer", entry(+[](GLsizei stride, const void* p) {
+         setPointer(edgeFlagArray, 1, true, GL_UNSIGNED_BYTE, true, stride, p);
+     })},
+    {"glEnableClientState", entry(+[](GLenum name) { enableClientState(name, true); })},
+    {"glDisableClientState", entry(+[](GLenum name) { enableClientState(name, false); })},
+    {"glInterleavedArrays", entry(+[](GLenum format, GLsizei stride, const void* p) { interleavedArrays(format, stride, p); })},
+    {"glArrayElement", entry(+[](GLint i) { arrayElement(i); })},
+    {"glDrawArrays", entry(+[](GLenum mode, GLint first, GLsizei count) { drawArrays(mode, first, count); })},
+    {"glDrawElements", entry(+[](GLenum mode, GLsizei count, GLenum type, const void* indices) {
+         drawElements(mode, count, type, indices);
+     })},
+    {"glGetPointerv", entry(+[](GLenum name, void** out) {
+         Context::State* s = stateOutsideBeginEnd();
+         if (!s || !out) return;
+         const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;
+         if (!known) return setError(*s, GL_INVALID_ENUM);
+         *out = const_cast<void*>(arrayPointer(*s, name));
+     })},
+};
+
+}  // namespace
+
+std::span<const EntryPoint> arrayEntryPoints() { return kEntryPoints; }
+
+}  // namespace mygl

@@ -1,0 +1,83 @@
+#pragma once
+// The current vertex attributes and glVertex: what glBegin/glEnd blocks and vertex arrays
+// (glArrayElement, glDrawArrays, glDrawElements) both feed vertices through.
+#include "clamp_to_unit.h"
+#include "context_state.h"
+
+namespace mygl {
+
+// glBegin; `quadSplit` V1V3 for the draws whose quads the reference converts to triangles first.
+void begin(GLenum mode, glrenderer::QuadSplit quadSplit);
+
+// Quads drawn from a display list reach the reference's rasterizer already as triangles.
+inline glrenderer::QuadSplit quadSplitOf(const Context::State& s, bool indexed = false) {
+    return indexed || s.lists.replaying() ? glrenderer::QuadSplit::V1V3 : glrenderer::QuadSplit::ByPath;
+}
+void end();
+
+// Inlined into each glVertex: built in registers there, the position is not stored to the stack
+// in parts and read back whole (a store-forwarding stall that was a third of this function).
+[[gnu::always_inline]] inline void addVertex(const glm::vec4& object) {
+    Context::State* s = currentState();
+    if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
+    glrenderer::Vertex& v = s->pipeline.addVertex();
+    v.position = transform(s->modelviewProjection, object);
+    v.color = s->vertexColor;
+    v.edgeFlag = s->edgeFlag;
+    if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
+        const Matrix& m = s->modelview.top().matrix();
+        v.eye = glm::vec3(transform(m, object));
+        v.normal = {at(m, 0, 0) * s->normal.x + at(m, 0, 1) * s->normal.y + at(m, 0, 2) * s->normal.z,
+                    at(m, 1, 0) * s->normal.x + at(m, 1, 1) * s->normal.y + at(m, 1, 2) * s->normal.z,
+                    at(m, 2, 0) * s->normal.x + at(m, 2, 1) * s->normal.y + at(m, 2, 2) * s->normal.z};
+    }
+}
+
+template <class T>
+[[gnu::always_inline]] inline void vertexv(const T* v, int n) {  // as addVertex
+    if (!v) return;
+    addVertex({static_cast<float>(v[0]), static_cast<float>(v[1]), n > 2 ? static_cast<float>(v[2]) : 0.0f,
+               n > 3 ? static_cast<float>(v[3]) : 1.0f});
+}
+
+// GL clamps a vertex's colour to [0, 1] before it is interpolated (the reference's vertex stage
+// saturates it); the current colour itself stays as given, as glGet reports it.
+[[gnu::always_inline]] inline void setColor(const glm::vec4& c) {  // as addVertex
+    Context::State* s = currentState();
+    if (!s) return;
+    s->color = c;
+    s->vertexColor = {saturate(c.r), saturate(c.g), saturate(c.b), saturate(c.a)};
+    if (s->insideBeginEnd) s->pipeline.colorPerVertex();
+}
+
+// Integer colour and normal components to float as the GL spec (and the reference) converts
+// them: unsigned c to c / (2^b - 1), signed c to (2c + 1) / (2^b - 1).
+inline float toFloat(GLubyte v) { return static_cast<float>(v) / 255.0f; }
+inline float toFloat(GLushort v) { return static_cast<float>(v) * (1.0f / 65535.0f); }
+inline float toFloat(GLuint v) { return static_cast<float>(static_cast<double>(v) * (1.0 / 4294967295.0)); }
+inline float toFloat(GLbyte v) { return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 255.0f); }
+inline float toFloat(GLshort v) { return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 65535.0f); }
+// In float, then scaled in double, as the reference's INT_TO_FLOAT (not the exact (2c + 1) / (2^32 - 1)).
+inline float toFloat(GLint v) { return static_cast<float>((2.0f * static_cast<float>(v) + 1.0f) * (1.0 / 4294967294.0)); }
+inline float toFloat(GLfloat v) { return v; }
+inline float toFloat(GLdouble v) { return static_cast<float>(v); }
+
+template <class T>
+[[gnu::always_inline]] inline void colorv(const T* v, int n) {  // as addVertex
+    if (v) setColor({toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f});
+}
+
+template <class T>
+inline void normalv(const T* v) {
+    if (Context::State* s = currentState(); s && v) s->normal = {toFloat(v[0]), toFloat(v[1]), toFloat(v[2])};
+}
+
+template <class T>
+inline void texCoordv(const T* v, int n) {
+    if (Context::State* s = currentState(); s && v) {
+        s->texCoord = {static_cast<float>(v[0]), n > 1 ? static_cast<float>(v[1]) : 0.0f,
+                       n > 2 ? static_cast<float>(v[2]) : 0.0f, n > 3 ? static_cast<float>(v[3]) : 1.0f};
+    }
+}
+
+}  // namespace mygl
