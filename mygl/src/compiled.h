@@ -30,14 +30,19 @@ template <auto Implementation, std::size_t Count, class Pointer = decltype(Imple
 struct Compiled;
 template <auto Implementation, std::size_t Count, class R, class... Args>
 struct Compiled<Implementation, Count, R (*)(Args...)> {
-    static R call(Args... args) {
+    [[gnu::flatten]] static R call(Args... args) {
         if (Context::State* s = currentState(); s && s->lists.compiling()) [[unlikely]] {
-            s->lists.add([kept = std::make_tuple(KeptArgument<Args>(args, Count)...)] {
-                std::apply([](const auto&... k) { Implementation(k.get()...); }, kept);
-            });
+            keep(*s, args...);
             if (!s->lists.executingWhileCompiling()) return R();
         }
         return Implementation(args...);
+    }
+
+    // Out of line, so that the usual path (not compiling) saves no registers for it.
+    [[gnu::noinline, gnu::cold]] static void keep(Context::State& s, Args... args) {
+        s.lists.add([kept = std::make_tuple(KeptArgument<Args>(args, Count)...)] {
+            std::apply([](const auto&... k) { Implementation(k.get()...); }, kept);
+        });
     }
 };
 

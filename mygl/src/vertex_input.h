@@ -46,7 +46,7 @@ template <class T>
     Context::State* s = currentState();
     if (!s) return;
     s->color = c;
-    s->vertexColor = {saturate(c.r), saturate(c.g), saturate(c.b), saturate(c.a)};
+    s->vertexColor = saturate(c);
     if (s->insideBeginEnd) s->pipeline.colorPerVertex();
 }
 

@@ -39,7 +39,7 @@ public:
     static constexpr std::size_t kPartVertices = 3072;
     void beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSplit quadSplit);
     // A new vertex of the open primitive, to be filled in place.
-    Vertex& addVertex() {
+    [[gnu::always_inline]] Vertex& addVertex() {
         if (cuttable_ && open_.size() == kPartVertices) handOverPart();
         return open_.emplace_back();
     }
