@@ -1,6 +1,7 @@
 // glBegin/glEnd and the per-vertex calls: vertices are transformed to clip space as they arrive
 // and handed to the pipeline at glEnd.
 #include <array>
+#include <type_traits>
 
 #include "clamp_to_unit.h"
 #include "entry_points.h"
@@ -10,9 +11,11 @@ namespace {
 
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
-[[gnu::always_inline]] inline void addVertex(const glm::vec4& object) {
+// `size`: glVertex2, 3 or 4.
+[[gnu::always_inline]] inline void addVertex(const glm::vec4& object, int size) {
     Context::State* s = currentState();
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
+    s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
     glrenderer::Vertex& v = s->pipeline.addVertex();
     v.position = transform(s->modelviewProjection, object);
     v.color = s->vertexColor;
@@ -30,14 +33,17 @@ template <class T>
 [[gnu::always_inline]] inline void vertexv(const T* v, int n) {  // as addVertex
     if (!v) return;
     addVertex({static_cast<float>(v[0]), static_cast<float>(v[1]), n > 2 ? static_cast<float>(v[2]) : 0.0f,
-               n > 3 ? static_cast<float>(v[3]) : 1.0f});
+               n > 3 ? static_cast<float>(v[3]) : 1.0f},
+              n);
 }
 
 // GL clamps a vertex's colour to [0, 1] before it is interpolated (the reference's vertex stage
 // saturates it); the current colour itself stays as given, as glGet reports it.
-[[gnu::always_inline]] inline void setColor(const glm::vec4& c) {  // as addVertex
+// `size`: as the reference stores it (see glrenderer::VertexAttribute).
+[[gnu::always_inline]] inline void setColor(const glm::vec4& c, int size) {  // as addVertex
     Context::State* s = currentState();
     if (!s) return;
+    s->pipeline.attribute(glrenderer::VertexAttribute::Color, size);
     s->color = c;
     s->vertexColor = {saturate(c.r), saturate(c.g), saturate(c.b), saturate(c.a)};
     if (s->insideBeginEnd) s->pipeline.colorPerVertex();
@@ -57,18 +63,32 @@ float toFloat(GLdouble v) { return static_cast<float>(v); }
 
 template <class T>
 [[gnu::always_inline]] inline void colorv(const T* v, int n) {  // as addVertex
-    if (v) setColor({toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f});
+    // The reference passes glColor3 of any type but float on as glColor4f(r, g, b, 1).
+    const int size = n == 3 && std::is_same_v<T, GLfloat> ? 3 : 4;
+    if (v) setColor({toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f}, size);
 }
 
 template <class T>
 void normalv(const T* v) {
-    if (Context::State* s = currentState(); s && v) s->normal = {toFloat(v[0]), toFloat(v[1]), toFloat(v[2])};
+    Context::State* s = currentState();
+    if (!s || !v) return;
+    s->pipeline.attribute(glrenderer::VertexAttribute::Normal, 3);
+    s->normal = {toFloat(v[0]), toFloat(v[1]), toFloat(v[2])};
 }
 
 template <class T>
 void texCoordv(const T* v) {
-    if (Context::State* s = currentState(); s && v)
-        s->texCoord = {static_cast<float>(v[0]), static_cast<float>(v[1]), 0.0f, 1.0f};
+    Context::State* s = currentState();
+    if (!s || !v) return;
+    s->pipeline.attribute(glrenderer::VertexAttribute::TexCoord, 2);
+    s->texCoord = {static_cast<float>(v[0]), static_cast<float>(v[1]), 0.0f, 1.0f};
+}
+
+void edgeFlag(GLboolean flag) {
+    Context::State* s = currentState();
+    if (!s) return;
+    s->pipeline.attribute(glrenderer::VertexAttribute::EdgeFlag, 1);
+    s->edgeFlag = flag != GL_FALSE;
 }
 
 void begin(GLenum mode) {
@@ -97,10 +117,10 @@ void rect(T x1, T y1, T x2, T y2) {
     begin(GL_QUADS);
     const float fx1 = static_cast<float>(x1), fy1 = static_cast<float>(y1);
     const float fx2 = static_cast<float>(x2), fy2 = static_cast<float>(y2);
-    addVertex({fx1, fy1, 0, 1});
-    addVertex({fx2, fy1, 0, 1});
-    addVertex({fx2, fy2, 0, 1});
-    addVertex({fx1, fy2, 0, 1});
+    addVertex({fx1, fy1, 0, 1}, 2);
+    addVertex({fx2, fy1, 0, 1}, 2);
+    addVertex({fx2, fy2, 0, 1}, 2);
+    addVertex({fx1, fy2, 0, 1}, 2);
     end();
 }
 
@@ -137,11 +157,9 @@ const EntryPoint kEntryPoints[] = {
     MYGL_NORMAL(d, GLdouble),
     MYGL_TEXCOORD(s, GLshort), MYGL_TEXCOORD(i, GLint), MYGL_TEXCOORD(f, GLfloat), MYGL_TEXCOORD(d, GLdouble),
     MYGL_RECT(s, GLshort), MYGL_RECT(i, GLint), MYGL_RECT(f, GLfloat), MYGL_RECT(d, GLdouble),
-    {"glEdgeFlag", entry(+[](GLboolean flag) {
-         if (Context::State* s = currentState()) s->edgeFlag = flag != GL_FALSE;
-     })},
+    {"glEdgeFlag", entry(+[](GLboolean flag) { edgeFlag(flag); })},
     {"glEdgeFlagv", entry(+[](const GLboolean* flag) {
-         if (Context::State* s = currentState(); s && flag) s->edgeFlag = *flag != GL_FALSE;
+         if (flag) edgeFlag(*flag);
      })},
 };
 
