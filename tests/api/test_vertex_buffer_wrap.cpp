@@ -162,16 +162,18 @@ TEST(VertexBufferWrap, StripsFansAndPolygonsGoOnInTheNextPart) {
 }
 
 TEST(VertexBufferWrap, LongLineLoopsCloseOnTheirFirstVertex) {
-    // 70000 vertices of 8 bytes wrap once: after vertex 65534 in a new buffer, after 35534
-    // when 30000 points came first (a second wrap: see the next test).
-    for (const int used : {0, 30000}) {
+    // 70000 vertices of 12 bytes wrap once: after vertex 43688 in a new buffer, after 37022
+    // when 10000 points came first (for a second wrap see the next test).
+    for (const int used : {0, 10000}) {
         expectSameFrames(
             [&] {
                 if (used > 0) useBuffer(used);
                 glBegin(GL_LINE_LOOP);
                 for (int i = 0; i < 70000; ++i) {
-                    const float angle = static_cast<float>(i) * 0.0137f;
-                    glVertex2f(0.95f * std::cos(angle) * wave(i, 1), 0.95f * std::sin(angle * 1.01f));
+                    // Inside the window until the last few hundred vertices, which cross its edge:
+                    // only the draws of the last part go through the clipper.
+                    const float angle = static_cast<float>(i) * 0.0137f, reach = i > 69700 ? 1.3f : 0.95f;
+                    glVertex3f(reach * std::cos(angle) * wave(i, 1), 0.95f * std::sin(angle * 1.01f), wave(i, 2) - 0.5f);
                 }
                 glEnd();
             },
