@@ -37,7 +37,8 @@ public:
     // glBegin: attributes set since the last flush without a vertex are not kept in the format.
     void beginPrimitive();
     // Whether the next vertex must go to a new part of the buffer: the last one filled it.
-    bool full() const { return vertices_ > 0 && vertices_ >= maxVertices_; }
+    // (Vertices given without a format, by Pipeline::submit, never fill it.)
+    bool full() const { return maxVertices_ > 0 && vertices_ >= maxVertices_; }
     void addVertex() { ++vertices_; }
     // The full buffer is drawn; the open primitive goes on with `carried` vertices copied.
     void wrap(std::size_t carried);
