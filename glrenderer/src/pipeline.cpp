@@ -31,6 +31,16 @@ bool canCut(const BatchHeader& batch) {
 constexpr std::size_t kChunks = 4;
 constexpr std::size_t kChunkBatches = 256;
 
+// The reference's state tracker gives a culled face the other face's polygon mode (Mesa
+// st_atom_rasterizer.c, "simplify when culling is active"): with the culled face's mode LINE or
+// POINT and the other FILL, the draw is a filled one (its path, its quads' diagonal, its culling).
+DrawState withCulledFaceModes(DrawState state) {
+    if (!state.cullEnabled) return state;
+    if (state.cullFace != Face::Back) state.polygonFront = state.polygonBack;
+    if (state.cullFace != Face::Front) state.polygonBack = state.polygonFront;
+    return state;
+}
+
 std::unique_ptr<BatchChunk> makeChunk() {
     return std::make_unique<BatchChunk>(kChunkVertices, kChunkBatches);
 }
@@ -53,8 +63,9 @@ std::size_t Pipeline::batchSize() const { return chunk_->vertices.size() - batch
 
 void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode) {
     BatchEntry& batch = *batch_;
-    if (batchSize() > 0 && (mode != batch.mode || !isMergeable(mode) || !(state == batch.state))) closeBatch();
-    batch.state = state;
+    const DrawState drawn = withCulledFaceModes(state);
+    if (batchSize() > 0 && (mode != batch.mode || !isMergeable(mode) || !(drawn == batch.state))) closeBatch();
+    batch.state = drawn;
     batch.methods = methods_;
     batch.mode = mode;
     cuttable_ = canCut(batch);

@@ -81,3 +81,36 @@ TEST(DrawModuleCulling, ClippedSliversFaceAsTheReferenceDecides) {
         EXPECT_EQ(frames.mygl, frames.osmesa) << sliver.positions[0][0];
     }
 }
+
+TEST(DrawModuleCulling, ACulledFaceTakesTheOtherFacesPolygonMode) {
+    // Back-facing quads, filled, with the culled front faces in LINE or POINT mode: the reference
+    // draws them as plain filled quads (direct path, v0-v2 diagonal), not through its unfilled
+    // stage. Smooth colors and a bent depth show the diagonal.
+    for (const GLenum culled : {GL_LINE, GL_POINT}) {
+        for (const GLenum face : {GL_FRONT, GL_BACK}) {
+            const auto frames = onBothBackends<Frame>(
+                [&] {
+                    glEnable(GL_DEPTH_TEST);
+                    glEnable(GL_CULL_FACE);
+                    glCullFace(face);
+                    glPolygonMode(face, culled);
+                    glPolygonMode(face == GL_FRONT ? GL_BACK : GL_FRONT, GL_FILL);
+                    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+                    glBegin(GL_QUADS);
+                    const GLfloat corners[4][2] = {{-0.9f, -0.8f}, {0.85f, -0.9f}, {0.8f, 0.9f}, {-0.85f, 0.8f}};
+                    const GLfloat depths[4] = {0.9f, -0.7f, 0.8f, -0.9f};
+                    for (int i = 0; i < 4; ++i) {
+                        // Counter-clockwise for a culled back face, clockwise for a culled front face.
+                        const int corner = face == GL_BACK ? i : 3 - i;
+                        glColor3f(static_cast<GLfloat>(corner % 2), static_cast<GLfloat>(corner / 2),
+                                  static_cast<GLfloat>(corner == 1));
+                        glVertex3f(corners[corner][0], corners[corner][1], depths[corner]);
+                    }
+                    glEnd();
+                    return readFrame(kSize, kSize);
+                },
+                kSize, kSize);
+            EXPECT_EQ(frames.mygl, frames.osmesa) << culled << " " << face;
+        }
+    }
+}
