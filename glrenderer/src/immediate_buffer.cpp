@@ -1,7 +1,7 @@
 // The rules of Mesa 22.3's src/mesa/vbo: vbo_exec_api.c (vbo_exec_wrap_buffers, vbo_exec_vtx_wrap,
 // vbo_exec_wrap_upgrade_vertex, _mesa_Begin/_mesa_End, vbo_exec_FlushVertices_internal),
 // vbo_exec_draw.c (vbo_exec_vtx_flush, vbo_exec_buffer_has_space), vbo_private.h
-// (vbo_compute_max_verts), vbo_utils.c (vbo_copy_vertices); confirmed against OSMesa by
+// (vbo_compute_max_verts), vbo_exec.c (vbo_merge_draws, vbo_copy_vertices); confirmed against OSMesa by
 // tests/api/test_vertex_buffer_wrap.cpp.
 #include "glrenderer/immediate_buffer.h"
 
