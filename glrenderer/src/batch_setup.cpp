@@ -76,7 +76,9 @@ void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats)
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const Call call{batch, target, stats};
+    const Call call{batch, target, stats,
+                    path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
+                        batch.methods.culling == CullMethod::WindowArea};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
                        [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
@@ -138,6 +140,13 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
     if (!isUsable(v0) || !isUsable(v1) || !isUsable(v2)) {
         ++call.stats.clippedAway;
         return;
+    }
+    if (call.drawModuleCulls) {
+        const Facing facing = drawModuleFacing(drawModuleDeterminant(v0, v1, v2), state.frontFaceCCW);
+        if (isCulled(state, facing)) {
+            ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
+            return;
+        }
     }
     SetupTriangle triangle{{v0, v1, v2}, {snap(v0), snap(v1), snap(v2)}, 0, flatColor};
     triangle.area = fixedArea(triangle.fixed[0], triangle.fixed[1], triangle.fixed[2]);

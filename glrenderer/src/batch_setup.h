@@ -47,6 +47,9 @@ private:
         const Batch& batch;
         TriangleTarget& target;
         Stats& stats;
+        // The batch goes through the reference's draw module with culling on: its cull stage
+        // decides first, by drawModuleFacing.
+        bool drawModuleCulls = false;
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,

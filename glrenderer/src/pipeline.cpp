@@ -4,6 +4,7 @@
 #include "batch_drawer.h"
 #include "batch_thread.h"
 #include "decompose.h"
+#include "glrenderer/immediate_buffer.h"
 #include "thread_count.h"
 
 namespace glrenderer {
@@ -30,6 +31,16 @@ bool canCut(const BatchHeader& batch) {
 constexpr std::size_t kChunks = 4;
 constexpr std::size_t kChunkBatches = 256;
 
+// The reference's state tracker gives a culled face the other face's polygon mode (Mesa
+// st_atom_rasterizer.c, "simplify when culling is active"): with the culled face's mode LINE or
+// POINT and the other FILL, the draw is a filled one (its path, its quads' diagonal, its culling).
+DrawState withCulledFaceModes(DrawState state) {
+    if (!state.cullEnabled) return state;
+    if (state.cullFace != Face::Back) state.polygonFront = state.polygonBack;
+    if (state.cullFace != Face::Front) state.polygonBack = state.polygonFront;
+    return state;
+}
+
 std::unique_ptr<BatchChunk> makeChunk() {
     return std::make_unique<BatchChunk>(kChunkVertices, kChunkBatches);
 }
@@ -52,29 +63,68 @@ std::size_t Pipeline::batchSize() const { return chunk_->vertices.size() - batch
 
 void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSplit quadSplit) {
     BatchEntry& batch = *batch_;
-    if (batchSize() > 0 && (mode != batch.mode || quadSplit != batch.quadSplit || !isMergeable(mode) || !(state == batch.state))) {
-        endBatch();
+    const DrawState drawn = withCulledFaceModes(state);
+    if (batchSize() > 0 &&
+        (mode != batch.mode || quadSplit != batch.quadSplit || !isMergeable(mode) || !(drawn == batch.state))) {
+        closeBatch();
     }
-    batch.state = state;
+    batch.state = drawn;
     batch.methods = methods_;
     batch.mode = mode;
     batch.quadSplit = quadSplit;
     cuttable_ = canCut(batch);
+    insidePrimitive_ = true;
+    loopContinued_ = false;
     open_.clear();
+    buffer_.beginPrimitive();
 }
 
 void Pipeline::keepOpenVertices(std::size_t count) {
-    submitted_.vertices += count;
     const auto end = open_.begin() + static_cast<std::ptrdiff_t>(count);
     chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), end);
     open_.erase(open_.begin(), end);
 }
 
+void Pipeline::closeBatchInPrimitive() {
+    const bool colors = batch_->colorsPerVertex;  // a full buffer keeps the reference's vertex format
+    closeBatch();
+    batch_->colorsPerVertex = colors;
+}
+
 void Pipeline::handOverPart() {
     keepOpenVertices(open_.size());
-    const bool colors = batch_->colorsPerVertex;  // a full buffer keeps the reference's vertex format
-    endBatch();
-    batch_->colorsPerVertex = colors;
+    closeBatchInPrimitive();
+}
+
+std::size_t Pipeline::wrapOpenPrimitive() {
+    const PrimitiveMode mode = batch_->mode;
+    const std::size_t count = open_.size();
+    const WrapSplit split = splitAtWrap(mode, count, loopContinued_);
+    std::array<Vertex, 3> carried;
+    for (std::size_t i = 0; i < split.carriedCount; ++i) carried[i] = open_[split.carried[i]];
+    open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(split.drawnFirst));
+    open_.resize(split.drawnCount);
+    if (mode == PrimitiveMode::LineLoop) batch_->mode = PrimitiveMode::LineStrip;
+    keepOpenVertices(usableVertexCount(batch_->mode, open_.size()));
+    closeBatchInPrimitive();
+    batch_->mode = mode;
+    // (A part that carries all its vertices over starts the primitive again as it was.)
+    if (mode == PrimitiveMode::LineLoop && split.carriedCount < count) loopContinued_ = true;
+    open_.assign(carried.begin(), carried.begin() + static_cast<std::ptrdiff_t>(split.carriedCount));
+    return split.carriedCount;
+}
+
+void Pipeline::wrapBuffer() { buffer_.wrap(wrapOpenPrimitive()); }
+
+void Pipeline::widen(VertexAttribute attribute, int size) {
+    std::size_t carried = 0;
+    if (insidePrimitive_) {
+        if (buffer_.full()) wrapBuffer();
+        if (buffer_.hasVertices()) carried = wrapOpenPrimitive();
+    } else if (buffer_.hasVertices()) {
+        closeBatch();
+    }
+    buffer_.widen(attribute, size, insidePrimitive_, carried);
 }
 
 void Pipeline::colorPerVertex() {
@@ -82,24 +132,36 @@ void Pipeline::colorPerVertex() {
     // The open quads' whole quads so far belong to the draw without colors (the reference
     // carries only an incomplete quad over).
     if (batch_->mode == PrimitiveMode::Quads) keepOpenVertices(open_.size() - open_.size() % 4);
-    endBatch();
+    closeBatch();
     batch_->colorsPerVertex = true;
 }
 
 void Pipeline::endPrimitive() {
+    if (buffer_.full()) wrapBuffer();
+    const std::size_t inBuffer = open_.size();
+    // A GL_LINE_LOOP that wrapped ends as a line strip back to its first vertex.
+    const bool loopClosed = batch_->mode == PrimitiveMode::LineLoop && loopContinued_;
+    if (loopClosed) {
+        open_.push_back(open_.front());
+        open_.erase(open_.begin());
+        batch_->mode = PrimitiveMode::LineStrip;
+    }
     const BatchEntry& batch = *batch_;
     const std::size_t count = open_.size();
-    ++submitted_.primitivesByMode[static_cast<std::size_t>(batch.mode)];
+    ++submitted_.primitivesByMode[static_cast<std::size_t>(loopClosed ? PrimitiveMode::LineLoop : batch.mode)];
     const std::size_t usable = usableVertexCount(batch.mode, count);
-    submitted_.vertices += count - usable;  // dropped, but submitted
     keepOpenVertices(usable);
     open_.clear();
     cuttable_ = false;
+    insidePrimitive_ = false;
     // The reference keeps an incomplete tail's vertices in its buffer, so the next block is not
     // contiguous and is not merged: dropping vertices ends the batch (measured with OSMesa).
     const bool droppedVertices = usable < count;
-    if (!isMergeable(batch.mode) || droppedVertices || (canCut(batch) && batchSize() >= kPartVertices)) {
-        endBatch();
+    if (buffer_.endPrimitive(batch.mode, inBuffer, loopClosed)) {
+        closeBatch();
+        buffer_.flush();
+    } else if (!isMergeable(batch.mode) || droppedVertices || (canCut(batch) && batchSize() >= kPartVertices)) {
+        closeBatch();
     }
 }
 
@@ -111,6 +173,11 @@ void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<cons
 }
 
 void Pipeline::endBatch() {
+    buffer_.flushAndReset();
+    closeBatch();
+}
+
+void Pipeline::closeBatch() {
     if (batchSize() == 0) return;
     batch_->count = batchSize();
     chunk_->batches.push_back(*batch_);
@@ -131,7 +198,7 @@ void Pipeline::handOverChunk() {
 }
 
 void Pipeline::drawSubmitted() {
-    endBatch();
+    closeBatch();
     handOverChunk();
     if (thread_) thread_->wait();
     drawer_->flushTriangles();
@@ -141,6 +208,7 @@ void Pipeline::drawSubmitted() {
 }
 
 void Pipeline::finish() {
+    buffer_.flushAndReset();
     drawSubmitted();
     drawer_->flush();
 }
@@ -154,6 +222,7 @@ void Pipeline::resetStats() {
 }
 
 void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
+    buffer_.flushAndReset();
     drawSubmitted();
     drawer_->clearAtFlush(color, rgba, depth, depth24);
 }

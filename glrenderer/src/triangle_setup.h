@@ -37,6 +37,21 @@ inline Facing facingOf(std::int64_t area, bool frontFaceCCW) {
     return counterClockwise == frontFaceCCW ? Facing::Front : Facing::Back;
 }
 
+// The facing the reference's draw module gives a triangle that goes through it (a draw with a
+// vertex to clip, or an unfilled polygon mode), before and besides setup's (draw_pipe_cull.c):
+// the float determinant of the window positions in the order the triangle reaches the stage,
+// with e = v0 - v2 and f = v1 - v2. Negative is counter-clockwise in GL's window; zero area
+// counts as back-facing.
+inline float drawModuleDeterminant(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2) {
+    const float ex = v0.x - v2.x, ey = v0.y - v2.y;
+    const float fx = v1.x - v2.x, fy = v1.y - v2.y;
+    return ex * fy - ey * fx;
+}
+
+inline Facing drawModuleFacing(float determinant, bool frontFaceCCW) {
+    return determinant != 0.0f && (determinant < 0.0f) == frontFaceCCW ? Facing::Front : Facing::Back;
+}
+
 // A linear function of the pixel position, a(x, y) = a0 + dadx * x + dady * y, evaluated at the
 // pixel's integer coordinates (a0 already holds the half-pixel offset) with the reference's fma.
 struct AttributePlane {

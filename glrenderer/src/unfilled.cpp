@@ -6,6 +6,7 @@
 #include "clip.h"
 #include "raster_line.h"
 #include "raster_point.h"
+#include "triangle_setup.h"
 
 namespace glrenderer {
 namespace {
@@ -113,11 +114,8 @@ public:
         const WindowVertex& w0 = a.window;
         const WindowVertex& w1 = b.window;
         const WindowVertex& w2 = c.window;
-        const float ex = w0.x - w2.x, ey = w0.y - w2.y;
-        const float fx = w1.x - w2.x, fy = w1.y - w2.y;
-        const float det = ex * fy - ey * fx;
-        // det < 0 is counter-clockwise in GL's window; zero area counts as back-facing.
-        const bool front = det != 0.0f && (det < 0.0f) == state_.frontFaceCCW;
+        const float det = drawModuleDeterminant(w0, w1, w2);
+        const bool front = drawModuleFacing(det, state_.frontFaceCCW) == Facing::Front;
         if (state_.cullEnabled &&
             (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front)) {
             ++(front ? stats_.culledFront : stats_.culledBack);

@@ -44,7 +44,7 @@ void emitElement(const ClientArrays& arrays, std::size_t i) {
     if (arrays.edgeFlag.enabled) {
         GLubyte flag = 0;
         std::memcpy(&flag, arrays.edgeFlag.element(i), 1);
-        if (Context::State* s = currentState()) s->edgeFlag = flag != 0;
+        setEdgeFlag(flag != 0);
     }
     if (arrays.texCoord.enabled) withElement(arrays.texCoord, i, [&](const auto* v) { texCoordv(v, arrays.texCoord.size); });
     if (arrays.color.enabled) withElement(arrays.color, i, [&](const auto* v) { colorv(v, arrays.color.size); });

@@ -35,10 +35,10 @@ void rect(T x1, T y1, T x2, T y2) {
     begin(GL_QUADS, quadSplitOf(*s));
     const float fx1 = static_cast<float>(x1), fy1 = static_cast<float>(y1);
     const float fx2 = static_cast<float>(x2), fy2 = static_cast<float>(y2);
-    addVertex({fx1, fy1, 0, 1});
-    addVertex({fx2, fy1, 0, 1});
-    addVertex({fx2, fy2, 0, 1});
-    addVertex({fx1, fy2, 0, 1});
+    addVertex({fx1, fy1, 0, 1}, 2);
+    addVertex({fx2, fy1, 0, 1}, 2);
+    addVertex({fx2, fy2, 0, 1}, 2);
+    addVertex({fx1, fy2, 0, 1}, 2);
     end();
 }
 
@@ -77,11 +77,9 @@ const EntryPoint kEntryPoints[] = {
     MYGL_NORMAL(d, GLdouble),
     MYGL_TEXCOORD(s, GLshort), MYGL_TEXCOORD(i, GLint), MYGL_TEXCOORD(f, GLfloat), MYGL_TEXCOORD(d, GLdouble),
     MYGL_RECT(s, GLshort), MYGL_RECT(i, GLint), MYGL_RECT(f, GLfloat), MYGL_RECT(d, GLdouble),
-    {"glEdgeFlag", compiled<+[](GLboolean flag) {
-         if (Context::State* s = currentState()) s->edgeFlag = flag != GL_FALSE;
-     }>()},
+    {"glEdgeFlag", compiled<+[](GLboolean flag) { setEdgeFlag(flag != GL_FALSE); }>()},
     {"glEdgeFlagv", compiled<+[](const GLboolean* flag) {
-         if (Context::State* s = currentState(); s && flag) s->edgeFlag = *flag != GL_FALSE;
+         if (flag) setEdgeFlag(*flag != GL_FALSE);
      }, 1>()},
 };
 

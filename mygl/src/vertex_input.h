@@ -1,6 +1,8 @@
 #pragma once
 // The current vertex attributes and glVertex: what glBegin/glEnd blocks and vertex arrays
 // (glArrayElement, glDrawArrays, glDrawElements) both feed vertices through.
+#include <type_traits>
+
 #include "clamp_to_unit.h"
 #include "context_state.h"
 
@@ -17,9 +19,11 @@ void end();
 
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
-[[gnu::always_inline]] inline void addVertex(const glm::vec4& object) {
+// `size`: glVertex2, 3 or 4.
+[[gnu::always_inline]] inline void addVertex(const glm::vec4& object, int size) {
     Context::State* s = currentState();
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
+    s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
     glrenderer::Vertex& v = s->pipeline.addVertex();
     v.position = transform(s->modelviewProjection, object);
     v.color = s->vertexColor;
@@ -37,14 +41,17 @@ template <class T>
 [[gnu::always_inline]] inline void vertexv(const T* v, int n) {  // as addVertex
     if (!v) return;
     addVertex({static_cast<float>(v[0]), static_cast<float>(v[1]), n > 2 ? static_cast<float>(v[2]) : 0.0f,
-               n > 3 ? static_cast<float>(v[3]) : 1.0f});
+               n > 3 ? static_cast<float>(v[3]) : 1.0f},
+              n);
 }
 
 // GL clamps a vertex's colour to [0, 1] before it is interpolated (the reference's vertex stage
 // saturates it); the current colour itself stays as given, as glGet reports it.
-[[gnu::always_inline]] inline void setColor(const glm::vec4& c) {  // as addVertex
+// `size`: as the reference stores it (see glrenderer::VertexAttribute).
+[[gnu::always_inline]] inline void setColor(const glm::vec4& c, int size) {  // as addVertex
     Context::State* s = currentState();
     if (!s) return;
+    s->pipeline.attribute(glrenderer::VertexAttribute::Color, size);
     s->color = c;
     s->vertexColor = saturate(c);
     if (s->insideBeginEnd) s->pipeline.colorPerVertex();
@@ -64,20 +71,33 @@ inline float toFloat(GLdouble v) { return static_cast<float>(v); }
 
 template <class T>
 [[gnu::always_inline]] inline void colorv(const T* v, int n) {  // as addVertex
-    if (v) setColor({toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f});
+    // The reference passes glColor3 of any type but float on as glColor4f(r, g, b, 1).
+    const int size = n == 3 && std::is_same_v<T, GLfloat> ? 3 : 4;
+    if (v) setColor({toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f}, size);
 }
 
 template <class T>
 inline void normalv(const T* v) {
-    if (Context::State* s = currentState(); s && v) s->normal = {toFloat(v[0]), toFloat(v[1]), toFloat(v[2])};
+    Context::State* s = currentState();
+    if (!s || !v) return;
+    s->pipeline.attribute(glrenderer::VertexAttribute::Normal, 3);
+    s->normal = {toFloat(v[0]), toFloat(v[1]), toFloat(v[2])};
 }
 
 template <class T>
 inline void texCoordv(const T* v, int n) {
-    if (Context::State* s = currentState(); s && v) {
-        s->texCoord = {static_cast<float>(v[0]), n > 1 ? static_cast<float>(v[1]) : 0.0f,
-                       n > 2 ? static_cast<float>(v[2]) : 0.0f, n > 3 ? static_cast<float>(v[3]) : 1.0f};
-    }
+    Context::State* s = currentState();
+    if (!s || !v) return;
+    s->pipeline.attribute(glrenderer::VertexAttribute::TexCoord, n);
+    s->texCoord = {static_cast<float>(v[0]), n > 1 ? static_cast<float>(v[1]) : 0.0f,
+                   n > 2 ? static_cast<float>(v[2]) : 0.0f, n > 3 ? static_cast<float>(v[3]) : 1.0f};
+}
+
+inline void setEdgeFlag(bool flag) {
+    Context::State* s = currentState();
+    if (!s) return;
+    s->pipeline.attribute(glrenderer::VertexAttribute::EdgeFlag, 1);
+    s->edgeFlag = flag;
 }
 
 }  // namespace mygl

@@ -7,6 +7,7 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/immediate_buffer.h"
 #include "glrenderer/methods.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
@@ -41,6 +42,9 @@ public:
     // A new vertex of the open primitive, to be filled in place.
     [[gnu::always_inline]] Vertex& addVertex() {
         if (cuttable_ && open_.size() == kPartVertices) handOverPart();
+        if (buffer_.full()) wrapBuffer();
+        buffer_.addVertex();
+        ++submitted_.vertices;
         return open_.emplace_back();
     }
     void endPrimitive();
@@ -50,7 +54,14 @@ public:
     void colorPerVertex();
     // All three for a whole primitive whose vertices carry their own colors.
     void submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
+    // glVertex, glColor, glNormal, glTexCoord or glEdgeFlag, in or outside glBegin/glEnd, with
+    // the attribute's size as the reference stores it: where the reference's vertex format
+    // grows, it draws what it holds (see ImmediateBuffer).
+    void attribute(VertexAttribute attribute, int size) {
+        if (buffer_.widens(attribute, size)) widen(attribute, size);
+    }
 
+    // A state change, glFlush: the batch ends, as the reference draws what it holds.
     void endBatch();
     void finish();
 
@@ -59,7 +70,7 @@ public:
 
     // Takes effect for primitives submitted after the call.
     void setMethods(const Methods& methods) {
-        endBatch();
+        closeBatch();
         methods_ = methods;
     }
     const Methods& methods() const { return methods_; }
@@ -74,9 +85,19 @@ private:
     // a row then cost one pass over the framebuffer (a frame usually clears color and depth to
     // one value, then color to another).
     void drawSubmitted();
-    // Counts the open primitive's first `count` vertices and moves them into the batch.
+    // Moves the open primitive's first `count` vertices into the batch.
     void keepOpenVertices(std::size_t count);
+    // Ends the batch (not a flush of the reference's buffer: a cut of our own).
+    void closeBatch();
+    // Ends the batch in the middle of a primitive, keeping whether it has colors per vertex.
+    void closeBatchInPrimitive();
     void handOverPart();
+    // The reference's buffer is full (or its vertex format grows) inside glBegin/glEnd: the
+    // batch is drawn with the open primitive's part so far, which goes on with the vertices the
+    // reference copies. Returns their number.
+    std::size_t wrapOpenPrimitive();
+    void wrapBuffer();
+    void widen(VertexAttribute attribute, int size);
     void handOverChunk();
     std::size_t batchSize() const;
 
@@ -90,6 +111,9 @@ private:
     // then copied into the batch, whose arrays come back from the batch thread.
     std::vector<Vertex> open_;
     bool cuttable_ = false;  // the open primitive goes over in parts
+    bool insidePrimitive_ = false;
+    bool loopContinued_ = false;  // the open GL_LINE_LOOP wrapped: open_[0] is its first vertex
+    ImmediateBuffer buffer_;       // where the reference's buffer wraps and flushes
     std::unique_ptr<BatchDrawer> drawer_;
     std::unique_ptr<BatchThread> thread_;  // null when the pipeline runs on one thread
 };
