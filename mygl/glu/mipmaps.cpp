@@ -15,9 +15,10 @@ namespace {
 
 using mygl::glu::FloatImage;
 
+// The current pixel-store alignment (GL's default 4 without a loaded GL table).
 GLint alignment(GLenum name) {
     GLint value = 4;
-    glGetIntegerv(name, &value);
+    if (glGetIntegerv) glGetIntegerv(name, &value);
     return value;
 }
 
@@ -36,6 +37,10 @@ int powerOfTwoAtMost(int value) {
 // Loads every level of `image`, with unpack alignment 1 for the packed levels GLU made itself.
 GLint buildMipmaps(GLenum target, GLint internalFormat, int dimensions, FloatImage image, GLenum format,
                    GLenum type) {
+    // A GL table without the texture calls (a backend that lacks them) gets an error, not a crash.
+    if (!glPixelStorei || (dimensions == 1 ? !glTexImage1D : !glTexImage2D)) {
+        return GLU_INVALID_OPERATION;
+    }
     const GLint savedAlignment = alignment(GL_UNPACK_ALIGNMENT);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     std::vector<std::uint8_t> bytes;
