@@ -49,25 +49,10 @@ public:
 
     // The circles at rings 0, step, 2 step, ... up to the top, then the vertical lines.
     void lines(int step) const {
-        for (int j = 0; j <= stacks_; j += step) {
-            glBegin(GL_LINE_STRIP);
-            for (int i = 0; i <= slices_; ++i) vertex(i, j);
-            glEnd();
-        }
-        for (int i = 0; i < slices_; ++i) {
-            glBegin(GL_LINE_STRIP);
-            for (int j = 0; j <= stacks_; ++j) vertex(i, j);
-            glEnd();
-        }
+        mygl::glu::gridLines(slices_, stacks_, 0, stacks_, step, [this](int i, int j) { vertex(i, j); });
     }
 
-    void points() const {
-        glBegin(GL_POINTS);
-        for (int i = 0; i < slices_; ++i) {
-            for (int j = 0; j <= stacks_; ++j) vertex(i, j);
-        }
-        glEnd();
-    }
+    void points() const { mygl::glu::gridPoints(slices_, stacks_, [this](int i, int j) { vertex(i, j); }); }
 
 private:
     QuadricAttributes attributes_;

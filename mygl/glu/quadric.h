@@ -42,4 +42,31 @@ struct AngleTable {
     std::vector<float> cos;
 };
 
+// A sphere's or cylinder's grid of slices (around) x rings (along) as lines: line strips round
+// the rings firstRing, firstRing + ringStep, ... up to lastRing, then one strip along each slice
+// through every ring. `vertex(slice, ring)` sends one grid vertex.
+template <class Vertex>
+void gridLines(int slices, int rings, int firstRing, int lastRing, int ringStep, const Vertex& vertex) {
+    for (int j = firstRing; j <= lastRing; j += ringStep) {
+        glBegin(GL_LINE_STRIP);
+        for (int i = 0; i <= slices; ++i) vertex(i, j);
+        glEnd();
+    }
+    for (int i = 0; i < slices; ++i) {
+        glBegin(GL_LINE_STRIP);
+        for (int j = 0; j <= rings; ++j) vertex(i, j);
+        glEnd();
+    }
+}
+
+// The same grid's vertices as points (each slice once: the last repeats the first).
+template <class Vertex>
+void gridPoints(int slices, int rings, const Vertex& vertex) {
+    glBegin(GL_POINTS);
+    for (int j = 0; j <= rings; ++j) {
+        for (int i = 0; i < slices; ++i) vertex(i, j);
+    }
+    glEnd();
+}
+
 }  // namespace mygl::glu

@@ -61,26 +61,12 @@ public:
         }
     }
 
+    // The latitude circles between the poles, then the meridians.
     void lines() const {
-        for (int j = 1; j < stacks_; ++j) {
-            glBegin(GL_LINE_STRIP);
-            for (int i = 0; i <= slices_; ++i) vertex(i, j);
-            glEnd();
-        }
-        for (int i = 0; i < slices_; ++i) {
-            glBegin(GL_LINE_STRIP);
-            for (int j = 0; j <= stacks_; ++j) vertex(i, j);
-            glEnd();
-        }
+        mygl::glu::gridLines(slices_, stacks_, 1, stacks_ - 1, 1, [this](int i, int j) { vertex(i, j); });
     }
 
-    void points() const {
-        glBegin(GL_POINTS);
-        for (int j = 0; j <= stacks_; ++j) {
-            for (int i = 0; i < slices_; ++i) vertex(i, j);
-        }
-        glEnd();
-    }
+    void points() const { mygl::glu::gridPoints(slices_, stacks_, [this](int i, int j) { vertex(i, j); }); }
 
 private:
     // A triangle fan from the pole of ring `pole` around ring `ring`; the slices run backwards
