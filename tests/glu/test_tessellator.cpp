@@ -8,6 +8,7 @@
 #include <deque>
 #include <limits>
 #include <random>
+#include <string>
 
 #include "tess_recorder.h"
 
@@ -130,42 +131,75 @@ protected:
     GLUtesselator* tess = nullptr;
 };
 
-TEST_F(Tessellator, TrianglesCoverExactlyWhatEachWindingRuleKeepsOnce) {
-    std::mt19937 random(99);
-    std::uniform_real_distribution<double> sample(-1.2, 1.2);
-    int checkedInside = 0, checkedOutside = 0;
-    gluTessNormal(tess, 0, 0, 1);  // windings counted as seen from +z, as windingNumber does
-    for (const GLenum rule : kRules) {
-        gluTessProperty(tess, GLU_TESS_WINDING_RULE, rule);
-        const auto all = polygons();
-        for (std::size_t n = 0; n < all.size(); ++n) {
-            const auto& contours = all[n];
-            TessRecorder recorder(tess);
-            tessellate(tess, recorder, contours);
-            EXPECT_TRUE(recorder.errors.empty()) << "polygon " << n;
-            const std::vector<Triangle> tris = triangles(recorder);
-            for (int s = 0; s < 1500; ++s) {
-                const double x = sample(random), y = sample(random);
-                bool nearEdge = false;
-                for (const Contour& c : contours) {
-                    for (std::size_t k = 0; k < c.size() && !nearEdge; ++k) {
-                        nearEdge = distanceToSegment(c[k], c[(k + 1) % c.size()], x, y) < 1e-7;
-                    }
-                }
-                for (const Triangle& t : tris) {
-                    for (int k = 0; k < 3 && !nearEdge; ++k) nearEdge = distanceToSegment(t[k], t[(k + 1) % 3], x, y) < 1e-7;
-                }
-                if (nearEdge) continue;
-                int covering = 0;
-                for (const Triangle& t : tris) covering += insideTriangle(t, x, y) ? 1 : 0;
-                const bool keep = ruleKeeps(rule, windingNumber(contours, x, y));
-                ASSERT_EQ(covering, keep ? 1 : 0) << "rule " << rule << " polygon " << n << " at " << x << ", " << y;
-                (keep ? checkedInside : checkedOutside)++;
+// Tessellates `contours` under `rule` (windings seen from +z) and checks `samples` random points
+// of the box [-extent, extent]^2: each point the rule keeps lies in exactly one triangle, every
+// other point in none. Counts the points checked inside and outside.
+void expectExactCover(GLUtesselator* tess, const std::vector<Contour>& contours, GLenum rule, std::mt19937& random,
+                      int samples, double extent, int counts[2]) {
+    gluTessNormal(tess, 0, 0, 1);
+    gluTessProperty(tess, GLU_TESS_WINDING_RULE, rule);
+    TessRecorder recorder(tess);
+    tessellate(tess, recorder, contours);
+    EXPECT_TRUE(recorder.errors.empty());
+    const std::vector<Triangle> tris = triangles(recorder);
+    std::uniform_real_distribution<double> sample(-extent, extent);
+    for (int s = 0; s < samples; ++s) {
+        const double x = sample(random), y = sample(random);
+        bool nearEdge = false;
+        for (const Contour& c : contours) {
+            for (std::size_t k = 0; k < c.size() && !nearEdge; ++k) {
+                nearEdge = distanceToSegment(c[k], c[(k + 1) % c.size()], x, y) < 1e-7;
             }
         }
+        for (const Triangle& t : tris) {
+            for (int k = 0; k < 3 && !nearEdge; ++k) nearEdge = distanceToSegment(t[k], t[(k + 1) % 3], x, y) < 1e-7;
+        }
+        if (nearEdge) continue;
+        int covering = 0;
+        for (const Triangle& t : tris) covering += insideTriangle(t, x, y) ? 1 : 0;
+        const bool keep = ruleKeeps(rule, windingNumber(contours, x, y));
+        ASSERT_EQ(covering, keep ? 1 : 0) << "rule " << rule << " at " << x << ", " << y;
+        ++counts[keep ? 1 : 0];
     }
-    EXPECT_GT(checkedInside, 10000);
-    EXPECT_GT(checkedOutside, 10000);
+}
+
+TEST_F(Tessellator, TrianglesCoverExactlyWhatEachWindingRuleKeepsOnce) {
+    std::mt19937 random(99);
+    int counts[2] = {0, 0};
+    const auto all = polygons();
+    for (const GLenum rule : kRules) {
+        for (std::size_t n = 0; n < all.size(); ++n) {
+            SCOPED_TRACE("polygon " + std::to_string(n));
+            expectExactCover(tess, all[n], rule, random, 1500, 1.2, counts);
+        }
+    }
+    EXPECT_GT(counts[1], 10000);  // inside
+    EXPECT_GT(counts[0], 10000);  // outside
+}
+
+// Degenerate arrangements: a hole touching the outline at a corner, squares sharing an edge
+// (either way round), collinear overlapping edges, repeated vertices, a zero-width spike, a
+// vertex lying on another contour's edge.
+TEST_F(Tessellator, TouchingOverlappingAndRepeatedFeaturesStillCoverExactly) {
+    const std::vector<std::vector<Contour>> cases = {
+        {{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, {{0, 0, 0}, {0.5, 1, 0}, {1, 0.5, 0}}},
+        {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}}},
+        {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{1, 1, 0}, {2, 1, 0}, {2, 0, 0}, {1, 0, 0}}},
+        {{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}}, {{0.5, 0, 0}, {1.5, 0, 0}, {1.5, -1, 0}, {0.5, -1, 0}}},
+        {{{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 1, 0}, {0, 0, 0}}},
+        {{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 2, 0}, {1, 3, 0}, {1, 2, 0}, {0, 2, 0}}},
+        {{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 0, 0}, {1, 0, 0}, {0.5, 0.5, 0}}},
+        {{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}},
+    };
+    std::mt19937 random(7);
+    int counts[2] = {0, 0};
+    for (std::size_t n = 0; n < cases.size(); ++n) {
+        for (const GLenum rule : kRules) {
+            SCOPED_TRACE("case " + std::to_string(n));
+            expectExactCover(tess, cases[n], rule, random, 400, 3.2, counts);
+        }
+    }
+    EXPECT_GT(counts[1], 500);  // of 16000 samples over a 6.4 x 6.4 box
 }
 
 TEST_F(Tessellator, CombineMakesEveryCrossingOfTwoEdges) {
