@@ -1,7 +1,8 @@
 #pragma once
 // The tessellator's geometry: contours projected onto a plane become a planar arrangement. Every
 // crossing of two edges becomes a vertex (made by the combine callback), every vertex lying on
-// another edge splits it, coincident edges merge with their windings summed. The faces of the
+// another edge splits it, coincident edges merge with their windings summed. Coincident vertices
+// merge into the first of them (its data is kept; GLU allows this without a combine call). The faces of the
 // arrangement are traced as cycles of half-edges (face on the left), and every face gets its
 // winding number: how many times the contours wind around it.
 #include <functional>
