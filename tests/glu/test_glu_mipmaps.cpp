@@ -33,6 +33,28 @@ TEST(GluScaleImage, AveragesBoxesAndReplicates) {
     EXPECT_EQ((std::array<int, 3>{column[4], column[5], column[6]}), (std::array<int, 3>{0, 0, 255}));
 }
 
+template <class T>
+void expectSameSizeCopiesExactly(GLenum type, T high, T low) {
+    const T in[4] = {high, low, 0, high};  // 2 x 2 luminance: rows of 2 components
+    T out[4] = {};
+    ASSERT_EQ(gluScaleImage(GL_LUMINANCE, 2, 2, type, in, 2, 2, type, out), 0) << type;
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(out[k], in[k]) << type << " " << k;
+}
+
+TEST(GluScaleImage, EveryComponentTypeCopiesItsExtremesExactly) {
+    mygl::Context context(8, 8);
+    context.makeCurrent();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    expectSameSizeCopiesExactly<GLubyte>(GL_UNSIGNED_BYTE, 255, 0);
+    expectSameSizeCopiesExactly<GLbyte>(GL_BYTE, 127, -127);
+    expectSameSizeCopiesExactly<GLushort>(GL_UNSIGNED_SHORT, 65535, 0);
+    expectSameSizeCopiesExactly<GLshort>(GL_SHORT, 32767, -32767);
+    expectSameSizeCopiesExactly<GLuint>(GL_UNSIGNED_INT, 4294967295u, 0);
+    expectSameSizeCopiesExactly<GLint>(GL_INT, 2147483647, -2147483647);
+    expectSameSizeCopiesExactly<GLfloat>(GL_FLOAT, 3.5f, -0.25f);  // floats are not clamped
+}
+
 TEST(GluScaleImage, RejectsBadArguments) {
     mygl::Context context(8, 8);
     context.makeCurrent();
