@@ -71,6 +71,7 @@ void begin(GLenum mode) {
     if (!s) return;
     if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
     if (s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);
+    drawCachedBitmaps(*s);
     if (s->modelviewProjectionStale) {
         s->modelviewProjection = multiply(s->projection.top(), s->modelview.top());
         s->modelviewProjectionStale = false;

@@ -10,7 +10,7 @@ namespace {
 std::vector<EntryPoint> sortedTable() {
     std::vector<EntryPoint> table;
     for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
-                      bufferEntryPoints()}) {
+                      bufferEntryPoints(), rasterPosEntryPoints()}) {
         table.insert(table.end(), area.begin(), area.end());
     }
     std::sort(table.begin(), table.end(),

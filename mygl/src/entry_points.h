@@ -23,6 +23,7 @@ std::span<const EntryPoint> matrixEntryPoints();
 std::span<const EntryPoint> stateEntryPoints();
 std::span<const EntryPoint> getEntryPoints();
 std::span<const EntryPoint> bufferEntryPoints();
+std::span<const EntryPoint> rasterPosEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.

@@ -89,18 +89,54 @@ struct Wrapper<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
     X(glad_glDepthFunc, 0) X(glad_glDepthMask, 0) X(glad_glShadeModel, 0) X(glad_glPolygonMode, 0) \
     X(glad_glLineWidth, 0) X(glad_glPointSize, 0) X(glad_glHint, 0) X(glad_glPixelStorei, 0)     \
     X(glad_glClearColor, 0) X(glad_glClearDepth, 0) X(glad_glClear, 0)                           \
-    X(glad_glFlush, 0) X(glad_glFinish, 0)
+    X(glad_glFlush, 0) X(glad_glFinish, 0)                                                        \
+    X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
+    X(glad_glRasterPos3d, 0) X(glad_glRasterPos3f, 0) X(glad_glRasterPos3i, 0) X(glad_glRasterPos3s, 0) \
+    X(glad_glRasterPos4d, 0) X(glad_glRasterPos4f, 0) X(glad_glRasterPos4i, 0) X(glad_glRasterPos4s, 0) \
+    X(glad_glRasterPos2dv, 2) X(glad_glRasterPos2fv, 2) X(glad_glRasterPos2iv, 2) X(glad_glRasterPos2sv, 2) \
+    X(glad_glRasterPos3dv, 3) X(glad_glRasterPos3fv, 3) X(glad_glRasterPos3iv, 3) X(glad_glRasterPos3sv, 3) \
+    X(glad_glRasterPos4dv, 4) X(glad_glRasterPos4fv, 4) X(glad_glRasterPos4iv, 4) X(glad_glRasterPos4sv, 4)
+
+// glBitmap: how many bytes its pointer covers depends on the size and the unpack alignment in
+// force, so the bytes are counted at the call (asked of the backend, a query not recorded).
+struct BitmapWrapper {
+    static inline PFNGLBITMAPPROC original = nullptr;
+
+    static void GLAD_API_PTR call(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
+                                  GLfloat ymove, const GLubyte* bitmap) {
+        if (active) {
+            GLint alignment = 4;
+            if (glad_glGetIntegerv) glad_glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+            const std::size_t a = alignment > 0 ? static_cast<std::size_t>(alignment) : 1;
+            const std::size_t rowBytes = width > 0 ? (static_cast<std::size_t>(width) + 7) / 8 : 0;
+            const std::size_t bytes = height > 0 ? (rowBytes + a - 1) / a * a * static_cast<std::size_t>(height) : 0;
+            active->add([=, kept = Kept<const GLubyte*>(bitmap, bitmap ? bytes : 0)] {
+                glad_glBitmap(width, height, xorig, yorig, xmove, ymove, kept.get());
+            });
+        }
+        original(width, height, xorig, yorig, xmove, ymove, bitmap);
+    }
+    static void install() {
+        original = glad_glBitmap;
+        if (original) glad_glBitmap = &call;
+    }
+    static void uninstall() {
+        if (original) glad_glBitmap = original;
+    }
+};
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();
     MYGL_RECORDED_CALLS(MYGL_INSTALL)
 #undef MYGL_INSTALL
+    BitmapWrapper::install();
 }
 
 void uninstallAll() {
 #define MYGL_UNINSTALL(slot, count) Wrapper<slot, count>::uninstall();
     MYGL_RECORDED_CALLS(MYGL_UNINSTALL)
 #undef MYGL_UNINSTALL
+    BitmapWrapper::uninstall();
 }
 
 }  // namespace
