@@ -2,9 +2,8 @@
 // moves on by the character's advance.
 #include <mygl/glut.h>
 
-#include <algorithm>
-
 #include "fonts/font_data.h"
+#include "fonts/widest_line.h"
 
 void* glutBitmap9By15;
 void* glutBitmap8By13;
@@ -82,10 +81,5 @@ int glutBitmapHeight(void* font) {
 int glutBitmapLength(void* font, const unsigned char* string) {
     const BitmapFont* f = bitmapFont(font);
     if (!f || !string) return 0;
-    int widest = 0, line = 0;
-    for (const unsigned char* c = string; *c; ++c) {
-        line = *c == '\n' ? 0 : line + f->glyphs[*c].advance;
-        widest = std::max(widest, line);
-    }
-    return widest;
+    return glut::fonts::widestLine(string, [f](unsigned char c) { return static_cast<int>(f->glyphs[c].advance); });
 }

@@ -2,9 +2,8 @@
 // moves right by the character's advance.
 #include <mygl/glut.h>
 
-#include <algorithm>
-
 #include "fonts/font_data.h"
+#include "fonts/widest_line.h"
 
 void* glutStrokeRoman;
 void* glutStrokeMonoRoman;
@@ -73,12 +72,7 @@ GLfloat glutStrokeHeight(void* font) {
 GLfloat glutStrokeLengthf(void* font, const unsigned char* string) {
     const StrokeFont* f = strokeFont(font);
     if (!f || !string) return 0.0f;
-    float widest = 0, line = 0;
-    for (const unsigned char* c = string; *c; ++c) {
-        line = *c == '\n' ? 0.0f : line + f->glyphs[*c].advance;
-        widest = std::max(widest, line);
-    }
-    return widest;
+    return glut::fonts::widestLine(string, [f](unsigned char c) { return f->glyphs[c].advance; });
 }
 
 int glutStrokeLength(void* font, const unsigned char* string) {

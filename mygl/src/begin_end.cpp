@@ -102,14 +102,7 @@ void rect(T x1, T y1, T x2, T y2) {
     end();
 }
 
-// glVertex, glColor, ... in every type: one line per entry point.
-#define MYGL_VERTEX(suffix, T)                                                                  \
-    {"glVertex2" #suffix, entry(+[](T x, T y) { vertexv(std::array<T, 2>{x, y}.data(), 2); })},        \
-    {"glVertex3" #suffix, entry(+[](T x, T y, T z) { vertexv(std::array<T, 3>{x, y, z}.data(), 3); })}, \
-    {"glVertex4" #suffix, entry(+[](T x, T y, T z, T w) { vertexv(std::array<T, 4>{x, y, z, w}.data(), 4); })}, \
-    {"glVertex2" #suffix "v", entry(+[](const T* v) { vertexv(v, 2); })},                          \
-    {"glVertex3" #suffix "v", entry(+[](const T* v) { vertexv(v, 3); })},                          \
-    {"glVertex4" #suffix "v", entry(+[](const T* v) { vertexv(v, 4); })}
+// glColor, glNormal, ... in every type: one line per entry point.
 #define MYGL_COLOR(suffix, T)                                                                    \
     {"glColor3" #suffix, entry(+[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); })},  \
     {"glColor4" #suffix, entry(+[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); })}, \
@@ -128,7 +121,8 @@ void rect(T x1, T y1, T x2, T y2) {
 const EntryPoint kEntryPoints[] = {
     {"glBegin", entry(+[](GLenum mode) { begin(mode); })},
     {"glEnd", entry(+[] { end(); })},
-    MYGL_VERTEX(s, GLshort), MYGL_VERTEX(i, GLint), MYGL_VERTEX(f, GLfloat), MYGL_VERTEX(d, GLdouble),
+    MYGL_POSITION_ENTRIES("glVertex", s, GLshort, vertexv), MYGL_POSITION_ENTRIES("glVertex", i, GLint, vertexv),
+    MYGL_POSITION_ENTRIES("glVertex", f, GLfloat, vertexv), MYGL_POSITION_ENTRIES("glVertex", d, GLdouble, vertexv),
     MYGL_COLOR(b, GLbyte), MYGL_COLOR(ub, GLubyte), MYGL_COLOR(s, GLshort), MYGL_COLOR(us, GLushort),
     MYGL_COLOR(i, GLint), MYGL_COLOR(ui, GLuint), MYGL_COLOR(f, GLfloat), MYGL_COLOR(d, GLdouble),
     MYGL_NORMAL(b, GLbyte), MYGL_NORMAL(s, GLshort), MYGL_NORMAL(i, GLint), MYGL_NORMAL(f, GLfloat),

@@ -2,6 +2,7 @@
 // Our GL entry points, gathered per area and looked up by name in entry_points.cpp. They are
 // captureless lambdas with the exact parameter types of glad's PFNGL...PROC typedefs (the GL
 // calling convention is the C one on the platforms we build for).
+#include <array>
 #include <span>
 
 #include "context_state.h"
@@ -17,6 +18,16 @@ template <class Function>
 ProcAddress entry(Function* function) {
     return reinterpret_cast<ProcAddress>(function);
 }
+
+// The 2, 3 and 4 component forms of a position call (glVertex, glRasterPos) in type T and their
+// vector forms, each calling `function(const T* components, int count)`.
+#define MYGL_POSITION_ENTRIES(name, suffix, T, function)                                            \
+    {name "2" #suffix, entry(+[](T x, T y) { function(std::array<T, 2>{x, y}.data(), 2); })},        \
+    {name "3" #suffix, entry(+[](T x, T y, T z) { function(std::array<T, 3>{x, y, z}.data(), 3); })}, \
+    {name "4" #suffix, entry(+[](T x, T y, T z, T w) { function(std::array<T, 4>{x, y, z, w}.data(), 4); })}, \
+    {name "2" #suffix "v", entry(+[](const T* v) { function(v, 2); })},                                \
+    {name "3" #suffix "v", entry(+[](const T* v) { function(v, 3); })},                                \
+    {name "4" #suffix "v", entry(+[](const T* v) { function(v, 4); })}
 
 std::span<const EntryPoint> beginEndEntryPoints();
 std::span<const EntryPoint> matrixEntryPoints();

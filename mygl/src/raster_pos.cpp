@@ -90,16 +90,9 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
     s->rasterPosition.y += ymove;
 }
 
-#define MYGL_RASTER_POS(suffix, T)                                                                   \
-    {"glRasterPos2" #suffix, entry(+[](T x, T y) { rasterPosv(std::array<T, 2>{x, y}.data(), 2); })},        \
-    {"glRasterPos3" #suffix, entry(+[](T x, T y, T z) { rasterPosv(std::array<T, 3>{x, y, z}.data(), 3); })}, \
-    {"glRasterPos4" #suffix, entry(+[](T x, T y, T z, T w) { rasterPosv(std::array<T, 4>{x, y, z, w}.data(), 4); })}, \
-    {"glRasterPos2" #suffix "v", entry(+[](const T* v) { rasterPosv(v, 2); })},                          \
-    {"glRasterPos3" #suffix "v", entry(+[](const T* v) { rasterPosv(v, 3); })},                          \
-    {"glRasterPos4" #suffix "v", entry(+[](const T* v) { rasterPosv(v, 4); })}
-
 const EntryPoint kEntryPoints[] = {
-    MYGL_RASTER_POS(s, GLshort), MYGL_RASTER_POS(i, GLint), MYGL_RASTER_POS(f, GLfloat), MYGL_RASTER_POS(d, GLdouble),
+    MYGL_POSITION_ENTRIES("glRasterPos", s, GLshort, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", i, GLint, rasterPosv),
+    MYGL_POSITION_ENTRIES("glRasterPos", f, GLfloat, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", d, GLdouble, rasterPosv),
     {"glBitmap", entry(+[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
          bitmap(w, h, xo, yo, xm, ym, bits);
      })},
