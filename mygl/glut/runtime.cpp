@@ -73,6 +73,7 @@ void capture(Runtime& r, const FrameImages& images) {
 
 // Before the first frame, as GLUT does when the window is mapped: the size, then visibility.
 void windowShown(Runtime& r) {
+    r.shown = true;
     if (!r.pendingSize) r.pendingSize = {r.width, r.height};
     applyPendingSize(r);
     makeProgramContextCurrent(r);
@@ -183,7 +184,7 @@ void glutMainLoop() {
     if (!r.callbacks.display) glut::fail("glutMainLoop called without glutDisplayFunc");
     if (!r.windowExists) glut::fail("glutMainLoop called without glutCreateWindow");
     r.leaveMainLoop = false;
-    glut::windowShown(r);
+    if (!r.shown) glut::windowShown(r);
     if (r.captureFrames > 0) {
         while (!r.leaveMainLoop && r.windowExists) glut::capturePass(r);
     } else {
@@ -194,11 +195,7 @@ void glutMainLoop() {
 void glutMainLoopEvent() {
     glut::Runtime& r = runtime();
     if (!r.windowExists || !r.callbacks.display) return;
-    static bool shown = false;
-    if (!shown) {
-        shown = true;
-        glut::windowShown(r);
-    }
+    if (!r.shown) glut::windowShown(r);
     if (r.captureFrames > 0) glut::capturePass(r);
     else glut::windowPass(r);
 }

@@ -32,6 +32,10 @@ void glutInitWindowPosition(int x, int y) {
 }
 void glutInitDisplayMode(unsigned mode) { runtime().displayMode = mode; }
 void glutInitDisplayString(const char*) {}
+// The context is GL 1.x compatibility whatever a program asks for.
+void glutInitContextVersion(int, int) {}
+void glutInitContextFlags(int) {}
+void glutInitContextProfile(int) {}
 
 int glutCreateWindow(const char* title) {
     glut::Runtime& r = runtime();
