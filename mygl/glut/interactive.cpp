@@ -131,11 +131,9 @@ void windowPass(Runtime& r) {
     r.window->pollEvents();
     if (r.window->shouldClose()) return windowClosed(r);
     r.now = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - r.start).count();
+    makeProgramContextCurrent(r);  // the window's GL was bound to show the last frame
     runDueTimers(r);
-    if (r.callbacks.idle) {
-        makeProgramContextCurrent(r);
-        r.callbacks.idle();
-    }
+    if (r.callbacks.idle) r.callbacks.idle();
     applyPendingSize(r);
     if (r.redisplay) callDisplay(r);
     else if (!r.callbacks.idle) r.window->waitBriefly();

@@ -177,8 +177,15 @@ void Presenter::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 void Presenter::pollEvents() { glfwPollEvents(); }
 void Presenter::waitBriefly() { glfwWaitEventsTimeout(0.01); }
 
-void Presenter::present(const reference::Image& frame) {
+// OSMesa and the window's Mesa share the thread's current context (libglapi): after an
+// OSMesaMakeCurrent, GLFW still believes its context is current and would skip binding it.
+void Presenter::bindContext() {
+    glfwMakeContextCurrent(nullptr);
     glfwMakeContextCurrent(window_);
+}
+
+void Presenter::present(const reference::Image& frame) {
+    bindContext();
     int width, height;
     glfwGetFramebufferSize(window_, &width, &height);
     gl_->viewport(0, 0, width, height);
@@ -191,7 +198,7 @@ void Presenter::present(const reference::Image& frame) {
 }
 
 reference::Image Presenter::screenshot() {
-    glfwMakeContextCurrent(window_);
+    bindContext();
     int width, height;
     glfwGetFramebufferSize(window_, &width, &height);
     reference::Image image{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};

@@ -49,6 +49,7 @@ private:
     void onKey(int key, int action, int mods);
     void onChar(unsigned codepoint);
     void cursor(int& x, int& y) const;
+    void bindContext();
 
     GLFWwindow* window_ = nullptr;
     Functions* gl_ = nullptr;
