@@ -57,8 +57,8 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
     if (!s) return;
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
     if (!s->rasterValid) return;
-    // Beyond 2^30 pixels away nothing can be on screen (and the position would not fit an int).
-    constexpr float kFarAway = 1 << 30;
+    // Beyond 2^29 pixels away nothing can be on screen (and position - origin must fit an int).
+    constexpr float kFarAway = 1 << 29;
     const bool nearWindow = std::fabs(s->rasterPosition.x) < kFarAway && std::fabs(s->rasterPosition.y) < kFarAway &&
                             std::fabs(xorig) < kFarAway && std::fabs(yorig) < kFarAway;
     if (width > 0 && height > 0 && bits && nearWindow) {
