@@ -8,10 +8,11 @@
 namespace mygl {
 namespace {
 
-// Whether a clip-space point is inside the view volume, boundaries included.
+// Whether a clip-space point is inside the view volume, boundaries included. Asked as the
+// reference asks, "is it outside?", so that a NaN coordinate counts as inside.
 bool insideViewVolume(const glm::vec4& clip) {
-    return clip.z >= -clip.w && clip.z <= clip.w && clip.x >= -clip.w && clip.x <= clip.w &&
-           clip.y >= -clip.w && clip.y <= clip.w;
+    return !(clip.z < -clip.w || clip.z > clip.w || clip.x < -clip.w || clip.x > clip.w || clip.y < -clip.w ||
+             clip.y > clip.w);
 }
 
 // The reference transforms by the modelview, then the projection (two steps, not their

@@ -277,6 +277,14 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
              glRasterPos2i(5, 5);
              glBitmap(-1, 7, 0.0f, 0.0f, 4.0f, 4.0f, kGlyph);
          }},
+        {"huge moves and origins: nothing drawn (no pixels), no crash", [] {
+             setUp();
+             glRasterPos2i(5, 5);
+             glBitmap(11, 7, 3.0e9f, -3.0e9f, 0.0f, 0.0f, kGlyph);
+             glBitmap(0, 0, 0.0f, 0.0f, 1.0e38f, -1.0e38f, nullptr);
+             glBitmap(11, 7, 0.0f, 0.0f, 1.0e38f, 0.0f, kGlyph);
+             glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);
+         }},
         {"inside glBegin/glEnd: GL_INVALID_OPERATION", [] {
              setUp();
              glRasterPos2i(5, 5);
