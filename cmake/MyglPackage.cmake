@@ -1,5 +1,6 @@
 # Installs the targets so that another project can do find_package(mygl) and link
-# mygl::mygl (software backend + loader), mygl::glu (GLU, C API) or mygl::reference (OSMesa).
+# mygl::mygl (software backend + loader), mygl::glu (GLU, C API), mygl::glut (GLUT, C API) or
+# mygl::reference (OSMesa).
 include(CMakePackageConfigHelpers)
 install(EXPORT myglTargets NAMESPACE mygl:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/mygl)
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/myglConfig.cmake.in

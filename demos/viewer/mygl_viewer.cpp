@@ -6,14 +6,13 @@
 #include <reference/compare.h>
 #include <reference/osmesa_context.h>
 
-#include <stb/stb_easy_font.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "image_text.h"
 #include "presenter.h"
 #include "render.h"
 
@@ -26,28 +25,6 @@ struct ViewerState {
     int frame = 0;
     bool dirty = true;
 };
-
-// Writes `text` onto the top-left corner of the frame (rows bottom first), doubled in size, so
-// that a screenshot shows the counts as the course printed them.
-void overlayText(reference::Image& image, const std::string& text) {
-    std::vector<char> buffer(text.size() * 300 + 1000);
-    const int quads = stb_easy_font_print(4, 4, const_cast<char*>(text.c_str()), nullptr, buffer.data(),
-                                          static_cast<int>(buffer.size()));
-    struct Corner {
-        float x, y, z;
-        unsigned char color[4];
-    };
-    const auto* corners = reinterpret_cast<const Corner*>(buffer.data());
-    for (int q = 0; q < quads; ++q) {
-        const Corner* c = corners + 4 * q;  // an axis-aligned rectangle, y down from the top
-        for (int y = static_cast<int>(2 * c[0].y); y < static_cast<int>(2 * c[2].y); ++y)
-            for (int x = static_cast<int>(2 * c[0].x); x < static_cast<int>(2 * c[2].x); ++x) {
-                if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
-                std::uint8_t* pixel = &image.rgba[(static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4];
-                pixel[0] = 255, pixel[1] = 255, pixel[2] = 0, pixel[3] = 255;
-            }
-    }
-}
 
 std::string onOff(const std::optional<bool>& forced, const char* name) {
     return std::string(name) + (forced ? (*forced ? " on" : " off") : " (scene)");
@@ -78,8 +55,10 @@ int main(int argc, char** argv) {
     reference::OsmesaContext theirs(width, height);
     Presenter window(width, height, "mygl-viewer");
     Presenter::Callbacks callbacks;
-    callbacks.key = [&v](unsigned char key, int, int) {
+    callbacks.key = [&v, &window](unsigned char key, int, int, bool down) {
+        if (!down) return;
         switch (key) {
+        case 27: window.requestClose(); return;
         case 'b': case 'B': v.culling = !v.culling.value_or(false); break;
         case 'w': case 'W': v.wireframe = !v.wireframe; break;
         case 'd': case 'D': v.depthTest = !v.depthTest.value_or(false); break;
@@ -90,13 +69,15 @@ int main(int argc, char** argv) {
         }
         v.dirty = true;
     };
-    callbacks.special = [&v](int key, int, int) {
+    callbacks.special = [&v](int key, int, int, bool down) {
+        if (!down) return;
         if (key >= 1 && key <= 9 && static_cast<std::size_t>(key - 1) < scenes::allScenes().size()) v.scene = static_cast<std::size_t>(key - 1);
         else if (key == 100 || key == 103) --v.frame;  // left, down
         else if (key == 101 || key == 102) ++v.frame;  // up, right
         v.dirty = true;
     };
-    callbacks.motion = [&v, lastX = 0](int x, int) mutable {  // dragging animates, like the arrows
+    callbacks.motion = [&v, lastX = 0](int x, int, bool dragging) mutable {  // dragging animates, like the arrows
+        if (!dragging) return;
         if (x / 8 != lastX / 8) {
             v.frame += x > lastX ? 1 : -1;
             v.dirty = true;
@@ -137,7 +118,8 @@ int main(int argc, char** argv) {
         const std::string counts = std::string(cullingOn ? "Culling... -> triangle: " : "No cull... -> triangle: ") +
                                    std::to_string(triangles) + extra;
         window.setTitle(status + " | " + counts);
-        if (!screenshotExact) overlayText(shown, status + "\n" + counts);
+        // The counts on the top-left corner, doubled in size, as the course printed them.
+        if (!screenshotExact) glut::drawText(shown, 8, 8, status + "\n" + counts, {255, 255, 0, 255}, 2);
         window.present(shown);
         if (!screenshot.empty()) {
             reference::writePng(screenshot, window.screenshot());

@@ -16,6 +16,7 @@ class BatchDrawer {
 public:
     explicit BatchDrawer(Framebuffer& framebuffer);
 
+    Framebuffer& framebuffer() { return framebuffer_; }
     // What it counted (triangles and fragments) since the last reset.
     const Stats& stats() const { return stats_; }
     void resetStats() { stats_ = {}; }

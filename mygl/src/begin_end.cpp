@@ -12,6 +12,7 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     if (!s) return;
     if (s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);  // before the mode, as every call inside
     if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
+    drawCachedBitmaps(*s);  // the reference draws its bitmap cache before any draw
     s->updateModelviewProjection();
     s->insideBeginEnd = true;
     s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
@@ -42,14 +43,7 @@ void rect(T x1, T y1, T x2, T y2) {
     end();
 }
 
-// glVertex, glColor, ... in every type: one line per entry point.
-#define MYGL_VERTEX(suffix, T)                                                                  \
-    {"glVertex2" #suffix, compiled<+[](T x, T y) { vertexv(std::array<T, 2>{x, y}.data(), 2); }>()},        \
-    {"glVertex3" #suffix, compiled<+[](T x, T y, T z) { vertexv(std::array<T, 3>{x, y, z}.data(), 3); }>()}, \
-    {"glVertex4" #suffix, compiled<+[](T x, T y, T z, T w) { vertexv(std::array<T, 4>{x, y, z, w}.data(), 4); }>()}, \
-    {"glVertex2" #suffix "v", compiled<+[](const T* v) { vertexv(v, 2); }, 2>()},                          \
-    {"glVertex3" #suffix "v", compiled<+[](const T* v) { vertexv(v, 3); }, 3>()},                          \
-    {"glVertex4" #suffix "v", compiled<+[](const T* v) { vertexv(v, 4); }, 4>()}
+// glColor, glNormal, ... in every type: one line per entry point.
 #define MYGL_COLOR(suffix, T)                                                                    \
     {"glColor3" #suffix, compiled<+[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }>()},  \
     {"glColor4" #suffix, compiled<+[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); }>()}, \
@@ -70,7 +64,8 @@ const EntryPoint kEntryPoints[] = {
          if (Context::State* s = currentState()) begin(mode, quadSplitOf(*s));
      }>()},
     {"glEnd", compiled<+[] { end(); }>()},
-    MYGL_VERTEX(s, GLshort), MYGL_VERTEX(i, GLint), MYGL_VERTEX(f, GLfloat), MYGL_VERTEX(d, GLdouble),
+    MYGL_POSITION_ENTRIES("glVertex", s, GLshort, vertexv), MYGL_POSITION_ENTRIES("glVertex", i, GLint, vertexv),
+    MYGL_POSITION_ENTRIES("glVertex", f, GLfloat, vertexv), MYGL_POSITION_ENTRIES("glVertex", d, GLdouble, vertexv),
     MYGL_COLOR(b, GLbyte), MYGL_COLOR(ub, GLubyte), MYGL_COLOR(s, GLshort), MYGL_COLOR(us, GLushort),
     MYGL_COLOR(i, GLint), MYGL_COLOR(ui, GLuint), MYGL_COLOR(f, GLfloat), MYGL_COLOR(d, GLdouble),
     MYGL_NORMAL(b, GLbyte), MYGL_NORMAL(s, GLshort), MYGL_NORMAL(i, GLint), MYGL_NORMAL(f, GLfloat),

@@ -15,6 +15,7 @@ void clear(GLbitfield mask) {
     if (!s) return;
     constexpr GLbitfield kKnown = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
     if (mask & ~kKnown) return setError(*s, GL_INVALID_VALUE);
+    drawCachedBitmaps(*s);
     const bool color = mask & GL_COLOR_BUFFER_BIT;
     const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite;  // glDepthMask applies
     s->pipeline.clear(color, glrenderer::clearColorRgba8(s->clearColor), depth,
@@ -64,6 +65,7 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
     const int pixelBytes = bytesPerPixel(format, type);
     if (pixelBytes == 0) return setError(*s, GL_INVALID_OPERATION);  // valid in GL, not offered here
     if (!pixels) return;
+    drawCachedBitmaps(*s);
     s->pipeline.finish();
     const auto& fb = s->framebuffer;
     const Span columns = clipToWindow(x, width, fb.width()), rows = clipToWindow(y, height, fb.height());
@@ -94,10 +96,16 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
 const EntryPoint kEntryPoints[] = {
     {"glClear", compiled<+[](GLbitfield mask) { clear(mask); }>()},
     {"glFlush", entry(+[] {
-         if (Context::State* s = stateOutsideBeginEnd()) s->pipeline.endBatch();
+         if (Context::State* s = stateOutsideBeginEnd()) {
+             drawCachedBitmaps(*s);
+             s->pipeline.endBatch();
+         }
      })},
     {"glFinish", entry(+[] {
-         if (Context::State* s = stateOutsideBeginEnd()) s->pipeline.finish();
+         if (Context::State* s = stateOutsideBeginEnd()) {
+             drawCachedBitmaps(*s);
+             s->pipeline.finish();
+         }
      })},
     {"glReadPixels", entry(+[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
          readPixels(x, y, w, h, format, type, pixels);

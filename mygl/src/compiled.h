@@ -3,6 +3,7 @@
 // is kept in it (with a copy of the data behind a pointer argument: `Count` elements) and, in
 // GL_COMPILE mode, not executed. The implementation is a template argument, so that it is
 // inlined into the entry point and the check costs one branch.
+#include <array>
 #include <tuple>
 #include <vector>
 
@@ -52,5 +53,15 @@ template <auto Implementation, std::size_t Count = 0>
 ProcAddress compiled() {
     return entry(&Compiled<Implementation, Count>::call);
 }
+
+// The 2, 3 and 4 component forms of a position call (glVertex, glRasterPos) in type T and their
+// vector forms, each calling `function(const T* components, int count)`.
+#define MYGL_POSITION_ENTRIES(name, suffix, T, function)                                            \
+    {name "2" #suffix, compiled<+[](T x, T y) { function(std::array<T, 2>{x, y}.data(), 2); }>()},        \
+    {name "3" #suffix, compiled<+[](T x, T y, T z) { function(std::array<T, 3>{x, y, z}.data(), 3); }>()}, \
+    {name "4" #suffix, compiled<+[](T x, T y, T z, T w) { function(std::array<T, 4>{x, y, z, w}.data(), 4); }>()}, \
+    {name "2" #suffix "v", compiled<+[](const T* v) { function(v, 2); }, 2>()},                                \
+    {name "3" #suffix "v", compiled<+[](const T* v) { function(v, 3); }, 3>()},                                \
+    {name "4" #suffix "v", compiled<+[](const T* v) { function(v, 4); }, 4>()}
 
 }  // namespace mygl

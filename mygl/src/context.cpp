@@ -43,6 +43,7 @@ Context* Context::current() { return currentContext; }
 
 void Context::resize(int width, int height) {
     requireValidSize(width, height);
+    drawCachedBitmaps(*state_);
     state_->pipeline.finish();
     state_->framebuffer.resize(width, height);
 }
@@ -51,6 +52,7 @@ int Context::width() const { return state_->framebuffer.width(); }
 int Context::height() const { return state_->framebuffer.height(); }
 
 std::vector<std::uint8_t> Context::readPixels() {
+    drawCachedBitmaps(*state_);
     state_->pipeline.finish();
     const auto color = state_->framebuffer.color();
     std::vector<std::uint8_t> bytes(color.size() * 4);
@@ -61,6 +63,7 @@ std::vector<std::uint8_t> Context::readPixels() {
 void Context::setMethods(const glrenderer::Methods& methods) { state_->pipeline.setMethods(methods); }
 
 Stats Context::stats() {
+    drawCachedBitmaps(*state_);
     state_->pipeline.finish();
     return state_->pipeline.stats();
 }

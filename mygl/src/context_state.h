@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "bitmap_cache.h"
 #include "client_arrays.h"
 #include "display_lists.h"
 #include "stack_matrix.h"
@@ -87,6 +88,15 @@ struct Context::State {
         modelviewProjectionStale = false;
     }
 
+    // The current raster position (glRasterPos, moved by glBitmap) in window coordinates, and
+    // what it took from the current attributes when it was last set.
+    glm::vec4 rasterPosition{0, 0, 0, 1};
+    glm::vec4 rasterColor{1, 1, 1, 1};
+    glm::vec4 rasterTexCoord{0, 0, 0, 1};
+    float rasterDistance = 0;
+    bool rasterValid = true;
+    BitmapCache bitmapCache;
+
     MatrixStack& currentStack() {
         return matrixMode == GL_PROJECTION ? projection : matrixMode == GL_TEXTURE ? texture : modelview;
     }
@@ -96,6 +106,10 @@ struct Context::State {
 // glColor asks for it.
 extern constinit thread_local Context* currentContext;
 inline Context::State* currentState() { return currentContext ? &currentContext->state() : nullptr; }
+
+// Draws the bitmaps the cache holds, with the state in force now: before any draw, clear, flush
+// or read, as the reference does.
+void drawCachedBitmaps(Context::State& state);
 
 // Records `error` unless one is pending (the first error wins until glGetError reads it).
 void setError(Context::State& state, GLenum error);

@@ -2,6 +2,7 @@
 // Our GL entry points, gathered per area and looked up by name in entry_points.cpp. They are
 // captureless lambdas with the exact parameter types of glad's PFNGL...PROC typedefs (the GL
 // calling convention is the C one on the platforms we build for).
+#include <array>
 #include <span>
 
 #include "context_state.h"
@@ -17,7 +18,6 @@ template <class Function>
 ProcAddress entry(Function* function) {
     return reinterpret_cast<ProcAddress>(function);
 }
-
 std::span<const EntryPoint> beginEndEntryPoints();
 std::span<const EntryPoint> matrixEntryPoints();
 std::span<const EntryPoint> stateEntryPoints();
@@ -25,6 +25,7 @@ std::span<const EntryPoint> getEntryPoints();
 std::span<const EntryPoint> bufferEntryPoints();
 std::span<const EntryPoint> listEntryPoints();
 std::span<const EntryPoint> arrayEntryPoints();
+std::span<const EntryPoint> rasterPosEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.

@@ -55,6 +55,13 @@ Value query(const Context::State& s, GLenum name) {
     case GL_CURRENT_NORMAL: return Value{{s.normal.x, s.normal.y, s.normal.z}, true};
     case GL_CURRENT_TEXTURE_COORDS: return Value{{s.texCoord.s, s.texCoord.t, s.texCoord.p, s.texCoord.q}};
     case GL_EDGE_FLAG: return flag(s.edgeFlag);
+    case GL_CURRENT_RASTER_POSITION:
+        return Value{{s.rasterPosition.x, s.rasterPosition.y, s.rasterPosition.z, s.rasterPosition.w}};
+    case GL_CURRENT_RASTER_COLOR: return Value{{s.rasterColor.r, s.rasterColor.g, s.rasterColor.b, s.rasterColor.a}, true};
+    case GL_CURRENT_RASTER_TEXTURE_COORDS:
+        return Value{{s.rasterTexCoord.s, s.rasterTexCoord.t, s.rasterTexCoord.p, s.rasterTexCoord.q}};
+    case GL_CURRENT_RASTER_DISTANCE: return one(s.rasterDistance);
+    case GL_CURRENT_RASTER_POSITION_VALID: return flag(s.rasterValid);
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: return one(8);
     case GL_DEPTH_BITS: return one(24);
     case GL_STENCIL_BITS: return one(0);

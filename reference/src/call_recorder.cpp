@@ -28,19 +28,29 @@ struct Kept<const T*> {
     const T* get() const { return null ? nullptr : data.data(); }
 };
 
+// How many elements a pointer argument of the call points at: a number, or a function of the
+// call's arguments.
+template <auto Count, class... Args>
+std::size_t elementCount(Args... args) {
+    if constexpr (std::is_invocable_v<decltype(Count), Args...>) return Count(args...);
+    else return Count;
+}
+
 // The wrapper for the table entry `Slot`: records the call, then forwards it to the backend
-// the table pointed at when recording started. `Count` is how many elements a pointer argument
-// points at. Replay calls through `Slot`, i.e. through whatever table is loaded then.
-template <auto& Slot, std::size_t Count, class Signature = std::remove_reference_t<decltype(Slot)>>
+// the table pointed at when recording started. `Count` says how many elements a pointer
+// argument points at (elementCount). Replay calls through `Slot`, i.e. through whatever table
+// is loaded then.
+template <auto& Slot, auto Count, class Signature = std::remove_reference_t<decltype(Slot)>>
 struct Wrapper;
 
-template <auto& Slot, std::size_t Count, class R, class... Args>
+template <auto& Slot, auto Count, class R, class... Args>
 struct Wrapper<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
     static inline R(GLAD_API_PTR* original)(Args...) = nullptr;
 
     static R GLAD_API_PTR call(Args... args) {
         if (active) {
-            active->add([kept = std::make_tuple(Kept<Args>(args, Count)...)] {
+            [[maybe_unused]] const std::size_t count = elementCount<Count>(args...);
+            active->add([kept = std::make_tuple(Kept<Args>(args, count)...)] {
                 std::apply([](const auto&... k) { Slot(k.get()...); }, kept);
             });
         }
@@ -54,6 +64,16 @@ struct Wrapper<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
         if (original) Slot = original;
     }
 };
+
+// glBitmap's bytes depend on its size and the unpack alignment in force (asked of the backend:
+// a query, not recorded).
+std::size_t bitmapBytes(GLsizei width, GLsizei height, GLfloat, GLfloat, GLfloat, GLfloat, const GLubyte*) {
+    if (width <= 0 || height <= 0) return 0;
+    GLint alignment = 4;
+    if (glad_glGetIntegerv) glad_glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    const std::size_t a = alignment > 0 ? static_cast<std::size_t>(alignment) : 1;
+    return ((static_cast<std::size_t>(width) + 7) / 8 + a - 1) / a * a * static_cast<std::size_t>(height);
+}
 
 // Every recorded entry point, with the element count behind its pointer argument (0: none).
 #define MYGL_RECORDED_CALLS(X)                                                                    \
@@ -89,7 +109,14 @@ struct Wrapper<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
     X(glad_glDepthFunc, 0) X(glad_glDepthMask, 0) X(glad_glShadeModel, 0) X(glad_glPolygonMode, 0) \
     X(glad_glLineWidth, 0) X(glad_glPointSize, 0) X(glad_glHint, 0) X(glad_glPixelStorei, 0)     \
     X(glad_glClearColor, 0) X(glad_glClearDepth, 0) X(glad_glClear, 0)                           \
-    X(glad_glFlush, 0) X(glad_glFinish, 0)
+    X(glad_glFlush, 0) X(glad_glFinish, 0)                                                        \
+    X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
+    X(glad_glRasterPos3d, 0) X(glad_glRasterPos3f, 0) X(glad_glRasterPos3i, 0) X(glad_glRasterPos3s, 0) \
+    X(glad_glRasterPos4d, 0) X(glad_glRasterPos4f, 0) X(glad_glRasterPos4i, 0) X(glad_glRasterPos4s, 0) \
+    X(glad_glRasterPos2dv, 2) X(glad_glRasterPos2fv, 2) X(glad_glRasterPos2iv, 2) X(glad_glRasterPos2sv, 2) \
+    X(glad_glRasterPos3dv, 3) X(glad_glRasterPos3fv, 3) X(glad_glRasterPos3iv, 3) X(glad_glRasterPos3sv, 3) \
+    X(glad_glRasterPos4dv, 4) X(glad_glRasterPos4fv, 4) X(glad_glRasterPos4iv, 4) X(glad_glRasterPos4sv, 4) \
+    X(glad_glBitmap, bitmapBytes)
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();

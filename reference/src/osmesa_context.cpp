@@ -38,6 +38,16 @@ void OsmesaContext::makeCurrent() {
     }
 }
 
+void OsmesaContext::resize(int width, int height) {
+    if (width <= 0 || height <= 0) throw std::runtime_error("OSMesa context size must be positive");
+    width_ = width;
+    height_ = height;
+    buffer_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
+    if (!OSMesaMakeCurrent(handle_->context, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_)) {
+        throw std::runtime_error("OSMesaMakeCurrent failed");
+    }
+}
+
 std::vector<std::uint8_t> OsmesaContext::readPixels() {
     // Reached through OSMesa itself so that the GL table keeps pointing where the caller left it.
     if (!OSMesaMakeCurrent(handle_->context, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_)) {

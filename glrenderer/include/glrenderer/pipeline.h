@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "glrenderer/bitmap.h"
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/immediate_buffer.h"
@@ -64,6 +65,10 @@ public:
     // A state change, glFlush: the batch ends, as the reference draws what it holds.
     void endBatch();
     void finish();
+
+    // Draws a bitmap's fragments with the depth test and colour conversion of `state`, after
+    // everything submitted before it. Bitmaps outside the framebuffer are cut to it.
+    void drawBitmap(const DrawState& state, const Bitmap& bitmap);
 
     // Clears with colors/depth already converted by the caller's rules (see color_convert.h).
     void clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);

@@ -19,6 +19,9 @@ public:
     // Makes the context current and loads the GL table with OSMesa's entry points.
     void makeCurrent();
 
+    // A new buffer of this size for the same context (GL state kept), bound at once; its
+    // contents are undefined until drawn. Throws std::runtime_error if the size is not positive.
+    void resize(int width, int height);
     int width() const { return width_; }
     int height() const { return height_; }
 

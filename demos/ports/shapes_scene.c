@@ -4,7 +4,7 @@
 
 static float yaw = 30.0f, pitch = 15.0f;
 
-static void display() {
+static void display(void) {
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
@@ -34,7 +34,8 @@ static void reshape(int width, int height) {
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void special(int key, int, int) {
+static void special(int key, int x, int y) {
+    (void)x, (void)y;
     if (key == GLUT_KEY_LEFT) yaw -= 5;
     if (key == GLUT_KEY_RIGHT) yaw += 5;
     if (key == GLUT_KEY_UP) pitch -= 5;

@@ -2,11 +2,11 @@
 // coordinates. Ported to MyGL by changing only the include below (was <GL/glut.h>).
 #include <mygl/glut.h>
 
-#include <cmath>
+#include <math.h>
 
 static int tick = 0;
 
-static void display() {
+static void display(void) {
     glClearColor(1, 1, 1, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     glMatrixMode(GL_PROJECTION);
@@ -14,13 +14,14 @@ static void display() {
     gluOrtho2D(0, glutGet(GLUT_WINDOW_WIDTH), 0, glutGet(GLUT_WINDOW_HEIGHT));
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
+    int i;
     glBegin(GL_TRIANGLE_FAN);
     glColor3f(1, 1, 1);
     glVertex2f(100, 120);
-    for (int i = 0; i <= 16; ++i) {
-        const float a = 6.2831853f * i / 16 + 0.1f * tick;
-        glColor3f(0.5f + 0.5f * std::cos(a), 0.5f + 0.5f * std::sin(a), 0.5f);
-        glVertex2f(100 + 80 * std::cos(a), 120 + 80 * std::sin(a));
+    for (i = 0; i <= 16; ++i) {
+        float a = 6.2831853f * i / 16 + 0.1f * tick;
+        glColor3f(0.5f + 0.5f * cosf(a), 0.5f + 0.5f * sinf(a), 0.5f);
+        glVertex2f(100 + 80 * cosf(a), 120 + 80 * sinf(a));
     }
     glEnd();
     glColor3f(0.2f, 0.3f, 0.9f);

@@ -3,9 +3,9 @@
 #include <mygl/glut.h>
 
 static float angle = 20.0f;
-static bool culling = true, wireframe = false;
+static int culling = 1, wireframe = 0;
 
-static void display() {
+static void display(void) {
     glClearColor(0.1f, 0.1f, 0.15f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (culling) glEnable(GL_CULL_FACE);
@@ -14,13 +14,14 @@ static void display() {
     glLoadIdentity();
     gluLookAt(0, 1.5, 5, 0, 0, 0, 0, 1, 0);
     glRotatef(angle, 0.3f, 1.0f, 0.1f);
-    const float colors[6][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}};
-    const float v[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
-    const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
+    static const float colors[6][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}};
+    static const float v[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+    static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
     glBegin(GL_QUADS);
-    for (int f = 0; f < 6; ++f) {
+    int f, i;
+    for (f = 0; f < 6; ++f) {
         glColor3fv(colors[f]);
-        for (int i = 0; i < 4; ++i) glVertex3fv(v[faces[f][i]]);
+        for (i = 0; i < 4; ++i) glVertex3fv(v[faces[f][i]]);
     }
     glEnd();
     glutSwapBuffers();
@@ -34,13 +35,14 @@ static void reshape(int width, int height) {
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void keyboard(unsigned char key, int, int) {
+static void keyboard(unsigned char key, int x, int y) {
+    (void)x, (void)y;
     if (key == 'b') culling = !culling;
     if (key == 'w') wireframe = !wireframe;
     glutPostRedisplay();
 }
 
-static void idle() {
+static void idle(void) {
     angle += 3.0f;  // the display changes every frame: compare mode replays the same calls
     glutPostRedisplay();
 }

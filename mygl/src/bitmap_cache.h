@@ -1,0 +1,39 @@
+#pragma once
+// The reference's bitmap cache (Mesa's st_cb_bitmap.c): glBitmap calls of one colour and depth
+// whose bits fit in a 512 x 32 window area are gathered and drawn as one, when the next bitmap
+// does not fit, or at the next draw, clear, flush or read. The depth test and depth mask are
+// the ones in force then, not at glBitmap: that is what the reference draws (measured).
+#include <array>
+#include <cstdint>
+
+#include <glm/vec4.hpp>
+#include <glrenderer/bitmap.h>
+
+namespace mygl {
+
+class BitmapCache {
+public:
+    static constexpr int kWidth = 512, kHeight = 32;
+
+    bool empty() const { return empty_; }
+    // Whether a bitmap of this size can be cached at all.
+    static bool cacheable(int width, int height) { return width <= kWidth && height <= kHeight; }
+    // Whether it can join what is cached (always when the cache is empty).
+    bool accepts(int x, int y, int width, int height, const glm::vec4& color, float z) const;
+    // Adds a cacheable bitmap that the cache accepts; `rows` as glBitmap's, `stride` bytes apart.
+    void add(int x, int y, int width, int height, const std::uint8_t* rows, std::size_t stride,
+             const glm::vec4& color, float z);
+    // The whole cache as one bitmap to draw; then clear().
+    glrenderer::Bitmap bitmap() const;
+    void clear();
+
+private:
+    static constexpr std::size_t kStride = kWidth / 8;
+    bool empty_ = true;
+    int x_ = 0, y_ = 0;
+    glm::vec4 color_{};
+    float z_ = 0;
+    std::array<std::uint8_t, kStride * kHeight> bits_{};
+};
+
+}  // namespace mygl

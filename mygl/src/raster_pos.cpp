@@ -1,0 +1,113 @@
+// glRasterPos and glBitmap: the current raster position and the bitmaps drawn at it, computed
+// as the reference's fixed-function path computes them (Mesa's rastpos.c and _mesa_Bitmap).
+#include <array>
+#include <cmath>
+
+#include "compiled.h"
+
+namespace mygl {
+namespace {
+
+// Whether a clip-space point is inside the view volume, boundaries included. Asked as the
+// reference asks, "is it outside?", so that a NaN coordinate counts as inside.
+bool insideViewVolume(const glm::vec4& clip) {
+    return !(clip.z < -clip.w || clip.z > clip.w || clip.x < -clip.w || clip.x > clip.w || clip.y < -clip.w ||
+             clip.y > clip.w);
+}
+
+// The reference transforms by the modelview, then the projection (two steps, not their
+// product), divides, and maps to the viewport in float; an invalid position leaves every
+// raster value as it was.
+void rasterPos(const glm::vec4& object) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    const glm::vec4 eye = transform(s->modelview.top().matrix(), object);
+    const glm::vec4 clip = transform(s->projection.top().matrix(), eye);
+    s->rasterValid = insideViewVolume(clip);
+    if (!s->rasterValid) return;
+    const float d = clip.w == 0.0f ? 1.0f : 1.0f / clip.w;
+    const auto& v = s->draw.viewport;
+    const float halfWidth = static_cast<float>(v.width) * 0.5f, halfHeight = static_cast<float>(v.height) * 0.5f;
+    const float depthScale = 0.5f * (s->draw.depthFar - s->draw.depthNear);
+    const float depthTranslate = 0.5f * (s->draw.depthNear + s->draw.depthFar);
+    s->rasterPosition = {clip.x * d * halfWidth + (halfWidth + static_cast<float>(v.x)),
+                         clip.y * d * halfHeight + (halfHeight + static_cast<float>(v.y)),
+                         clip.z * d * depthScale + depthTranslate, clip.w};
+    s->rasterDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+    s->rasterColor = s->color;
+    s->rasterTexCoord = transform(s->texture.top().matrix(), s->texCoord);
+}
+
+template <class T>
+void rasterPosv(const T* v, int n) {
+    if (!v) return;
+    rasterPos({static_cast<float>(v[0]), static_cast<float>(v[1]), n > 2 ? static_cast<float>(v[2]) : 0.0f,
+               n > 3 ? static_cast<float>(v[3]) : 1.0f});
+}
+
+// Bytes from one row of a bitmap to the next under the unpack alignment.
+std::size_t bitmapRowStride(GLsizei width, int alignment) {
+    const std::size_t bytes = (static_cast<std::size_t>(width) + 7) / 8;
+    const std::size_t a = static_cast<std::size_t>(alignment);
+    return (bytes + a - 1) / a * a;
+}
+
+void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
+            const GLubyte* bits) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
+    if (!s->rasterValid) return;
+    // Beyond 2^29 pixels away nothing can be on screen (and position - origin must fit an int).
+    constexpr float kFarAway = 1 << 29;
+    const bool nearWindow = std::fabs(s->rasterPosition.x) < kFarAway && std::fabs(s->rasterPosition.y) < kFarAway &&
+                            std::fabs(xorig) < kFarAway && std::fabs(yorig) < kFarAway;
+    if (width > 0 && height > 0 && bits && nearWindow) {
+        // The reference truncates position - origin after adding 1e-4 (SGI's rule, for
+        // conformance): a raster position a hair below an integer still lands on it.
+        constexpr float kEpsilon = 0.0001f;
+        const int x = static_cast<int>(std::floor(s->rasterPosition.x + kEpsilon - xorig));
+        const int y = static_cast<int>(std::floor(s->rasterPosition.y + kEpsilon - yorig));
+        const std::size_t stride = bitmapRowStride(width, s->unpackAlignment);
+        const float z = s->rasterPosition.z;
+        if (BitmapCache::cacheable(width, height)) {
+            if (!s->bitmapCache.accepts(x, y, width, height, s->rasterColor, z)) drawCachedBitmaps(*s);
+            s->bitmapCache.add(x, y, width, height, bits, stride, s->rasterColor, z);
+        } else {  // drawn at once, while the cache stays pending (as the reference does)
+            glrenderer::Bitmap b;
+            b.x = x;
+            b.y = y;
+            b.width = width;
+            b.height = height;
+            b.rows = {bits, stride * static_cast<std::size_t>(height)};
+            b.rowStride = stride;
+            b.color = s->rasterColor;
+            b.z = z;
+            endBatch(*s);
+            s->pipeline.drawBitmap(s->draw, b);
+        }
+    }
+    s->rasterPosition.x += xmove;
+    s->rasterPosition.y += ymove;
+}
+
+const EntryPoint kEntryPoints[] = {
+    MYGL_POSITION_ENTRIES("glRasterPos", s, GLshort, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", i, GLint, rasterPosv),
+    MYGL_POSITION_ENTRIES("glRasterPos", f, GLfloat, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", d, GLdouble, rasterPosv),
+    {"glBitmap", entry(+[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
+         bitmap(w, h, xo, yo, xm, ym, bits);
+     })},
+};
+
+}  // namespace
+
+void drawCachedBitmaps(Context::State& state) {
+    if (state.bitmapCache.empty()) return;
+    endBatch(state);
+    state.pipeline.drawBitmap(state.draw, state.bitmapCache.bitmap());
+    state.bitmapCache.clear();
+}
+
+std::span<const EntryPoint> rasterPosEntryPoints() { return kEntryPoints; }
+
+}  // namespace mygl
