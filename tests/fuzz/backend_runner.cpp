@@ -19,6 +19,14 @@
 namespace fuzz {
 namespace {
 
+// Every pixel, 4 bytes each, rows packed.
+Answer readFrame(GLenum format, GLenum type, AnswerKind kind, const Stream& stream) {
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(stream.width) * static_cast<std::size_t>(stream.height) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, stream.width, stream.height, format, type, pixels.data());
+    return {kind, kFinalFrame, std::move(pixels)};
+}
+
 void executeStream(const Stream& stream, Answers& answers) {
     glClearColor(0, 0, 0, 0);
     glClearDepth(1);
@@ -29,12 +37,9 @@ void executeStream(const Stream& stream, Answers& answers) {
     glEnd();
     for (int i = 0; i < 8 && glGetError() != GL_NO_ERROR; ++i) {
     }
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glFinish();
-    const double w = stream.width, h = stream.height;
-    runCall(makeCall("glReadPixels", {0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE}), kFinalFrame, stream.width, stream.height, answers);
-    runCall(makeCall("glReadPixels", {0, 0, w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT}), kFinalFrame, stream.width,
-            stream.height, answers);
+    answers.push_back(readFrame(GL_RGBA, GL_UNSIGNED_BYTE, AnswerKind::Color, stream));
+    answers.push_back(readFrame(GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, AnswerKind::Depth, stream));
 }
 
 // The answers on the pipe: for each, kind (1 byte), call index (4), size (4), bytes.

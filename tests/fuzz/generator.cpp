@@ -217,7 +217,8 @@ private:
     }
 
     GLenum drawMode() {
-        if (random_.chance(invalidEnumRate_ / 2)) return random_.pick<GLenum>({10, 0xFFFF, GL_FRONT});
+        // Not 0xA-0xE: OSMesa is a GL 4.5 context, where those are the adjacency and patch modes.
+        if (random_.chance(invalidEnumRate_ / 2)) return random_.pick<GLenum>({0xF, 0xFFFF, GL_FRONT});
         return static_cast<GLenum>(random_.integer(GL_POINTS, GL_POLYGON));
     }
 

@@ -12,16 +12,22 @@ namespace fuzz {
 
 // What the rules need to know about the stream before a call.
 struct StreamContext {
+    // The attributes a glBegin/glEnd block has set: all of them, and those before its first vertex.
+    struct Attributes {
+        int vertexSize = 0;  // the first vertex's components
+        int colorSize = 0;   // 0: no glColor in the block
+        bool normal = false, texCoord = false, edgeFlag = false;
+    };
     bool insideBegin = false;
     GLenum mode = GL_POINTS;
     int verticesInBlock = 0;
-    // The vertex format of the glBegin/glEnd block as it stood at its first vertex.
-    int firstVertexSize = 0;
-    int colorSizeAtFirstVertex = 0;  // 0: no colour call in the block before its first vertex
-    bool normalAtFirstVertex = false, texCoordAtFirstVertex = false, edgeFlagAtFirstVertex = false;
-    int colorSizeInBlock = 0;
-    bool normalInBlock = false, texCoordInBlock = false, edgeFlagInBlock = false;
-    bool lastColorWasInteger = false;  // the last glColor had an integer type (b, ub, s, us, i, ui)
+    Attributes inBlock, atFirstVertex;
+
+    // Float state with no integer value for glGetIntegerv: outside [-1, 1] for the normalized
+    // colour and normal, outside the int range for the rest; NaN for all.
+    bool colorBeyondUnit = false, normalBeyondUnit = false;
+    bool texCoordBeyondInt = false, lineWidthBeyondInt = false, pointSizeBeyondInt = false;
+    bool alphaNotOneSinceFlush = false;  // a glColor4* set an alpha other than 1 since the last glFlush/glFinish
 
     void update(const Call& call);  // after `call` was added to the stream
 };

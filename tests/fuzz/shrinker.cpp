@@ -3,8 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference_departures.h"
+
 namespace fuzz {
 namespace {
+
+bool reachesDeparture(const Stream& stream) {
+    StreamContext context;
+    for (const Call& call : stream.calls) {
+        if (departureFor(call, context)) return true;
+        context.update(call);
+    }
+    return false;
+}
 
 class Shrinker {
 public:
@@ -24,8 +35,10 @@ private:
         return trials_ < options_.maxTrials && std::chrono::steady_clock::now() - start_ < options_.maxTime;
     }
 
-    // Runs the candidate; keeps it if it fails the same way.
+    // Runs the candidate; keeps it if it fails the same way. A candidate that reaches a
+    // reference departure is not run: it would fail for the reference's reason.
     bool keepIfFailing(Stream candidate) {
+        if (reachesDeparture(candidate)) return false;
         ++trials_;
         const Difference d = compareOutcomes(candidate, runOnBothBackends(candidate, options_.timeout));
         if (!d.sameFailure(failure_)) return false;
