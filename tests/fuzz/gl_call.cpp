@@ -253,6 +253,8 @@ std::uint16_t functionId(std::string_view name) {
 
 std::string_view functionName(const Call& call) { return table().at(call.function).name; }
 
+std::size_t functionCount() { return table().size(); }
+
 std::size_t argumentCount(std::uint16_t function) { return table().at(function).argumentCount; }
 
 Call makeCall(std::string_view name, std::vector<double> args) {

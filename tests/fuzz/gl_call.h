@@ -39,6 +39,7 @@ struct Stream {
 // fuzzer does not know it.
 std::uint16_t functionId(std::string_view name);
 std::string_view functionName(const Call& call);
+std::size_t functionCount();  // the table's size: ids are 0 .. functionCount() - 1
 // How many doubles `args` must hold for the function.
 std::size_t argumentCount(std::uint16_t function);
 Call makeCall(std::string_view name, std::vector<double> args = {});

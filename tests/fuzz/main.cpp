@@ -7,6 +7,7 @@
 #include <cstring>
 #include <string>
 
+#include "coverage.h"
 #include "difference.h"
 #include "generator.h"
 #include "reference_departures.h"
@@ -60,6 +61,7 @@ Options parse(int argc, char** argv) {
 int main(int argc, char** argv) {
     const Options options = parse(argc, argv);
     fuzz::AvoidedCounts avoided;
+    fuzz::Coverage coverage;
     std::size_t identical = 0, calls = 0;
     std::size_t primary[std::size(fuzz::kFailureClasses)] = {}, shown[std::size(fuzz::kFailureClasses)] = {};
     const auto started = std::chrono::steady_clock::now();
@@ -67,7 +69,9 @@ int main(int argc, char** argv) {
     for (std::uint64_t seed = options.start; seed < options.start + options.seeds; ++seed) {
         const fuzz::Stream stream = fuzz::generateStream(seed, options.generator, avoided);
         calls += stream.calls.size();
-        const fuzz::Difference d = fuzz::compareOutcomes(stream, fuzz::runOnBothBackends(stream, options.shrinking.timeout));
+        const fuzz::BothOutcomes outcomes = fuzz::runOnBothBackends(stream, options.shrinking.timeout);
+        coverage.add(stream, outcomes.osmesa);
+        const fuzz::Difference d = fuzz::compareOutcomes(stream, outcomes);
         if (options.printStreams) std::printf("/* seed %llu */\n%s", static_cast<unsigned long long>(seed), fuzz::toCSnippet(stream, d).c_str());
         for (std::size_t c = 0; c < std::size(shown); ++c) shown[c] += d.classes[c];
         if (d.failure == fuzz::FailureClass::None) {
@@ -96,6 +100,7 @@ int main(int argc, char** argv) {
         std::printf("  %-15s %zu seeds (%zu show it at all)\n", (std::string(fuzz::className(fuzz::kFailureClasses[c])) + ":").c_str(),
                     primary[c], shown[c]);
     }
+    std::printf("%s", coverage.summary().c_str());
     std::printf("  calls the generator left out, by reference-departure rule:\n");
     for (const fuzz::Departure& rule : fuzz::referenceDepartures()) {
         std::printf("    %-28s %zu  (%s)\n", rule.name, avoided[rule.name], rule.reason);
