@@ -46,11 +46,17 @@ bool isIntegerQueryOutOfRange(const Call& call, const StreamContext& c) {
     }
 }
 
-// Whether any of the call's arguments lies outside [-limit, limit] or is NaN. Integer types
-// convert into range, so only the float and double entry points can.
-bool anyBeyond(std::string_view name, const std::vector<double>& args, double limit) {
-    if (!name.ends_with("f") && !name.ends_with("d") && !name.ends_with("fv") && !name.ends_with("dv")) return false;
-    return std::any_of(args.begin(), args.end(), [&](double v) { return !(std::abs(v) <= limit); });
+// Whether any of the call's arguments, as the float the reference stores, lies outside
+// [-limit, limit] or is NaN. Normalized (colour, normal) integer types convert into range.
+bool anyBeyond(std::string_view name, const std::vector<double>& args, double limit, bool normalized) {
+    const bool floating = name.ends_with("f") || name.ends_with("d") || name.ends_with("fv") || name.ends_with("dv");
+    if (normalized && !floating) return false;
+    return std::any_of(args.begin(), args.end(), [&](double v) { return !(std::abs(static_cast<float>(v)) <= limit); });
+}
+
+bool isNonCanonicalBoolean(const Call& call, const StreamContext&) {
+    const std::string_view name = functionName(call);
+    return (name == "glDepthMask" || name.starts_with("glEdgeFlag")) && call.args[0] != GL_FALSE && call.args[0] != GL_TRUE;
 }
 
 bool isColor3fKeepingAlpha(const Call& call, const StreamContext& context) {
@@ -91,6 +97,9 @@ constexpr Departure kDepartures[] = {
     {"integer-query-out-of-range",
      "glGetIntegerv of a float state with no int value (NaN, beyond [-1,1] if normalized): OSMesa overflows, MyGL saturates",
      isIntegerQueryOutOfRange},
+    {"boolean-kept-as-given",
+     "glDepthMask/glEdgeFlag with a GLboolean other than 0 or 1: OSMesa answers the byte back (2), the spec GL_TRUE",
+     isNonCanonicalBoolean},
     {"color3f-keeps-alpha",
      "glColor3f[v] after a glColor4* with alpha != 1 and no glFlush since: OSMesa keeps that alpha, the spec sets 1",
      isColor3fKeepingAlpha},
@@ -123,14 +132,14 @@ void StreamContext::update(const Call& call) {
         if (insideBegin || call.args[0] <= 0) return;  // an error: the state stays
         (name == "glLineWidth" ? lineWidthBeyondInt : pointSizeBeyondInt) = !(call.args[0] < kIntLimit);
     } else if (name.starts_with("glColor")) {
-        colorBeyondUnit = anyBeyond(name, call.args, 1.0);
+        colorBeyondUnit = anyBeyond(name, call.args, 1.0, true);
         if (components(name, "glColor") == 4 && !setsAlphaOne(name, call.args[3])) alphaNotOneSinceFlush = true;
         if (insideBegin) inBlock.colorSize = std::max(inBlock.colorSize, components(name, "glColor"));
     } else if (name.starts_with("glNormal")) {
-        normalBeyondUnit = anyBeyond(name, call.args, 1.0);
+        normalBeyondUnit = anyBeyond(name, call.args, 1.0, true);
         inBlock.normal |= insideBegin;
     } else if (name.starts_with("glTexCoord")) {
-        texCoordBeyondInt = anyBeyond(name, call.args, kIntLimit);
+        texCoordBeyondInt = anyBeyond(name, call.args, kIntLimit, false);
         inBlock.texCoord |= insideBegin;
     } else if (insideBegin && name.starts_with("glEdgeFlag")) {
         inBlock.edgeFlag = true;
