@@ -1,4 +1,5 @@
 #include "reference/call_recorder.h"
+#include "reference/recorded_calls.h"
 
 #include <glad/gl.h>
 
@@ -26,6 +27,19 @@ struct Kept<const T*> {
     bool null;
     Kept(const T* p, std::size_t count) : data(p ? std::vector<T>(p, p + count) : std::vector<T>()), null(!p) {}
     const T* get() const { return null ? nullptr : data.data(); }
+};
+
+// Untyped data: the `count` bytes behind it are copied; with a count of 0 the pointer itself is
+// kept (vertex array pointers, which glDrawArrays reads when the call is replayed).
+template <>
+struct Kept<const void*> {
+    std::vector<unsigned char> data;
+    const void* pointer;
+    Kept(const void* p, std::size_t bytes)
+        : data(p && bytes ? std::vector<unsigned char>(static_cast<const unsigned char*>(p), static_cast<const unsigned char*>(p) + bytes)
+                          : std::vector<unsigned char>()),
+          pointer(p) {}
+    const void* get() const { return data.empty() ? pointer : data.data(); }
 };
 
 // How many elements a pointer argument of the call points at: a number, or a function of the
@@ -75,58 +89,48 @@ std::size_t bitmapBytes(GLsizei width, GLsizei height, GLfloat, GLfloat, GLfloat
     return ((static_cast<std::size_t>(width) + 7) / 8 + a - 1) / a * a * static_cast<std::size_t>(height);
 }
 
-// Every recorded entry point, with the element count behind its pointer argument (0: none).
-#define MYGL_RECORDED_CALLS(X)                                                                    \
-    X(glad_glBegin, 0) X(glad_glEnd, 0)                                                          \
-    X(glad_glVertex2d, 0) X(glad_glVertex2f, 0) X(glad_glVertex2i, 0) X(glad_glVertex2s, 0)      \
-    X(glad_glVertex3d, 0) X(glad_glVertex3f, 0) X(glad_glVertex3i, 0) X(glad_glVertex3s, 0)      \
-    X(glad_glVertex4d, 0) X(glad_glVertex4f, 0) X(glad_glVertex4i, 0) X(glad_glVertex4s, 0)      \
-    X(glad_glVertex2dv, 2) X(glad_glVertex2fv, 2) X(glad_glVertex2iv, 2) X(glad_glVertex2sv, 2)  \
-    X(glad_glVertex3dv, 3) X(glad_glVertex3fv, 3) X(glad_glVertex3iv, 3) X(glad_glVertex3sv, 3)  \
-    X(glad_glVertex4dv, 4) X(glad_glVertex4fv, 4) X(glad_glVertex4iv, 4) X(glad_glVertex4sv, 4)  \
-    X(glad_glColor3b, 0) X(glad_glColor3d, 0) X(glad_glColor3f, 0) X(glad_glColor3i, 0)          \
-    X(glad_glColor3s, 0) X(glad_glColor3ub, 0) X(glad_glColor3ui, 0) X(glad_glColor3us, 0)       \
-    X(glad_glColor4b, 0) X(glad_glColor4d, 0) X(glad_glColor4f, 0) X(glad_glColor4i, 0)          \
-    X(glad_glColor4s, 0) X(glad_glColor4ub, 0) X(glad_glColor4ui, 0) X(glad_glColor4us, 0)       \
-    X(glad_glColor3bv, 3) X(glad_glColor3dv, 3) X(glad_glColor3fv, 3) X(glad_glColor3iv, 3)      \
-    X(glad_glColor3sv, 3) X(glad_glColor3ubv, 3) X(glad_glColor3uiv, 3) X(glad_glColor3usv, 3)   \
-    X(glad_glColor4bv, 4) X(glad_glColor4dv, 4) X(glad_glColor4fv, 4) X(glad_glColor4iv, 4)      \
-    X(glad_glColor4sv, 4) X(glad_glColor4ubv, 4) X(glad_glColor4uiv, 4) X(glad_glColor4usv, 4)   \
-    X(glad_glNormal3b, 0) X(glad_glNormal3d, 0) X(glad_glNormal3f, 0) X(glad_glNormal3i, 0)      \
-    X(glad_glNormal3s, 0) X(glad_glNormal3bv, 3) X(glad_glNormal3dv, 3) X(glad_glNormal3fv, 3)   \
-    X(glad_glNormal3iv, 3) X(glad_glNormal3sv, 3)                                                 \
-    X(glad_glTexCoord2d, 0) X(glad_glTexCoord2f, 0) X(glad_glTexCoord2i, 0) X(glad_glTexCoord2s, 0) \
-    X(glad_glTexCoord2dv, 2) X(glad_glTexCoord2fv, 2) X(glad_glTexCoord2iv, 2) X(glad_glTexCoord2sv, 2) \
-    X(glad_glEdgeFlag, 0) X(glad_glEdgeFlagv, 1)                                                  \
-    X(glad_glRectd, 0) X(glad_glRectf, 0) X(glad_glRecti, 0) X(glad_glRects, 0)                  \
-    X(glad_glRectdv, 2) X(glad_glRectfv, 2) X(glad_glRectiv, 2) X(glad_glRectsv, 2)              \
-    X(glad_glMatrixMode, 0) X(glad_glLoadIdentity, 0) X(glad_glPushMatrix, 0) X(glad_glPopMatrix, 0) \
-    X(glad_glLoadMatrixd, 16) X(glad_glLoadMatrixf, 16) X(glad_glMultMatrixd, 16) X(glad_glMultMatrixf, 16) \
-    X(glad_glTranslated, 0) X(glad_glTranslatef, 0) X(glad_glRotated, 0) X(glad_glRotatef, 0)    \
-    X(glad_glScaled, 0) X(glad_glScalef, 0) X(glad_glFrustum, 0) X(glad_glOrtho, 0)              \
-    X(glad_glViewport, 0) X(glad_glDepthRange, 0)                                                 \
-    X(glad_glEnable, 0) X(glad_glDisable, 0) X(glad_glCullFace, 0) X(glad_glFrontFace, 0)        \
-    X(glad_glDepthFunc, 0) X(glad_glDepthMask, 0) X(glad_glShadeModel, 0) X(glad_glPolygonMode, 0) \
-    X(glad_glLineWidth, 0) X(glad_glPointSize, 0) X(glad_glHint, 0) X(glad_glPixelStorei, 0)     \
-    X(glad_glClearColor, 0) X(glad_glClearDepth, 0) X(glad_glClear, 0)                           \
-    X(glad_glFlush, 0) X(glad_glFinish, 0)                                                        \
+// Bytes of glCallLists' names and glDrawElements' indices.
+std::size_t bytesOf(GLenum type, GLsizei n) {
+    const std::size_t count = n > 0 ? static_cast<std::size_t>(n) : 0;
+    switch (type) {
+    case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_2_BYTES: return 2 * count;
+    case GL_3_BYTES: return 3 * count;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: case GL_4_BYTES: return 4 * count;
+    default: return count;
+    }
+}
+std::size_t callListsBytes(GLsizei n, GLenum type, const void*) { return bytesOf(type, n); }
+std::size_t elementBytes(GLenum, GLsizei count, GLenum type, const void*) { return bytesOf(type, count); }
+
+// Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
+// lists, and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// replayed: the program's arrays must still hold the frame's data then, as static arrays do).
+#define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
     X(glad_glRasterPos3d, 0) X(glad_glRasterPos3f, 0) X(glad_glRasterPos3i, 0) X(glad_glRasterPos3s, 0) \
     X(glad_glRasterPos4d, 0) X(glad_glRasterPos4f, 0) X(glad_glRasterPos4i, 0) X(glad_glRasterPos4s, 0) \
     X(glad_glRasterPos2dv, 2) X(glad_glRasterPos2fv, 2) X(glad_glRasterPos2iv, 2) X(glad_glRasterPos2sv, 2) \
     X(glad_glRasterPos3dv, 3) X(glad_glRasterPos3fv, 3) X(glad_glRasterPos3iv, 3) X(glad_glRasterPos3sv, 3) \
     X(glad_glRasterPos4dv, 4) X(glad_glRasterPos4fv, 4) X(glad_glRasterPos4iv, 4) X(glad_glRasterPos4sv, 4) \
-    X(glad_glBitmap, bitmapBytes)
+    X(glad_glBitmap, bitmapBytes)                                                                  \
+    X(glad_glNewList, 0) X(glad_glEndList, 0) X(glad_glCallList, 0) X(glad_glCallLists, callListsBytes) \
+    X(glad_glGenLists, 0) X(glad_glDeleteLists, 0) X(glad_glListBase, 0)                          \
+    X(glad_glVertexPointer, 0) X(glad_glColorPointer, 0) X(glad_glNormalPointer, 0)              \
+    X(glad_glTexCoordPointer, 0) X(glad_glEdgeFlagPointer, 0) X(glad_glIndexPointer, 0)          \
+    X(glad_glInterleavedArrays, 0) X(glad_glEnableClientState, 0) X(glad_glDisableClientState, 0) \
+    X(glad_glArrayElement, 0) X(glad_glDrawArrays, 0) X(glad_glDrawElements, elementBytes)
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();
     MYGL_RECORDED_CALLS(MYGL_INSTALL)
+    MYGL_FURTHER_CALLS(MYGL_INSTALL)
 #undef MYGL_INSTALL
 }
 
 void uninstallAll() {
 #define MYGL_UNINSTALL(slot, count) Wrapper<slot, count>::uninstall();
     MYGL_RECORDED_CALLS(MYGL_UNINSTALL)
+    MYGL_FURTHER_CALLS(MYGL_UNINSTALL)
 #undef MYGL_UNINSTALL
 }
 

@@ -158,3 +158,38 @@ TEST(CallRecorder, AFrameCallingFunctionsMyglLacksIsComparedWithoutACrash) {
     const reference::Image theirs{32, 32, osmesa.readPixels()};
     EXPECT_EQ(reference::compareImages(ours, theirs).differing, 0);
 }
+
+TEST(CallRecorder, DisplayListsAndVertexArraysReplayOnOsmesa) {
+    static const GLfloat positions[] = {-0.9f, -0.9f, 0.8f, -0.7f, 0.1f, 0.9f, -0.5f, 0.6f};
+    static const GLubyte colors[] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 200, 200, 0, 255};
+    static const GLushort indices[] = {0, 1, 2, 3};
+    const auto display = [] {
+        glClear(GL_COLOR_BUFFER_BIT);
+        const GLuint list = glGenLists(1);
+        glNewList(list, GL_COMPILE);
+        glColor3f(0.2f, 0.7f, 0.4f);
+        glRectf(-0.3f, -0.3f, 0.3f, 0.3f);
+        glEndList();
+        glEnableClientState(GL_VERTEX_ARRAY);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glVertexPointer(2, GL_FLOAT, 0, positions);
+        glColorPointer(4, GL_UNSIGNED_BYTE, 0, colors);
+        glDrawElements(GL_QUADS, 4, GL_UNSIGNED_SHORT, indices);
+        const GLubyte names[] = {0};
+        glListBase(list);
+        glCallLists(1, GL_UNSIGNED_BYTE, names);
+    };
+    reference::CallRecorder recorder;
+    mygl::Context mygl(40, 30);
+    mygl.makeCurrent();
+    recorder.start();
+    display();
+    recorder.stop();
+    const reference::Image ours{40, 30, mygl.readPixels()};
+    reference::OsmesaContext osmesa(40, 30);
+    osmesa.makeCurrent();
+    recorder.replay();
+    const reference::Image theirs{40, 30, osmesa.readPixels()};
+    EXPECT_EQ(reference::compareImages(ours, theirs).differing, 0);
+    EXPECT_GT(coveredPixels(theirs.rgba), 300);
+}

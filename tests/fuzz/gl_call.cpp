@@ -1,0 +1,281 @@
+#include "gl_call.h"
+
+#include <glad/gl.h>
+#include <reference/recorded_calls.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <tuple>
+#include <type_traits>
+#include <unordered_map>
+
+#include "gl_enum_names.h"
+
+namespace fuzz {
+namespace {
+
+struct ArgumentReader {
+    const std::vector<double>& args;
+    std::size_t next = 0;
+    double take() { return next < args.size() ? args[next++] : 0.0; }
+};
+
+// A double to the parameter's type; integers saturate (NaN gives 0) so that no stream, however
+// it was edited, converts out of range.
+template <class T>
+T fromDouble(double v) {
+    if constexpr (std::is_floating_point_v<T>) {
+        return static_cast<T>(v);
+    } else {
+        if (std::isnan(v)) return 0;
+        return static_cast<T>(std::clamp(v, static_cast<double>(std::numeric_limits<T>::lowest()),
+                                         static_cast<double>(std::numeric_limits<T>::max())));
+    }
+}
+
+template <class T>
+std::string typeName() {
+    if constexpr (std::is_same_v<T, GLfloat>) return "GLfloat";
+    else if constexpr (std::is_same_v<T, GLdouble>) return "GLdouble";
+    else if constexpr (std::is_same_v<T, GLint>) return "GLint";
+    else if constexpr (std::is_same_v<T, GLuint>) return "GLuint";
+    else if constexpr (std::is_same_v<T, GLshort>) return "GLshort";
+    else if constexpr (std::is_same_v<T, GLushort>) return "GLushort";
+    else if constexpr (std::is_same_v<T, GLbyte>) return "GLbyte";
+    else return "GLubyte";  // also GLboolean, the same type
+}
+
+std::string floatingLiteral(double v, int digits, const char* suffix) {
+    if (std::isnan(v)) return "NAN";
+    if (std::isinf(v)) return v > 0 ? "INFINITY" : "-INFINITY";
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    std::string s = text;
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s + suffix;
+}
+
+// How the unsigned-int parameters of a function print.
+enum class UnsignedStyle { Enum, Number, ClearMask, PrimitiveMode };
+
+template <class T>
+std::string literal(T v, UnsignedStyle style) {
+    if constexpr (std::is_same_v<T, GLfloat>) {
+        return floatingLiteral(v, 9, "f");
+    } else if constexpr (std::is_same_v<T, GLdouble>) {
+        return floatingLiteral(v, 17, "");
+    } else if constexpr (std::is_same_v<T, GLuint>) {
+        std::string name = style == UnsignedStyle::ClearMask       ? clearMaskName(v)
+                           : style == UnsignedStyle::PrimitiveMode ? primitiveModeName(v)
+                           : style == UnsignedStyle::Enum          ? enumName(v)
+                                                                   : std::string();
+        if (!name.empty()) return name;
+        char hex[16];
+        std::snprintf(hex, sizeof hex, style == UnsignedStyle::Number ? "%uu" : "0x%X", v);
+        return hex;
+    } else {
+        return std::to_string(v);
+    }
+}
+
+// One parameter of an entry point: a value, the elements behind a const pointer, or the
+// 16-element buffer a glGet*v writes into (answered back as a Get).
+template <class T, std::size_t Count>
+struct Parameter {
+    static constexpr std::size_t kDoubles = 1;
+    T value;
+    explicit Parameter(ArgumentReader& r) : value(fromDouble<T>(r.take())) {}
+    T get() { return value; }
+    void answer(std::uint32_t, Answers&) const {}
+    std::string declare(int) const { return {}; }
+    std::string print(int, UnsignedStyle style) const { return literal(value, style); }
+};
+
+template <class T, std::size_t Count>
+struct Parameter<const T*, Count> {
+    static constexpr std::size_t kDoubles = Count;
+    std::vector<T> data;
+    explicit Parameter(ArgumentReader& r) {
+        for (std::size_t i = 0; i < Count; ++i) data.push_back(fromDouble<T>(r.take()));
+    }
+    const T* get() { return data.data(); }
+    void answer(std::uint32_t, Answers&) const {}
+    std::string declare(int slot, UnsignedStyle style = UnsignedStyle::Number) const {
+        std::string s = "const " + typeName<T>() + " a" + std::to_string(slot) + "[] = {";
+        for (std::size_t i = 0; i < data.size(); ++i) s += (i ? ", " : "") + literal(data[i], style);
+        return s + "}; ";
+    }
+    std::string print(int slot, UnsignedStyle) const { return "a" + std::to_string(slot); }
+};
+
+constexpr std::size_t kQueryElements = 16;  // the most any glGet*v of ours answers (a matrix)
+
+template <class T, std::size_t Count>
+struct Parameter<T*, Count> {
+    static constexpr std::size_t kDoubles = 0;
+    std::array<T, kQueryElements> data;
+    explicit Parameter(ArgumentReader&) { std::memset(data.data(), 0xA5, sizeof data); }  // untouched slots show
+    T* get() { return data.data(); }
+    void answer(std::uint32_t index, Answers& answers) const {
+        const auto* bytes = reinterpret_cast<const std::uint8_t*>(data.data());
+        answers.push_back({AnswerKind::Get, index, {bytes, bytes + sizeof data}});
+    }
+    std::string declare(int slot) const { return typeName<T>() + " out" + std::to_string(slot) + "[16]; "; }
+    std::string print(int slot, UnsignedStyle) const { return "out" + std::to_string(slot); }
+};
+
+template <class R>
+void answerReturn(R value, std::uint32_t index, Answers& answers) {
+    if constexpr (std::is_pointer_v<R>) {  // glGetString: whether there is a string (their texts differ)
+        answers.push_back({AnswerKind::Get, index, {static_cast<std::uint8_t>(value != nullptr)}});
+    } else {
+        const auto* bytes = reinterpret_cast<const std::uint8_t*>(&value);
+        // glGetError is the one entry point returning a GLenum.
+        const AnswerKind kind = std::is_same_v<R, GLenum> ? AnswerKind::Error : AnswerKind::Get;
+        answers.push_back({kind, index, {bytes, bytes + sizeof value}});
+    }
+}
+
+using RunFunction = void (*)(const Call&, std::uint32_t, int, int, Answers&);
+using PrintFunction = std::string (*)(const Call&);
+
+struct FunctionInfo {
+    std::string_view name;
+    std::size_t argumentCount;
+    RunFunction run;
+    PrintFunction print;
+};
+
+UnsignedStyle unsignedStyle(std::string_view name) {
+    if (name.starts_with("glColor")) return UnsignedStyle::Number;
+    if (name == "glClear") return UnsignedStyle::ClearMask;
+    if (name == "glBegin") return UnsignedStyle::PrimitiveMode;
+    return UnsignedStyle::Enum;
+}
+
+// The table entry for the glad slot `Slot`; `Count` elements lie behind each const pointer.
+template <auto& Slot, std::size_t Count, class Signature = std::remove_reference_t<decltype(Slot)>>
+struct Entry;
+
+template <auto& Slot, std::size_t Count, class R, class... Args>
+struct Entry<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
+    using Parameters = std::tuple<Parameter<Args, Count>...>;
+    static constexpr std::size_t kDoubles = (std::size_t{0} + ... + Parameter<Args, Count>::kDoubles);
+
+    static void run(const Call& call, std::uint32_t index, int, int, Answers& answers) {
+        [[maybe_unused]] ArgumentReader reader{call.args};
+        Parameters parameters{Parameter<Args, Count>(reader)...};  // braces: read left to right
+        if constexpr (std::is_void_v<R>) {
+            std::apply([](auto&... p) { Slot(p.get()...); }, parameters);
+        } else {
+            answerReturn(std::apply([](auto&... p) { return Slot(p.get()...); }, parameters), index, answers);
+        }
+        std::apply([&](const auto&... p) { (p.answer(index, answers), ...); }, parameters);
+    }
+
+    static std::string print(const Call& call, std::string_view name) {
+        [[maybe_unused]] ArgumentReader reader{call.args};
+        Parameters parameters{Parameter<Args, Count>(reader)...};
+        const UnsignedStyle style = unsignedStyle(name);
+        std::string declarations, arguments;
+        int slot = 0;
+        std::apply([&](const auto&... p) {
+            ((declarations += p.declare(slot), arguments += (slot ? ", " : "") + p.print(slot, style), ++slot), ...);
+        }, parameters);
+        const std::string statement = std::string(name) + "(" + arguments + ");";
+        return declarations.empty() ? statement : "{ " + declarations + statement + " }";
+    }
+};
+
+int readPixelsBytesPerPixel(GLenum format, GLenum type) {
+    if (format == GL_RGB && type == GL_UNSIGNED_BYTE) return 3;
+    return 4;  // RGBA bytes, 32-bit depth; for pairs GL rejects, a safe size for a faulty write
+}
+
+// glReadPixels into a heap buffer of exactly the bytes GL may write (so that AddressSanitizer sees
+// any write beyond), prefilled so that untouched bytes show; the whole buffer is the answer.
+void runReadPixels(const Call& call, std::uint32_t index, int width, int height, Answers& answers) {
+    ArgumentReader r{call.args};
+    const auto x = fromDouble<GLint>(r.take()), y = fromDouble<GLint>(r.take());
+    const auto w = fromDouble<GLsizei>(r.take()), h = fromDouble<GLsizei>(r.take());
+    const auto format = fromDouble<GLenum>(r.take()), type = fromDouble<GLenum>(r.take());
+    std::vector<std::uint8_t> buffer(readPixelsBytes(x, y, w, h, readPixelsBytesPerPixel(format, type), width, height), 0x5A);
+    glReadPixels(x, y, w, h, format, type, buffer.data());
+    answers.push_back({format == GL_DEPTH_COMPONENT ? AnswerKind::Depth : AnswerKind::Color, index, std::move(buffer)});
+}
+
+std::string printReadPixels(const Call& call) {
+    ArgumentReader r{call.args};
+    std::string args;
+    for (int i = 0; i < 4; ++i) args += std::to_string(fromDouble<GLint>(r.take())) + ", ";
+    args += literal(fromDouble<GLenum>(r.take()), UnsignedStyle::Enum) + ", ";
+    args += literal(fromDouble<GLenum>(r.take()), UnsignedStyle::Enum);
+    return "{ static GLubyte pixels[1 << 24]; glReadPixels(" + args + ", pixels); }";
+}
+
+// Every entry point the fuzzer calls: the recorded (state and drawing) calls and the queries.
+#define MYGL_QUERY_CALLS(X)                                                                       \
+    X(glad_glGetError, 0) X(glad_glGetBooleanv, 0) X(glad_glGetIntegerv, 0) X(glad_glGetFloatv, 0) \
+    X(glad_glGetDoublev, 0) X(glad_glIsEnabled, 0) X(glad_glGetString, 0)
+
+const std::vector<FunctionInfo>& table() {
+    static const std::vector<FunctionInfo> functions = [] {
+        std::vector<FunctionInfo> t;
+#define MYGL_FUZZ_ENTRY(slot, count)                                                              \
+    t.push_back({std::string_view(#slot).substr(5), Entry<slot, count>::kDoubles, &Entry<slot, count>::run, \
+                 [](const Call& c) { return Entry<slot, count>::print(c, std::string_view(#slot).substr(5)); }});
+        MYGL_RECORDED_CALLS(MYGL_FUZZ_ENTRY)
+        MYGL_QUERY_CALLS(MYGL_FUZZ_ENTRY)
+#undef MYGL_FUZZ_ENTRY
+        t.push_back({"glReadPixels", 6, &runReadPixels, &printReadPixels});
+        return t;
+    }();
+    return functions;
+}
+
+}  // namespace
+
+std::uint16_t functionId(std::string_view name) {
+    static const auto ids = [] {
+        std::unordered_map<std::string_view, std::uint16_t> map;
+        for (std::size_t i = 0; i < table().size(); ++i) map.emplace(table()[i].name, static_cast<std::uint16_t>(i));
+        return map;
+    }();
+    const auto found = ids.find(name);
+    if (found == ids.end()) throw std::invalid_argument("the fuzzer has no GL function " + std::string(name));
+    return found->second;
+}
+
+std::string_view functionName(const Call& call) { return table().at(call.function).name; }
+
+std::size_t functionCount() { return table().size(); }
+
+std::size_t argumentCount(std::uint16_t function) { return table().at(function).argumentCount; }
+
+Call makeCall(std::string_view name, std::vector<double> args) {
+    const std::uint16_t id = functionId(name);
+    args.resize(argumentCount(id), 0.0);
+    return {id, std::move(args)};
+}
+
+void runCall(const Call& call, std::uint32_t index, int width, int height, Answers& answers) {
+    table().at(call.function).run(call, index, width, height, answers);
+}
+
+std::string toC(const Call& call) { return table().at(call.function).print(call); }
+
+std::size_t readPixelsBytes(std::int64_t x, std::int64_t y, std::int64_t w, std::int64_t h, int bytesPerPixel,
+                            int width, int height) {
+    const std::int64_t lastColumn = std::min<std::int64_t>(x + w, width) - 1 - x;
+    const std::int64_t lastRow = std::min<std::int64_t>(y + h, height) - 1 - y;
+    if (w <= 0 || h <= 0 || lastColumn < std::max<std::int64_t>(0, -x) || lastRow < std::max<std::int64_t>(0, -y)) return 4;
+    const std::int64_t rowBytes = (w * bytesPerPixel + 7) / 8 * 8;
+    return static_cast<std::size_t>(std::max<std::int64_t>(4, lastRow * rowBytes + (lastColumn + 1) * bytesPerPixel));
+}
+
+}  // namespace fuzz

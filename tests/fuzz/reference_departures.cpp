@@ -1,0 +1,162 @@
+#include "reference_departures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <string_view>
+
+namespace fuzz {
+namespace {
+
+// Float values that round to an int: below 2^31 - 0.5 in magnitude.
+constexpr double kIntLimit = 2147483647.0;
+
+// The digit after the prefix of "glVertex3f", "glColor4ub": the number of components.
+int components(std::string_view name, std::string_view prefix) { return name[prefix.size()] - '0'; }
+
+// Whether a glColor4* call's alpha converts to exactly 1 (the largest value of an integer type).
+bool setsAlphaOne(std::string_view name, double alpha) {
+    const std::string_view type = name.substr(8, name.ends_with("v") ? name.size() - 9 : std::string_view::npos);
+    if (type == "f" || type == "d") return alpha == 1.0;
+    if (type == "b") return alpha == 127;
+    if (type == "ub") return alpha == 255;
+    if (type == "s") return alpha == 32767;
+    if (type == "us") return alpha == 65535;
+    if (type == "i") return alpha == 2147483647.0;
+    return alpha == 4294967295.0;  // ui
+}
+
+bool isIntegerMatrixQuery(const Call& call, const StreamContext&) {
+    if (functionName(call) != "glGetIntegerv") return false;
+    const auto pname = static_cast<GLenum>(call.args[0]);
+    return pname == GL_MODELVIEW_MATRIX || pname == GL_PROJECTION_MATRIX || pname == GL_TEXTURE_MATRIX;
+}
+
+bool isIntegerQueryOutOfRange(const Call& call, const StreamContext& c) {
+    if (functionName(call) != "glGetIntegerv") return false;
+    switch (static_cast<GLenum>(call.args[0])) {
+    case GL_CURRENT_COLOR: return c.colorBeyondUnit;
+    case GL_CURRENT_NORMAL: return c.normalBeyondUnit;
+    case GL_CURRENT_TEXTURE_COORDS: return c.texCoordBeyondInt;
+    case GL_LINE_WIDTH: return c.lineWidthBeyondInt;
+    case GL_POINT_SIZE: return c.pointSizeBeyondInt;
+    default: return false;
+    }
+}
+
+// Whether any of the call's arguments, as the float the reference stores, lies outside
+// [-limit, limit] or is NaN. Normalized (colour, normal) integer types convert into range.
+bool anyBeyond(std::string_view name, const std::vector<double>& args, double limit, bool normalized) {
+    const bool floating = name.ends_with("f") || name.ends_with("d") || name.ends_with("fv") || name.ends_with("dv");
+    if (normalized && !floating) return false;
+    return std::any_of(args.begin(), args.end(), [&](double v) { return !(std::abs(static_cast<float>(v)) <= limit); });
+}
+
+bool isNonCanonicalBoolean(const Call& call, const StreamContext&) {
+    const std::string_view name = functionName(call);
+    return (name == "glDepthMask" || name.starts_with("glEdgeFlag")) && call.args[0] != GL_FALSE && call.args[0] != GL_TRUE;
+}
+
+bool isColor3fKeepingAlpha(const Call& call, const StreamContext& context) {
+    const std::string_view name = functionName(call);
+    return (name == "glColor3f" || name == "glColor3fv") && context.alphaNotOneSinceFlush;
+}
+
+bool growsLineLoopFormat(const Call& call, const StreamContext& c) {
+    if (!c.insideBegin || c.mode != GL_LINE_LOOP || c.verticesInBlock == 0) return false;
+    const std::string_view name = functionName(call);
+    const StreamContext::Attributes& first = c.atFirstVertex;
+    if (name.starts_with("glVertex")) return components(name, "glVertex") > first.vertexSize;
+    if (name.starts_with("glColor")) return components(name, "glColor") > first.colorSize;
+    if (name.starts_with("glNormal")) return !first.normal;
+    if (name.starts_with("glTexCoord")) return !first.texCoord;
+    if (name.starts_with("glEdgeFlag")) return !first.edgeFlag;
+    return false;
+}
+
+bool readPixelsSumOverflows(const Call& call, const StreamContext&) {
+    if (functionName(call) != "glReadPixels") return false;
+    constexpr std::int64_t kIntMax = std::numeric_limits<GLint>::max();
+    const auto at = [&](int i) { return static_cast<std::int64_t>(call.args[i]); };
+    return at(0) + at(2) > kIntMax || at(1) + at(3) > kIntMax;
+}
+
+bool readsUnknownFormat(const Call& call, const StreamContext&) {
+    if (functionName(call) != "glReadPixels" || call.args[2] < 0 || call.args[3] < 0) return false;
+    constexpr GLenum kFormats[] = {GL_COLOR_INDEX, GL_STENCIL_INDEX, GL_DEPTH_COMPONENT, GL_RED, GL_GREEN, GL_BLUE,
+                                   GL_ALPHA, GL_RGB, GL_RGBA, GL_LUMINANCE, GL_LUMINANCE_ALPHA};
+    return std::find(std::begin(kFormats), std::end(kFormats), static_cast<GLenum>(call.args[4])) == std::end(kFormats);
+}
+
+constexpr Departure kDepartures[] = {
+    {"integer-query-of-matrix",
+     "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
+     isIntegerMatrixQuery},
+    {"integer-query-out-of-range",
+     "glGetIntegerv of a float state with no int value (NaN, beyond [-1,1] if normalized): OSMesa overflows, MyGL saturates",
+     isIntegerQueryOutOfRange},
+    {"boolean-kept-as-given",
+     "glDepthMask/glEdgeFlag with a GLboolean other than 0 or 1: OSMesa answers the byte back (2), the spec GL_TRUE",
+     isNonCanonicalBoolean},
+    {"color3f-keeps-alpha",
+     "glColor3f[v] after a glColor4* with alpha != 1 and no glFlush since: OSMesa keeps that alpha, the spec sets 1",
+     isColor3fKeepingAlpha},
+    {"line-loop-format-growth",
+     "an attribute new to a GL_LINE_LOOP after its first vertex: OSMesa flushes the loop and loses its closing segment",
+     growsLineLoopFormat},
+    {"read-pixels-sum-overflow",
+     "glReadPixels with x + width or y + height above INT_MAX: OSMesa's clipping overflows, it writes out of bounds",
+     readPixelsSumOverflows},
+    {"read-pixels-unknown-format",
+     "glReadPixels with a format GL does not define: OSMesa reports GL_INVALID_OPERATION, the spec GL_INVALID_ENUM",
+     readsUnknownFormat},
+};
+
+}  // namespace
+
+void StreamContext::update(const Call& call) {
+    const std::string_view name = functionName(call);
+    if (name == "glBegin") {
+        if (insideBegin || call.args[0] > GL_POLYGON) return;  // an error: nothing begins
+        insideBegin = true;
+        mode = static_cast<GLenum>(call.args[0]);
+        verticesInBlock = 0;
+        inBlock = atFirstVertex = {};
+    } else if (name == "glEnd") {
+        insideBegin = false;
+    } else if (name == "glFlush" || name == "glFinish") {
+        alphaNotOneSinceFlush = false;
+    } else if (name == "glLineWidth" || name == "glPointSize") {
+        if (insideBegin || call.args[0] <= 0) return;  // an error: the state stays
+        (name == "glLineWidth" ? lineWidthBeyondInt : pointSizeBeyondInt) = !(call.args[0] < kIntLimit);
+    } else if (name.starts_with("glColor")) {
+        colorBeyondUnit = anyBeyond(name, call.args, 1.0, true);
+        if (components(name, "glColor") == 4 && !setsAlphaOne(name, call.args[3])) alphaNotOneSinceFlush = true;
+        if (insideBegin) inBlock.colorSize = std::max(inBlock.colorSize, components(name, "glColor"));
+    } else if (name.starts_with("glNormal")) {
+        normalBeyondUnit = anyBeyond(name, call.args, 1.0, true);
+        inBlock.normal |= insideBegin;
+    } else if (name.starts_with("glTexCoord")) {
+        texCoordBeyondInt = anyBeyond(name, call.args, kIntLimit, false);
+        inBlock.texCoord |= insideBegin;
+    } else if (insideBegin && name.starts_with("glEdgeFlag")) {
+        inBlock.edgeFlag = true;
+    } else if (insideBegin && name.starts_with("glVertex")) {
+        if (verticesInBlock++ > 0) return;
+        inBlock.vertexSize = components(name, "glVertex");
+        atFirstVertex = inBlock;
+    }
+}
+
+std::span<const Departure> referenceDepartures() { return kDepartures; }
+
+const Departure* departureFor(const Call& call, const StreamContext& context) {
+    for (const Departure& d : kDepartures) {
+        if (d.matches(call, context)) return &d;
+    }
+    return nullptr;
+}
+
+}  // namespace fuzz

@@ -1,0 +1,46 @@
+#pragma once
+// Where the reference (OSMesa, Mesa 22.3) departs from the GL spec or fails, in one place. MyGL
+// follows the spec, so a stream that reaches one of these cases would differ for a reason that
+// is not a MyGL bug: the generator drops every call a rule matches and counts it.
+#include <glad/gl.h>
+
+#include <span>
+
+#include "gl_call.h"
+
+namespace fuzz {
+
+// What the rules need to know about the stream before a call.
+struct StreamContext {
+    // The attributes a glBegin/glEnd block has set: all of them, and those before its first vertex.
+    struct Attributes {
+        int vertexSize = 0;  // the first vertex's components
+        int colorSize = 0;   // 0: no glColor in the block
+        bool normal = false, texCoord = false, edgeFlag = false;
+    };
+    bool insideBegin = false;
+    GLenum mode = GL_POINTS;
+    int verticesInBlock = 0;
+    Attributes inBlock, atFirstVertex;
+
+    // Float state with no integer value for glGetIntegerv: outside [-1, 1] for the normalized
+    // colour and normal, outside the int range for the rest; NaN for all.
+    bool colorBeyondUnit = false, normalBeyondUnit = false;
+    bool texCoordBeyondInt = false, lineWidthBeyondInt = false, pointSizeBeyondInt = false;
+    bool alphaNotOneSinceFlush = false;  // a glColor4* set an alpha other than 1 since the last glFlush/glFinish
+
+    void update(const Call& call);  // after `call` was added to the stream
+};
+
+struct Departure {
+    const char* name;
+    const char* reason;  // one line: what the reference does instead of the spec
+    bool (*matches)(const Call& call, const StreamContext& context);
+};
+
+std::span<const Departure> referenceDepartures();
+
+// The rule `call` would run into after `context`, or nullptr.
+const Departure* departureFor(const Call& call, const StreamContext& context);
+
+}  // namespace fuzz
