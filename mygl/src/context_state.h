@@ -4,6 +4,7 @@
 
 #include <glrenderer/framebuffer.h>
 #include <glrenderer/pipeline.h>
+#include <map>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -71,7 +72,10 @@ struct Context::State {
     GLenum depthFunc = GL_LESS;
     GLenum shadeModel = GL_SMOOTH;
     GLenum polygonModeFront = GL_FILL, polygonModeBack = GL_FILL;
-    std::vector<GLenum> otherEnabled;  // accepted capabilities that change nothing here
+    std::vector<GLenum> otherEnabled{GL_DITHER};  // accepted capabilities that change nothing here
+    std::map<GLenum, GLenum> hints{{GL_PERSPECTIVE_CORRECTION_HINT, GL_DONT_CARE}, {GL_POINT_SMOOTH_HINT, GL_DONT_CARE},
+                                   {GL_LINE_SMOOTH_HINT, GL_DONT_CARE}, {GL_POLYGON_SMOOTH_HINT, GL_DONT_CARE},
+                                   {GL_FOG_HINT, GL_DONT_CARE}};
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
     int packAlignment = 4, unpackAlignment = 4;

@@ -89,6 +89,8 @@ Value query(const Context::State& s, GLenum name) {
     case GL_TEXTURE_COORD_ARRAY_TYPE: return one(s.arrays.texCoord.type);
     case GL_TEXTURE_COORD_ARRAY_STRIDE: return one(s.arrays.texCoord.stride);
     case GL_EDGE_FLAG_ARRAY_STRIDE: return one(s.arrays.edgeFlag.stride);
+    case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
+    case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT: return one(s.hints.at(name));
     case GL_LIST_BASE: return one(s.lists.base);
     case GL_LIST_INDEX: return one(s.lists.compilingName());
     case GL_LIST_MODE: return one(s.lists.compilingMode());

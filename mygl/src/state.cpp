@@ -142,6 +142,17 @@ void pixelStore(GLenum name, GLint value) {
     (name == GL_PACK_ALIGNMENT ? s->packAlignment : s->unpackAlignment) = value;
 }
 
+// Hints change nothing here (the reference renders the same either way) but are checked and
+// kept for glGet.
+void hint(GLenum target, GLenum mode) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) return setError(*s, GL_INVALID_ENUM);
+    const auto found = s->hints.find(target);
+    if (found == s->hints.end()) return setError(*s, GL_INVALID_ENUM);
+    found->second = mode;
+}
+
 const EntryPoint kEntryPoints[] = {
     {"glEnable", compiled<+[](GLenum cap) { setCapability(cap, true); }>()},
     {"glDisable", compiled<+[](GLenum cap) { setCapability(cap, false); }>()},
@@ -170,7 +181,7 @@ const EntryPoint kEntryPoints[] = {
          if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
      }>()},
     {"glPixelStorei", entry(+[](GLenum name, GLint value) { pixelStore(name, value); })},
-    {"glHint", compiled<+[](GLenum, GLenum) { stateOutsideBeginEnd(); }>()},
+    {"glHint", compiled<+[](GLenum target, GLenum mode) { hint(target, mode); }>()},
     {"glGetError", entry(+[]() -> GLenum {
          Context::State* s = stateOutsideBeginEnd();
          if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)

@@ -84,6 +84,8 @@ std::vector<Misuse> misuses() {
         {"glDrawElements with a negative count", GL_INVALID_VALUE, [] { const GLuint i[3] = {0, 1, 2}; glDrawElements(GL_TRIANGLES, -1, GL_UNSIGNED_INT, i); }},
         {"glInterleavedArrays with a bad format", GL_INVALID_ENUM, [] { glInterleavedArrays(GL_RGBA, 0, nullptr); }},
         {"glGetPointerv of an unknown name", GL_INVALID_ENUM, [] { void* p; glGetPointerv(GL_VERTEX_ARRAY, &p); }},
+        {"glHint of an unknown target", GL_INVALID_ENUM, [] { glHint(0, GL_NICEST); }},
+        {"glHint with an unknown mode", GL_INVALID_ENUM, [] { glHint(GL_FOG_HINT, GL_FOG); }},
         {"the first error is kept", GL_INVALID_ENUM, [] { glEnable(0x1234); glViewport(0, 0, -1, -1); }},
     };
 }
