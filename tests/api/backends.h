@@ -31,6 +31,20 @@ BothResults<Result> onBothBackends(const std::function<Result()>& calls, int wid
     return results;
 }
 
+// Clears colour and depth, enables the depth test, and looks down -z from `distance` through a
+// 4:3 frustum (near 1, far 30): the view the display-list and vertex-array tests draw in.
+inline void clearedPerspectiveView(float distance) {
+    glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 30.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glTranslatef(0.0f, 0.0f, -distance);
+}
+
 // The colour (RGBA8) and 24-bit depth (as GL_UNSIGNED_INT) of every pixel, after glFinish.
 struct Frame {
     std::vector<GLubyte> color;

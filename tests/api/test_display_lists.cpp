@@ -21,17 +21,7 @@ namespace {
 
 constexpr int kWidth = 80, kHeight = 60;
 
-void perspectiveView() {
-    glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 30.0);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glTranslatef(0.0f, 0.0f, -6.0f);
-}
+void perspectiveView() { testing_support::clearedPerspectiveView(6.0f); }
 
 // A gear-like ring of quads with a colour per vertex, as course programs compile them.
 void ring(float inner, float outer, int teeth) {

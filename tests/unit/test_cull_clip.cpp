@@ -69,9 +69,9 @@ TEST(Decomposition, FanAndPolygonOrders) {
 }
 
 TEST(Decomposition, QuadDiagonalDependsOnPathAndShading) {
-    auto split = [](glrenderer::DecompositionPath path, bool flatColorsPerVertex) {
+    auto split = [](glrenderer::DecompositionPath path, bool v1v3Quads) {
         std::vector<std::array<std::uint32_t, 3>> out;
-        glrenderer::decomposeTriangles(PrimitiveMode::Quads, 4, path, flatColorsPerVertex,
+        glrenderer::decomposeTriangles(PrimitiveMode::Quads, 4, path, v1v3Quads,
                                        [&](const glrenderer::TriangleIndices& t) { out.push_back({t.v[0], t.v[1], t.v[2]}); });
         return out;
     };
