@@ -11,11 +11,14 @@ BatchDrawer::BatchDrawer(Framebuffer& framebuffer)
 
 void BatchDrawer::flush() { tiles_.flush(stats_, paintersSort_); }
 
-void BatchDrawer::draw(const Batch& batch) {
-    paintersSort_ = batch.methods.hiddenSurface == HiddenSurface::PaintersSort;
-    if (BatchSetup::handles(batch)) {
-        setup_.setUp(batch, tiles_, stats_);
-    } else if (isTriangleMode(batch.mode)) {
+void BatchDrawer::draw(const SubmittedBatch& submitted) {
+    paintersSort_ = submitted.methods.hiddenSurface == HiddenSurface::PaintersSort;
+    if (BatchSetup::handles(submitted)) {
+        setup_.setUp(submitted, tiles_, stats_);
+        return;
+    }
+    const Batch batch = setup_.toClipSpace(submitted);
+    if (isTriangleMode(batch.mode)) {
         drawUnfilled(batch);
     } else {
         flush();  // points and lines are drawn at once: queued triangles first

@@ -21,7 +21,7 @@ public:
     const Stats& stats() const { return stats_; }
     void resetStats() { stats_ = {}; }
 
-    void draw(const Batch& batch);
+    void draw(const SubmittedBatch& batch);
     // Every batch of the chunk, in order; triangles its poster has set up already are only
     // queued.
     void draw(const BatchChunk& chunk);

@@ -70,7 +70,8 @@ std::uint8_t BatchSetup::transform(const Batch& batch) {
     return transformVertices(batch.vertices, viewport, outcodes_.data(), windowVertices_.data());
 }
 
-void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats) {
+void BatchSetup::setUp(const SubmittedBatch& submitted, TriangleTarget& target, Stats& stats) {
+    const Batch batch = toClipSpace(submitted);
     const std::uint8_t anyOutside = transform(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;

@@ -100,8 +100,9 @@ std::size_t Pipeline::wrapOpenPrimitive() {
     const PrimitiveMode mode = batch_->mode;
     const std::size_t count = open_.size();
     const WrapSplit split = splitAtWrap(mode, count, loopContinued_);
-    std::array<Vertex, 3> carried;
-    for (std::size_t i = 0; i < split.carriedCount; ++i) carried[i] = open_[split.carried[i]];
+    std::array<Vertex, std::tuple_size_v<decltype(split.carried)>> carried;
+    const std::size_t carriedCount = std::min(split.carriedCount, carried.size());  // (it is never more)
+    for (std::size_t i = 0; i < carriedCount; ++i) carried[i] = open_[split.carried[i]];
     open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(split.drawnFirst));
     open_.resize(split.drawnCount);
     if (mode == PrimitiveMode::LineLoop) batch_->mode = PrimitiveMode::LineStrip;
@@ -110,8 +111,8 @@ std::size_t Pipeline::wrapOpenPrimitive() {
     batch_->mode = mode;
     // (A part that carries all its vertices over starts the primitive again as it was.)
     if (mode == PrimitiveMode::LineLoop && split.carriedCount < count) loopContinued_ = true;
-    open_.assign(carried.begin(), carried.begin() + static_cast<std::ptrdiff_t>(split.carriedCount));
-    return split.carriedCount;
+    open_.assign(carried.begin(), carried.begin() + static_cast<std::ptrdiff_t>(carriedCount));
+    return carriedCount;
 }
 
 void Pipeline::wrapBuffer() { buffer_.wrap(wrapOpenPrimitive()); }
@@ -170,6 +171,12 @@ void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<cons
     colorPerVertex();  // vertices given whole carry their own colors
     for (const Vertex& vertex : vertices) addVertex() = vertex;
     endPrimitive();
+}
+
+void Pipeline::setTransform(const VertexTransform& transform) {
+    if (transform == batch_->transform) return;
+    closeBatch();  // (keeps the header: the batches after it take the new matrices)
+    batch_->transform = transform;
 }
 
 void Pipeline::endBatch() {

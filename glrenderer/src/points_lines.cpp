@@ -9,13 +9,13 @@
 namespace glrenderer {
 namespace {
 
-void drawSegment(const Vertex& start, const Vertex& end, const ViewportTransform& viewport,
+void drawSegment(const ClipVertex& start, const ClipVertex& end, const ViewportTransform& viewport,
                  const DrawState& state, Framebuffer& framebuffer, Stats& stats) {
-    Vertex a = start, b = end;
+    ClipVertex a = start, b = end;
     const std::uint8_t outcodeA = clipOutcode(a.position), outcodeB = clipOutcode(b.position);
     if (!clipLine(a, b, outcodeA, outcodeB)) return;
     // An end that was outside has been moved by the clipper, which maps it unfused.
-    const auto toWindow = [&](const Vertex& v, std::uint8_t outcode) {
+    const auto toWindow = [&](const ClipVertex& v, std::uint8_t outcode) {
         return outcode == 0 ? viewport.apply(v) : viewport.applyToClipped(v);
     };
     // Flat lines take the second vertex's color even when that end was clipped.
@@ -24,13 +24,13 @@ void drawSegment(const Vertex& start, const Vertex& end, const ViewportTransform
 
 }  // namespace
 
-void drawPointsAndLines(PrimitiveMode mode, std::span<const Vertex> vertices, const DrawState& state,
+void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                         Framebuffer& framebuffer, Stats& stats) {
     const ViewportTransform viewport(state, framebuffer.height());
     const std::size_t n = vertices.size();
     switch (mode) {
     case PrimitiveMode::Points:
-        for (const Vertex& v : vertices) {
+        for (const ClipVertex& v : vertices) {
             if (clipOutcode(v.position) == 0) rasterizePoint(viewport.apply(v), state, framebuffer, stats);
         }
         break;

@@ -18,7 +18,7 @@ ViewportTransform::ViewportTransform(const DrawState& state, int framebufferHeig
     translateZ_ = state.depthNear + halfDepth;
 }
 
-WindowVertex ViewportTransform::apply(const Vertex& vertex) const {
+WindowVertex ViewportTransform::apply(const ClipVertex& vertex) const {
     const glm::vec4& p = vertex.position;
     WindowVertex out;
     out.invW = 1.0f / p.w;
@@ -29,7 +29,7 @@ WindowVertex ViewportTransform::apply(const Vertex& vertex) const {
     return out;
 }
 
-WindowVertex ViewportTransform::applyToClipped(const Vertex& vertex) const {
+WindowVertex ViewportTransform::applyToClipped(const ClipVertex& vertex) const {
     const glm::vec4& p = vertex.position;
     WindowVertex out;
     out.invW = 1.0f / p.w;

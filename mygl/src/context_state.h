@@ -90,6 +90,7 @@ struct Context::State {
         projection.top().settleKind();
         modelviewProjection = combine(projection.top(), modelview.top());
         modelviewProjectionStale = false;
+        pipeline.setTransform({modelviewProjection, modelview.top().matrix()});
     }
 
     // The current raster position (glRasterPos, moved by glBitmap) in window coordinates, and

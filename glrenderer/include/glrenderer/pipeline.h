@@ -20,7 +20,7 @@ class BatchThread;
 struct BatchChunk;
 struct BatchEntry;
 
-// Turns primitives in clip space into pixels of a Framebuffer.
+// Turns primitives into pixels of a Framebuffer.
 //
 // Consecutive submissions of the same mergeable mode (points, lines, triangles, quads) form one
 // batch until endBatch(), as the reference's vertex buffer merges glBegin/glEnd blocks: whether
@@ -61,6 +61,10 @@ public:
     void attribute(VertexAttribute attribute, int size) {
         if (buffer_.widens(attribute, size)) widen(attribute, size);
     }
+
+    // The matrices of the vertices submitted after the call, outside primitives. A batch is
+    // transformed with one set: a change ends it.
+    void setTransform(const VertexTransform& transform);
 
     // A state change, glFlush: the batch ends, as the reference draws what it holds.
     void endBatch();
