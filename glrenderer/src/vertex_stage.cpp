@@ -1,5 +1,7 @@
 #include "vertex_stage.h"
 
+#include <xmmintrin.h>
+
 #include "clip.h"
 #include "cpu_features.h"
 
@@ -13,22 +15,41 @@ glm::vec3 eyeNormal(const Matrix& m, const glm::vec3& n) {
             at(m, 2, 0) * n.x + at(m, 2, 1) * n.y + at(m, 2, 2) * n.z};
 }
 
+// transform() on the four rows at once: a column times a coordinate, summed left to right, each
+// product and sum rounded, as there.
+class ColumnTransform {
+public:
+    explicit ColumnTransform(const Matrix& m)
+        : c0_(_mm_loadu_ps(&m[0])), c1_(_mm_loadu_ps(&m[4])), c2_(_mm_loadu_ps(&m[8])), c3_(_mm_loadu_ps(&m[12])) {}
+    void apply(const glm::vec4& v, glm::vec4& out) const {
+        __m128 r = _mm_add_ps(_mm_mul_ps(c0_, _mm_set1_ps(v.x)), _mm_mul_ps(c1_, _mm_set1_ps(v.y)));
+        r = _mm_add_ps(r, _mm_mul_ps(c2_, _mm_set1_ps(v.z)));
+        r = _mm_add_ps(r, _mm_mul_ps(c3_, _mm_set1_ps(v.w)));
+        _mm_storeu_ps(&out.x, r);
+    }
+
+private:
+    __m128 c0_, c1_, c2_, c3_;
+};
+
 }  // namespace
 
 Batch VertexStage::toClipSpace(const SubmittedBatch& batch) {
     const std::size_t count = batch.vertices.size();
     clipVertices_.resize(count);
     const VertexTransform& t = batch.transform;
-    const bool eyeSpace = batch.methods.needsEyeSpace();
+    const ColumnTransform modelviewProjection(t.modelviewProjection);
     for (std::size_t i = 0; i < count; ++i) {
         const Vertex& in = batch.vertices[i];
         ClipVertex& out = clipVertices_[i];
-        out.position = transform(t.modelviewProjection, in.position);
+        modelviewProjection.apply(in.position, out.position);
         out.color = in.color;
         out.edgeFlag = in.edgeFlag;
-        if (eyeSpace) {
-            out.eye = glm::vec3(transform(t.modelview, in.position));
-            out.normal = eyeNormal(t.modelview, in.normal);
+    }
+    if (batch.methods.needsEyeSpace()) {
+        for (std::size_t i = 0; i < count; ++i) {
+            clipVertices_[i].eye = glm::vec3(transform(t.modelview, batch.vertices[i].position));
+            clipVertices_[i].normal = eyeNormal(t.modelview, batch.vertices[i].normal);
         }
     }
     return Batch{batch, clipVertices_};
