@@ -1,6 +1,7 @@
 // glRasterPos and glBitmap: the current raster position and the bitmaps drawn at it, computed
 // as the reference's fixed-function path computes them (Mesa's rastpos.c and _mesa_Bitmap).
 #include <array>
+#include <algorithm>
 #include <cmath>
 
 #include "compiled.h"
@@ -52,8 +53,10 @@ std::size_t bitmapRowStride(GLsizei width, int alignment) {
     return (bytes + a - 1) / a * a;
 }
 
+// `stride`: bytes from one row to the next (the unpack alignment's when the program calls it,
+// 1-aligned rows when a display list replays it).
 void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
-            const GLubyte* bits) {
+            const GLubyte* bits, std::size_t stride) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
@@ -68,7 +71,6 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
         constexpr float kEpsilon = 0.0001f;
         const int x = static_cast<int>(std::floor(s->rasterPosition.x + kEpsilon - xorig));
         const int y = static_cast<int>(std::floor(s->rasterPosition.y + kEpsilon - yorig));
-        const std::size_t stride = bitmapRowStride(width, s->unpackAlignment);
         const float z = s->rasterPosition.z;
         if (BitmapCache::cacheable(width, height)) {
             if (!s->bitmapCache.accepts(x, y, width, height, s->rasterColor, z)) drawCachedBitmaps(*s);
@@ -91,11 +93,33 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
     s->rasterPosition.y += ymove;
 }
 
+// glBitmap compiled into a list: its rows are copied under the unpack state of the moment (as
+// the reference unpacks them when it compiles the call), 1-aligned.
+CompiledCall keptBitmap(const Context::State& s, GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym,
+                        const GLubyte* bits) {
+    std::vector<GLubyte> rows;
+    const std::size_t packed = w > 0 ? bitmapRowStride(w, 1) : 0;
+    if (bits && w > 0 && h > 0) {
+        const std::size_t stride = bitmapRowStride(w, s.unpackAlignment);
+        rows.resize(packed * static_cast<std::size_t>(h));
+        for (std::size_t row = 0; row < static_cast<std::size_t>(h); ++row) {
+            std::copy_n(bits + row * stride, packed, rows.begin() + static_cast<std::ptrdiff_t>(row * packed));
+        }
+    }
+    return [=, rows = std::move(rows)] { bitmap(w, h, xo, yo, xm, ym, rows.empty() ? nullptr : rows.data(), packed); };
+}
+
 const EntryPoint kEntryPoints[] = {
     MYGL_POSITION_ENTRIES("glRasterPos", s, GLshort, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", i, GLint, rasterPosv),
     MYGL_POSITION_ENTRIES("glRasterPos", f, GLfloat, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", d, GLdouble, rasterPosv),
     {"glBitmap", entry(+[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
-         bitmap(w, h, xo, yo, xm, ym, bits);
+         Context::State* s = currentState();
+         if (!s) return;
+         if (s->lists.compiling()) {
+             s->lists.add(keptBitmap(*s, w, h, xo, yo, xm, ym, bits));
+             if (!s->lists.executingWhileCompiling()) return;
+         }
+         bitmap(w, h, xo, yo, xm, ym, bits, w > 0 ? bitmapRowStride(w, s->unpackAlignment) : 0);
      })},
 };
 
