@@ -26,7 +26,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears"};
+const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny",
+                               "bench-gears", "bench-gears-lists", "bench-mesh"};
 
 struct Variant {
     std::string name;
