@@ -5,6 +5,7 @@
 
 #include "batch.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
 #include "triangle_arena.h"
 #include "vertex_stage.h"
@@ -31,6 +32,9 @@ public:
     static bool handles(const BatchHeader& batch);
     // The whole batch.
     void setUp(const SubmittedBatch& batch, TriangleTarget& target, Stats& stats);
+    // GL_SELECT: the batch's triangles that survive clipping and culling add their window depths
+    // to `hits` instead of being set up.
+    void select(const SubmittedBatch& batch, HitRange& hits, Stats& stats);
     // Every batch of the chunk, into `writer`'s slots listed in the chunk and the chunk's
     // counts, if it handles them all; returns whether it did.
     bool setUp(BatchChunk& chunk, ArenaWriter& writer);
@@ -49,11 +53,12 @@ public:
 private:
     struct Call {
         const Batch& batch;
-        TriangleTarget& target;
+        TriangleTarget* target;  // null in GL_SELECT
         Stats& stats;
         // The batch goes through the reference's draw module with culling on: its cull stage
         // decides first, by drawModuleFacing.
         bool drawModuleCulls = false;
+        HitRange* hits = nullptr;  // GL_SELECT
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,

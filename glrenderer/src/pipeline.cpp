@@ -220,6 +220,12 @@ void Pipeline::finish() {
     drawer_->flush();
 }
 
+HitRange Pipeline::takeHits() {
+    buffer_.flushAndReset();
+    drawSubmitted();
+    return drawer_->takeHits();
+}
+
 Stats Pipeline::stats() const { return submitted_ + drawer_->stats(); }
 
 void Pipeline::resetStats() {

@@ -3,6 +3,7 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
 #include "clip_vertex.h"
 
@@ -14,5 +15,9 @@ namespace glrenderer {
 // rasterized with the reference's direction-dependent line rule.
 void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                         Framebuffer& framebuffer, Stats& stats);
+
+// GL_SELECT: the window depths of the points and clipped segments that reach the view volume.
+void selectPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
+                          int framebufferHeight, HitRange& hits);
 
 }  // namespace glrenderer

@@ -287,6 +287,10 @@ const EntryPoint kEntryPoints[] = {
     {"glGetPointerv", entry(+[](GLenum name, void** out) {
          Context::State* s = stateOutsideBeginEnd();
          if (!s || !out) return;
+         if (name == GL_SELECTION_BUFFER_POINTER) {
+             *out = s->selection.buffer;
+             return;
+         }
          const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;
          if (!known) return setError(*s, GL_INVALID_ENUM);
          *out = const_cast<void*>(arrayPointer(*s, name));

@@ -12,6 +12,7 @@
 #include "bitmap_cache.h"
 #include "client_arrays.h"
 #include "display_lists.h"
+#include "selection.h"
 #include "stack_matrix.h"
 #include "mygl/context.h"
 
@@ -99,6 +100,10 @@ struct Context::State {
     glm::vec4 rasterColor{1, 1, 1, 1};
     glm::vec4 rasterTexCoord{0, 0, 0, 1};
     float rasterDistance = 0;
+
+    // glRenderMode; in GL_SELECT, draws make hit records in the program's buffer instead of pixels.
+    GLenum renderMode = GL_RENDER;
+    Selection selection;
     bool rasterValid = true;
     BitmapCache bitmapCache;
 

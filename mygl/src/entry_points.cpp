@@ -16,7 +16,8 @@ const std::vector<EntryPoint>& implementedTable() {
     static const std::vector<EntryPoint> table = [] {
         std::vector<EntryPoint> all;
         for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
-                          bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints()}) {
+                          bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
+                          selectionEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

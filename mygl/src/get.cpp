@@ -92,6 +92,10 @@ Value query(const Context::State& s, GLenum name) {
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT: return one(s.hints.at(name));
     case GL_LIST_BASE: return one(s.lists.base);
+    case GL_RENDER_MODE: return one(s.renderMode);
+    case GL_NAME_STACK_DEPTH: return one(double(s.selection.names.size()));
+    case GL_MAX_NAME_STACK_DEPTH: return one(double(Selection::kMaxNameStackDepth));
+    case GL_SELECTION_BUFFER_SIZE: return one(s.selection.size);
     case GL_LIST_INDEX: return one(s.lists.compilingName());
     case GL_LIST_MODE: return one(s.lists.compilingMode());
     case GL_MAX_LIST_NESTING: return one(DisplayLists::kMaxNesting);

@@ -37,6 +37,7 @@ void rasterPos(const glm::vec4& object) {
     s->rasterDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
     s->rasterColor = s->color;
     s->rasterTexCoord = transform(s->texture.top().matrix(), s->texCoord);
+    if (s->renderMode == GL_SELECT) s->selection.rasterHits.add(s->rasterPosition.z);
 }
 
 template <class T>
@@ -65,7 +66,7 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
     constexpr float kFarAway = 1 << 29;
     const bool nearWindow = std::fabs(s->rasterPosition.x) < kFarAway && std::fabs(s->rasterPosition.y) < kFarAway &&
                             std::fabs(xorig) < kFarAway && std::fabs(yorig) < kFarAway;
-    if (width > 0 && height > 0 && bits && nearWindow) {
+    if (width > 0 && height > 0 && bits && nearWindow && s->renderMode == GL_RENDER) {
         // The reference truncates position - origin after adding 1e-4 (SGI's rule, for
         // conformance): a raster position a hair below an integer still lands on it.
         constexpr float kEpsilon = 0.0001f;

@@ -103,7 +103,7 @@ std::size_t callListsBytes(GLsizei n, GLenum type, const void*) { return bytesOf
 std::size_t elementBytes(GLenum, GLsizei count, GLenum type, const void*) { return bytesOf(type, count); }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, selection (the program's hit buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -118,7 +118,9 @@ std::size_t elementBytes(GLenum, GLsizei count, GLenum type, const void*) { retu
     X(glad_glVertexPointer, 0) X(glad_glColorPointer, 0) X(glad_glNormalPointer, 0)              \
     X(glad_glTexCoordPointer, 0) X(glad_glEdgeFlagPointer, 0) X(glad_glIndexPointer, 0)          \
     X(glad_glInterleavedArrays, 0) X(glad_glEnableClientState, 0) X(glad_glDisableClientState, 0) \
-    X(glad_glArrayElement, 0) X(glad_glDrawArrays, 0) X(glad_glDrawElements, elementBytes)
+    X(glad_glArrayElement, 0) X(glad_glDrawArrays, 0) X(glad_glDrawElements, elementBytes) \
+    X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
+    X(glad_glPushName, 0) X(glad_glPopName, 0)
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();

@@ -41,6 +41,7 @@ struct DrawState {
     float depthNear = 0.0f, depthFar = 1.0f;
     float lineWidth = 1.0f;
     float pointSize = 1.0f;
+    bool selection = false;  // GL_SELECT: primitives make hits (Pipeline::takeHits), not pixels
     bool operator==(const DrawState&) const = default;
 };
 

@@ -8,6 +8,7 @@
 #include "glrenderer/bitmap.h"
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/hit_range.h"
 #include "glrenderer/immediate_buffer.h"
 #include "glrenderer/methods.h"
 #include "glrenderer/stats.h"
@@ -83,6 +84,9 @@ public:
         methods_ = methods;
     }
     const Methods& methods() const { return methods_; }
+
+    // The hits of what was submitted with DrawState::selection since the last call, drawn first.
+    HitRange takeHits();
 
     // Complete after finish().
     Stats stats() const;
