@@ -47,17 +47,11 @@ void changeNames(Check&& check, Change&& change) {
     change(s->selection.names);
 }
 
+// As the reference: selection ends (its records written, its counts reset) before the new mode
+// is checked, and a mode without a buffer is entered with GL_INVALID_OPERATION.
 GLint renderMode(GLenum mode) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return 0;
-    if (mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) {
-        setError(*s, GL_INVALID_ENUM);
-        return 0;
-    }
-    if (mode == GL_FEEDBACK) {  // not yet: said as an unimplemented function says it
-        reportNotImplemented("glRenderMode(GL_FEEDBACK)");
-        return 0;
-    }
     GLint result = 0;
     if (s->renderMode == GL_SELECT) {
         writeHitRecord(*s);
@@ -67,6 +61,15 @@ GLint renderMode(GLenum mode) {
         sel.hits = 0;
         sel.names.clear();
     }
+    if (mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) {
+        setError(*s, GL_INVALID_ENUM);
+        return 0;
+    }
+    if (mode == GL_FEEDBACK) {  // not yet: said as an unimplemented function says it
+        reportNotImplemented("glRenderMode(GL_FEEDBACK)");
+        return 0;
+    }
+    if (mode == GL_SELECT && s->selection.size == 0) setError(*s, GL_INVALID_OPERATION);
     if (mode != s->renderMode) endBatch(*s);
     s->renderMode = mode;
     s->draw.selection = mode == GL_SELECT;
@@ -79,7 +82,7 @@ void selectBuffer(GLsizei size, GLuint* buffer) {
     if (size < 0) return setError(*s, GL_INVALID_VALUE);
     if (s->renderMode == GL_SELECT) return setError(*s, GL_INVALID_OPERATION);
     s->selection.buffer = buffer;
-    s->selection.size = buffer ? size : 0;
+    s->selection.size = size;
     s->selection.count = 0;
 }
 

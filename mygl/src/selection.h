@@ -21,7 +21,7 @@ struct Selection {
     glrenderer::HitRange rasterHits;  // of glRasterPos, which the pipeline does not see
 
     void write(GLuint value) {
-        if (count < static_cast<std::size_t>(size)) buffer[count] = value;
+        if (buffer && count < static_cast<std::size_t>(size)) buffer[count] = value;
         ++count;
     }
 };

@@ -192,6 +192,17 @@ TEST(Selection, OverflowStateAndErrorsAsTheReference) {
         out.push_back(static_cast<GLint>(glGetError()));
         out.push_back(glRenderMode(0x1234));
         out.push_back(static_cast<GLint>(glGetError()));
+        glSelectBuffer(0, buffer);
+        out.push_back(glRenderMode(GL_SELECT));  // no buffer: GL_INVALID_OPERATION, selecting all the same
+        out.push_back(static_cast<GLint>(glGetError()));
+        glPushName(4);
+        glRasterPos2f(0.0f, 0.0f);
+        out.push_back(glRenderMode(0x1234));  // ends selection before the enum is refused
+        out.push_back(static_cast<GLint>(glGetError()));
+        GLint mode = 0;
+        glGetIntegerv(GL_RENDER_MODE, &mode);
+        out.push_back(mode);
+        out.push_back(glRenderMode(GL_RENDER));
         GLint depth = -7;
         glGetIntegerv(GL_NAME_STACK_DEPTH, &depth);
         out.push_back(depth);
