@@ -252,3 +252,24 @@ TEST(AttribStack, PushAndPopInDisplayListsRunWhenTheListRuns) {
     expectSameAnswers(outcomes.mygl.queries, outcomes.osmesa.queries, 0);
     EXPECT_EQ(outcomes.mygl.frame, outcomes.osmesa.frame);
 }
+
+TEST(AttribStack, OuterPopRestoresGroupsChangedInsideANestedPush) {
+    // MyGL alone, as the spec says: OSMesa's pop of the inner push resets its record of the groups
+    // changed since the outer push to what it was at the inner push, so its outer pop leaves the
+    // polygon mode and line width as changed (Mesa 22.3's PopAttribState).
+    mygl::Context context(kSize, kSize);
+    context.makeCurrent();
+    glPushAttrib(GL_POLYGON_BIT | GL_LINE_BIT);
+    glPushAttrib(0);
+    glPolygonMode(GL_FRONT, GL_POINT);
+    glLineWidth(3.0f);
+    glPopAttrib();
+    glPopAttrib();
+    GLint mode[2] = {0, 0};
+    glGetIntegerv(GL_POLYGON_MODE, mode);
+    GLfloat width = 0.0f;
+    glGetFloatv(GL_LINE_WIDTH, &width);
+    EXPECT_EQ(mode[0], GL_FILL);
+    EXPECT_EQ(width, 1.0f);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
