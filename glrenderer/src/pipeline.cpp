@@ -4,6 +4,7 @@
 #include "batch_drawer.h"
 #include "batch_thread.h"
 #include "decompose.h"
+#include "denormals_are_zero.h"
 #include "glrenderer/immediate_buffer.h"
 #include "thread_count.h"
 
@@ -195,6 +196,7 @@ void Pipeline::closeBatch() {
 
 void Pipeline::handOverChunk() {
     if (chunk_->batches.empty()) return;
+    const DenormalsAreZero denormals;
     if (thread_) {
         chunk_ = thread_->post(std::move(chunk_));
     } else {
@@ -205,6 +207,7 @@ void Pipeline::handOverChunk() {
 }
 
 void Pipeline::drawSubmitted() {
+    const DenormalsAreZero denormals;
     closeBatch();
     handOverChunk();
     if (thread_) thread_->wait();
@@ -217,6 +220,7 @@ void Pipeline::drawSubmitted() {
 void Pipeline::finish() {
     buffer_.flushAndReset();
     drawSubmitted();
+    const DenormalsAreZero denormals;
     drawer_->flush();
 }
 

@@ -13,9 +13,8 @@ ViewportTransform::ViewportTransform(const DrawState& state, int framebufferHeig
     // y flips: internal y = H - y_gl.
     scaleY_ = -halfHeight;
     translateY_ = static_cast<float>(framebufferHeight) - (halfHeight + static_cast<float>(vp.y));
-    const float halfDepth = (state.depthFar - state.depthNear) * 0.5f;
-    scaleZ_ = halfDepth;
-    translateZ_ = state.depthNear + halfDepth;
+    scaleZ_ = state.depthScale();
+    translateZ_ = state.depthTranslate();
 }
 
 WindowVertex ViewportTransform::apply(const ClipVertex& vertex) const {

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "attrib_stack.h"
 #include "bitmap_cache.h"
 #include "client_arrays.h"
 #include "display_lists.h"
@@ -82,6 +83,7 @@ struct Context::State {
     int packAlignment = 4, unpackAlignment = 4;
     DisplayLists lists;
     ClientArrays arrays;
+    AttribStack attribStack, clientAttribStack;
 
     // What the reference does when it validates state before a draw or a read: settle the
     // kinds of the current matrices and form their product.

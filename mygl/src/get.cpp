@@ -37,6 +37,9 @@ Value query(const Context::State& s, GLenum name) {
     case GL_MAX_MODELVIEW_STACK_DEPTH: return one(double(s.modelview.maxDepth()));
     case GL_MAX_PROJECTION_STACK_DEPTH: return one(double(s.projection.maxDepth()));
     case GL_MAX_TEXTURE_STACK_DEPTH: return one(double(s.texture.maxDepth()));
+    case GL_ATTRIB_STACK_DEPTH: return one(double(s.attribStack.depth()));
+    case GL_CLIENT_ATTRIB_STACK_DEPTH: return one(double(s.clientAttribStack.depth()));
+    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: return one(double(AttribStack::kMaxDepth));
     case GL_MAX_VIEWPORT_DIMS: return Value{{double(Context::kMaxSize), double(Context::kMaxSize)}};
     case GL_CULL_FACE: return flag(d.cullEnabled);
     case GL_DEPTH_TEST: return flag(d.depthTest);

@@ -29,11 +29,9 @@ void rasterPos(const glm::vec4& object) {
     const float d = clip.w == 0.0f ? 1.0f : 1.0f / clip.w;
     const auto& v = s->draw.viewport;
     const float halfWidth = static_cast<float>(v.width) * 0.5f, halfHeight = static_cast<float>(v.height) * 0.5f;
-    const float depthScale = 0.5f * (s->draw.depthFar - s->draw.depthNear);
-    const float depthTranslate = 0.5f * (s->draw.depthNear + s->draw.depthFar);
     s->rasterPosition = {clip.x * d * halfWidth + (halfWidth + static_cast<float>(v.x)),
                          clip.y * d * halfHeight + (halfHeight + static_cast<float>(v.y)),
-                         clip.z * d * depthScale + depthTranslate, clip.w};
+                         clip.z * d * s->draw.depthScale() + s->draw.depthTranslate(), clip.w};
     s->rasterDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
     s->rasterColor = s->color;
     s->rasterTexCoord = transform(s->texture.top().matrix(), s->texCoord);
