@@ -76,7 +76,8 @@ void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats)
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const Call call{batch, target, stats,
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
+    const Call call{batch, target, stats, fragments,
                     path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
                         batch.methods.culling == CullMethod::WindowArea};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
@@ -129,7 +130,8 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
 void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
-    setUpTriangle(Call{batch, target, stats}, v0, v1, v2, flatColor);
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
+    setUpTriangle(Call{batch, target, stats, fragments}, v0, v1, v2, flatColor);
 }
 
 // Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.
@@ -161,7 +163,8 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     ++call.stats.rasterized;
-    if (prepareTriangle(triangle, state, methods, framebuffer_.width(), framebuffer_.height(), call.target.slot())) {
+    if (prepareTriangle(triangle, call.fragments, methods.raster, framebuffer_.width(), framebuffer_.height(),
+                        call.target.slot())) {
         call.target.keep();
     }
 }

@@ -9,8 +9,8 @@
 namespace glrenderer {
 namespace {
 
-void drawSegment(const Vertex& start, const Vertex& end, const ViewportTransform& viewport,
-                 const DrawState& state, Framebuffer& framebuffer, Stats& stats) {
+void drawSegment(const Vertex& start, const Vertex& end, const ViewportTransform& viewport, const DrawState& state,
+                 const FragmentChoice& fragments, Framebuffer& framebuffer, Stats& stats) {
     Vertex a = start, b = end;
     const std::uint8_t outcodeA = clipOutcode(a.position), outcodeB = clipOutcode(b.position);
     if (!clipLine(a, b, outcodeA, outcodeB)) return;
@@ -19,7 +19,8 @@ void drawSegment(const Vertex& start, const Vertex& end, const ViewportTransform
         return outcode == 0 ? viewport.apply(v) : viewport.applyToClipped(v);
     };
     // Flat lines take the second vertex's color even when that end was clipped.
-    rasterizeLine(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color, state, framebuffer, stats);
+    rasterizeLine(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color, state.lineWidth, fragments, framebuffer,
+                  stats);
 }
 
 }  // namespace
@@ -28,24 +29,27 @@ void drawPointsAndLines(PrimitiveMode mode, std::span<const Vertex> vertices, co
                         Framebuffer& framebuffer, Stats& stats) {
     const ViewportTransform viewport(state, framebuffer.height());
     const std::size_t n = vertices.size();
-    switch (mode) {
-    case PrimitiveMode::Points:
+    if (mode == PrimitiveMode::Points) {
+        const FragmentChoice fragments(bestFragmentPaths(), flatFragmentKey(state));
         for (const Vertex& v : vertices) {
-            if (clipOutcode(v.position) == 0) rasterizePoint(viewport.apply(v), state, framebuffer, stats);
+            if (clipOutcode(v.position) == 0) rasterizePoint(viewport.apply(v), state, fragments, framebuffer, stats);
         }
-        break;
+        return;
+    }
+    const FragmentChoice fragments(bestFragmentPaths(), fragmentKey(state));
+    switch (mode) {
     case PrimitiveMode::Lines:
         for (std::size_t i = 0; i + 1 < n; i += 2) {
-            drawSegment(vertices[i], vertices[i + 1], viewport, state, framebuffer, stats);
+            drawSegment(vertices[i], vertices[i + 1], viewport, state, fragments, framebuffer, stats);
         }
         break;
     case PrimitiveMode::LineStrip:
     case PrimitiveMode::LineLoop:
         for (std::size_t i = 0; i + 1 < n; ++i) {
-            drawSegment(vertices[i], vertices[i + 1], viewport, state, framebuffer, stats);
+            drawSegment(vertices[i], vertices[i + 1], viewport, state, fragments, framebuffer, stats);
         }
         if (mode == PrimitiveMode::LineLoop && n >= 2) {
-            drawSegment(vertices[n - 1], vertices[0], viewport, state, framebuffer, stats);
+            drawSegment(vertices[n - 1], vertices[0], viewport, state, fragments, framebuffer, stats);
         }
         break;
     default:

@@ -1,0 +1,15 @@
+// The fragment routines in 8 lanes of AVX2 with FMA. Compiled with -mavx2 -mfma; called only
+// after cpuHasAvx2Fma().
+#include "fragment_routines.h"
+#include "simd_avx2.h"
+
+namespace glrenderer {
+
+const FragmentPaths& avx2FragmentPaths() {
+    using Routines = RoutinesOf<Avx2Lanes>;
+    static constexpr auto fast = Routines::fastPaths<true>();
+    static constexpr FragmentPaths paths("avx2", fast, Routines::anyKey<true>());
+    return paths;
+}
+
+}  // namespace glrenderer

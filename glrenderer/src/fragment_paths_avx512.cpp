@@ -1,0 +1,15 @@
+// The fragment routines in 16 lanes of AVX-512F. Compiled with -mavx512f -mfma; called only
+// after cpuHasAvx512().
+#include "fragment_routines.h"
+#include "simd_avx512.h"
+
+namespace glrenderer {
+
+const FragmentPaths& avx512FragmentPaths() {
+    using Routines = RoutinesOf<Avx512Lanes>;
+    static constexpr auto fast = Routines::fastPaths<true>();
+    static constexpr FragmentPaths paths("avx512", fast, Routines::anyKey<true>());
+    return paths;
+}
+
+}  // namespace glrenderer

@@ -1,0 +1,15 @@
+// The fragment routines one pixel at a time, for any CPU; their routine for any key is the
+// general path.
+#include "fragment_routines.h"
+#include "simd_scalar.h"
+
+namespace glrenderer {
+
+const FragmentPaths& scalarFragmentPaths() {
+    using Routines = RoutinesOf<ScalarLanes>;
+    static constexpr auto fast = Routines::fastPaths<false>();
+    static constexpr FragmentPaths paths("scalar", fast, Routines::anyKey<false>());
+    return paths;
+}
+
+}  // namespace glrenderer
