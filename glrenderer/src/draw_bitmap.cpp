@@ -18,7 +18,7 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     const std::int64_t y0 = std::max<std::int64_t>(bottom, 0), y1 = std::min<std::int64_t>(bottom + bitmap.height, fb.height());
     // Runs of set bits, in each row, are spans of one colour and depth for the fragment stage.
     FragmentInputs fragment;
-    fragment.path = FragmentChoice(bestFragmentPaths(), flatFragmentKey(state)).varyingW;
+    fragment.setPath(FragmentChoice(bestFragmentPaths(), flatFragmentKey(state)).varyingW);
     fragment.flatColor = fragmentRgba8(bitmap.color);
     fragment.depth = {bitmap.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
     FragmentCounts counts;

@@ -51,12 +51,18 @@ struct FragmentInputs {
     AttributePlane color[4];  // colour, or colour / w under perspective shading
     AttributePlane invW;      // 1 / w, under perspective shading
     AttributePlane depth;     // window z, with the depth test
+    // The path's key and routine, as two fields so that the flat colour packs between them.
+    FragmentKey key;
     std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
-    FragmentPath path;
+    const FragmentRoutine* routine = nullptr;
 
-    // Draws the pixels [begin, end] of `row` with the primitive's path.
+    void setPath(const FragmentPath& path) {
+        key = path.key;
+        routine = path.routine;
+    }
+    // Draws the pixels [begin, end] of `row` with the primitive's routine.
     void shadeSpan(int row, int begin, int end, Framebuffer& framebuffer, FragmentCounts& counts) const {
-        path.routine->span(*this, row, begin, end, framebuffer, counts);
+        routine->span(*this, row, begin, end, framebuffer, counts);
     }
 };
 

@@ -5,11 +5,6 @@
 
 namespace glrenderer {
 
-const FragmentPaths& avx2FragmentPaths() {
-    using Routines = RoutinesOf<Avx2Lanes>;
-    static constexpr auto fast = Routines::fastPaths<true>();
-    static constexpr FragmentPaths paths("avx2", fast, Routines::anyKey<true>());
-    return paths;
-}
+const FragmentPaths& avx2FragmentPaths() { return fragmentPathsOf<Avx2Lanes>(); }
 
 }  // namespace glrenderer

@@ -5,11 +5,6 @@
 
 namespace glrenderer {
 
-const FragmentPaths& avx512FragmentPaths() {
-    using Routines = RoutinesOf<Avx512Lanes>;
-    static constexpr auto fast = Routines::fastPaths<true>();
-    static constexpr FragmentPaths paths("avx512", fast, Routines::anyKey<true>());
-    return paths;
-}
+const FragmentPaths& avx512FragmentPaths() { return fragmentPathsOf<Avx512Lanes>(); }
 
 }  // namespace glrenderer

@@ -5,11 +5,6 @@
 
 namespace glrenderer {
 
-const FragmentPaths& scalarFragmentPaths() {
-    using Routines = RoutinesOf<ScalarLanes>;
-    static constexpr auto fast = Routines::fastPaths<false>();
-    static constexpr FragmentPaths paths("scalar", fast, Routines::anyKey<false>());
-    return paths;
-}
+const FragmentPaths& scalarFragmentPaths() { return fragmentPathsOf<ScalarLanes>(); }
 
 }  // namespace glrenderer

@@ -19,7 +19,7 @@ namespace glrenderer {
 template <class L>
 [[gnu::always_inline]] inline void shadeSpan(FragmentKey key, const FragmentInputs& in, int row, int begin, int end,
                                              Framebuffer& fb, FragmentCounts& counts) {
-    const std::size_t rowStart = static_cast<std::size_t>(fb.height() - 1 - row) * static_cast<std::size_t>(fb.width());
+    const std::ptrdiff_t rowStart = static_cast<std::ptrdiff_t>(fb.height() - 1 - row) * fb.width();
     const PixelBuffers buffers{fb.color().data(), fb.depth().data()};
     const FragmentLanes<L> lanes(in);
     const typename L::Float y = L::floats(static_cast<float>(row));
@@ -29,12 +29,12 @@ template <class L>
     // block starts at the line holding `begin`, its lanes before it masked off.
     int first = begin;
     if constexpr (L::kCheapMasks && L::kCount > 1) {
-        first -= static_cast<int>((rowStart + static_cast<std::size_t>(begin)) % L::kCount);
+        first -= static_cast<int>((rowStart + begin) % L::kCount);
     }
     for (int px = first; px <= end; px += L::kCount) {
         const typename L::Mask covered = L::lanesBetween(begin - px, end - px);
         const typename L::Float x = L::toFloat(L::add(L::ints(px), L::laneIndex()));
-        const RowBlock<L> block(rowStart + static_cast<std::size_t>(px), px >= begin && px + L::kCount - 1 <= end);
+        const RowBlock<L> block(rowStart + px, px >= begin && px + L::kCount - 1 <= end);
         passed += L::count(shadeBlock<L>(key, lanes, x, y, covered, block, buffers));
     }
     counts.fragments += static_cast<std::uint64_t>(end - begin + 1);
@@ -163,36 +163,39 @@ struct RoutinesOf {
     }
     static void anyKeySpan(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb,
                            FragmentCounts& counts) {
-        shadeSpan<L>(in.path.key, in, row, begin, end, fb, counts);
+        shadeSpan<L>(in.key, in, row, begin, end, fb, counts);
     }
     template <FragmentKey Key>
     static bool narrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
         return shadeNarrowTriangle<L>(Key, t, area, fb, counts);
     }
     static bool anyKeyNarrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
-        return shadeNarrowTriangle<L>(t.fragment.path.key, t, area, fb, counts);
+        return shadeNarrowTriangle<L>(t.fragment.key, t, area, fb, counts);
     }
 
-    // The fast path of `Key`, with narrow blocks or not.
-    template <bool Narrow, FragmentKey Key>
+    // The fast path of `Key`.
+    template <FragmentKey Key>
     static constexpr FragmentRoutine fastRoutine() {
-        if constexpr (Narrow) return {&span<Key>, &narrow<Key>};
+        if constexpr (L::kNarrowBlocks) return {&span<Key>, &narrow<Key>};
         else return {&span<Key>, nullptr};
     }
-    template <bool Narrow, std::size_t... I>
+    template <std::size_t... I>
     static constexpr auto fastPaths(std::index_sequence<I...>) {
-        return std::array<FragmentPaths::FastPath, sizeof...(I)>{
-            {{kFastFragmentKeys[I], fastRoutine<Narrow, kFastFragmentKeys[I]>()}...}};
+        return std::array<FragmentPaths::FastPath, sizeof...(I)>{{{kFastFragmentKeys[I], fastRoutine<kFastFragmentKeys[I]>()}...}};
     }
-    template <bool Narrow>
-    static constexpr auto fastPaths() {
-        return fastPaths<Narrow>(std::make_index_sequence<std::size(kFastFragmentKeys)>());
-    }
-    template <bool Narrow>
     static constexpr FragmentRoutine anyKey() {
-        if constexpr (Narrow) return {&anyKeySpan, &anyKeyNarrow};
+        if constexpr (L::kNarrowBlocks) return {&anyKeySpan, &anyKeyNarrow};
         else return {&anyKeySpan, nullptr};
     }
 };
+
+// The paths of lane type L, in constants: nothing runs at static initialization, where the CPU
+// may not have L's instructions.
+template <class L>
+const FragmentPaths& fragmentPathsOf() {
+    static constexpr auto fast = RoutinesOf<L>::fastPaths(std::make_index_sequence<std::size(kFastFragmentKeys)>());
+    static constexpr FragmentPaths paths(L::kName, fast, RoutinesOf<L>::anyKey());
+    return paths;
+}
 
 }  // namespace glrenderer

@@ -4,6 +4,7 @@
 // it for one width (fragment_paths_*.cpp). Every lane performs the scalar operations in the same
 // order (the planes' two fmas, one IEEE division, the conversions' clamps), so the bits do not
 // depend on the width; with a constant key the compiler drops every step the key turns off.
+#include <cstddef>
 #include <cstdint>
 
 #include "fragment_inputs.h"
@@ -73,7 +74,8 @@ public:
     using Int = typename L::Int;
     using Mask = typename L::Mask;
 
-    RowBlock(std::size_t first, bool whole) : first_(first), whole_(whole) {}
+    // `first` may lie a few pixels before the buffer, where only masked-off lanes point.
+    RowBlock(std::ptrdiff_t first, bool whole) : first_(first), whole_(whole) {}
 
     Int load(const std::uint32_t* buffer, Mask lanes) const {
         if constexpr (!L::kCheapMasks) {
@@ -92,7 +94,7 @@ public:
     }
 
 private:
-    std::size_t first_;
+    std::ptrdiff_t first_;
     bool whole_;
 };
 

@@ -61,7 +61,7 @@ void rasterizeBoundingBoxFloat(const RasterTriangle& t, const PixelRect& rect, F
 
 void rasterizeWithMethod(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts) {
     switch (t.method) {
-    case RasterMethod::Exact: rasterizeTriangleSpans(t, rect, fb, counts, *t.fragment.path.routine); break;
+    case RasterMethod::Exact: rasterizeTriangleSpans(t, rect, fb, counts, *t.fragment.routine); break;
     case RasterMethod::ExactPerPixel: rasterizeTriangleExact(t, rect, fb, counts); break;
     case RasterMethod::Scanline: rasterizeScanline(t, rect, fb, counts); break;
     case RasterMethod::BoundingBoxFloat: rasterizeBoundingBoxFloat(t, rect, fb, counts); break;

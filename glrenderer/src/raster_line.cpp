@@ -250,7 +250,7 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
 
     const LinePlaneBuilder builder(start, end);
     FragmentInputs fragment;
-    fragment.path = fragments.varyingW;
+    fragment.setPath(fragments.varyingW);
     const FragmentKey& key = fragments.varyingW.key;
     if (key.shading == Shading::Flat) {
         fragment.flatColor = fragmentRgba8(flatColor);
@@ -259,7 +259,7 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
             fragment.color[c] = builder.plane(start.color[c] * start.invW, end.color[c] * end.invW);
         }
         fragment.invW = builder.plane(start.invW, end.invW);
-        fragment.path = fragments.path(fragment.invW);
+        fragment.setPath(fragments.path(fragment.invW));
     }
     if (key.depthTest) fragment.depth = builder.plane(start.z, end.z);
     fillQuad(quad, fragment, framebuffer, stats);

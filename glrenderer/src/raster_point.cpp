@@ -60,7 +60,7 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
     glm::vec4 c = point.color;
     if (state.shadeModel == ShadeModel::Smooth) c = c * point.invW * (1.0f / point.invW);
     FragmentInputs fragment;
-    fragment.path = fragments.varyingW;
+    fragment.setPath(fragments.varyingW);
     fragment.flatColor = fragmentRgba8(c);
     fragment.depth = {point.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
     FragmentCounts counts;

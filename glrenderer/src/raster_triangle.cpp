@@ -57,7 +57,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
 
     FragmentInputs& in = out.fragment;
     const FragmentKey& key = fragments.varyingW.key;
-    in.path = fragments.varyingW;
+    in.setPath(fragments.varyingW);
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
         in.flatColor = fragmentRgba8(t.flatColor);
@@ -78,7 +78,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
             in.color[i] = planes.plane(v0.color[i] * v0.invW, v1.color[i] * v1.invW, v2.color[i] * v2.invW);
         }
         in.invW = planes.plane(v0.invW, v1.invW, v2.invW);
-        in.path = fragments.path(in.invW);
+        in.setPath(fragments.path(in.invW));
     }
     if (key.depthTest) in.depth = planes.plane(v0.z, v1.z, v2.z);
     return true;
@@ -87,7 +87,8 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
 void rasterizeTriangleExact(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts) {
     const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
     const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
-    const FragmentRoutine& general = generalFragmentRoutine();
+    // One pixel at a time all through: the scalar routine of the triangle's key.
+    const FragmentRoutine& scalar = scalarFragmentPaths().routine(t.fragment.key);
     for (int py = minY; py <= maxY; ++py) {
         std::int64_t e0 = t.edges[0].at(minX, py), e1 = t.edges[1].at(minX, py), e2 = t.edges[2].at(minX, py);
         int runBegin = -1;  // the first pixel of the covered run being walked
@@ -96,7 +97,7 @@ void rasterizeTriangleExact(const RasterTriangle& t, const PixelRect& rect, Fram
             const bool inside = px <= maxX && (e0 | e1 | e2) >= 0;
             if (inside && runBegin < 0) runBegin = px;
             if (!inside && runBegin >= 0) {
-                general.span(t.fragment, py, runBegin, px - 1, fb, counts);
+                scalar.span(t.fragment, py, runBegin, px - 1, fb, counts);
                 runBegin = -1;
             }
         }

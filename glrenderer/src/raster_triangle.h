@@ -60,7 +60,7 @@ struct PixelRect {
 };
 
 // The exact method over the part of the triangle inside `rect`, tested pixel by pixel: integer
-// edge functions at 1/256 pixel; the covered pixels go through the general fragment path.
+// edge functions at 1/256 pixel; the covered pixels go through the scalar fragment routine.
 void rasterizeTriangleExact(const RasterTriangle& triangle, const PixelRect& rect,
                             Framebuffer& framebuffer, FragmentCounts& counts);
 

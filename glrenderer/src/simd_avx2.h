@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <string_view>
 
 #include "glrenderer/draw_state.h"
 
@@ -16,6 +17,8 @@ namespace glrenderer {
 struct Avx2Lanes {
     static constexpr int kCount = 8;
     static constexpr bool kCheapMasks = false;
+    static constexpr bool kNarrowBlocks = true;  // narrow triangles in 2D blocks of lanes
+    static constexpr std::string_view kName = "avx2";
     using Float = __m256;
     using Int = __m256i;
     using Mask = __m256i;

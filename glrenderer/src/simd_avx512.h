@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <string_view>
 
 #include "glrenderer/draw_state.h"
 
@@ -14,6 +15,8 @@ namespace glrenderer {
 struct Avx512Lanes {
     static constexpr int kCount = 16;
     static constexpr bool kCheapMasks = true;
+    static constexpr bool kNarrowBlocks = true;  // narrow triangles in 2D blocks of lanes
+    static constexpr std::string_view kName = "avx512";
     using Float = __m512;
     using Int = __m512i;
     using Mask = __mmask16;

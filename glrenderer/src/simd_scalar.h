@@ -2,6 +2,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <string_view>
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/round_to_even.h"
@@ -14,6 +15,8 @@ namespace glrenderer {
 struct ScalarLanes {
     static constexpr int kCount = 1;
     static constexpr bool kCheapMasks = true;
+    static constexpr bool kNarrowBlocks = false;  // a block of one lane is a span
+    static constexpr std::string_view kName = "scalar";
     using Float = float;
     using Int = std::uint32_t;
     using Mask = bool;

@@ -1,8 +1,8 @@
 // The fragment paths of every vector width this CPU runs (scalar, AVX2, AVX-512), each fast path
 // and each routine for any key, against the general path (the scalar routine for any key): same
-// colors, depths and counts, bit for bit. On random spans with random planes and buffers, and on
-// random triangles in every fragment state, whole or cut to a rectangle as tiles are, where the
-// fast exact method (spans, narrow blocks) is also checked against per-pixel coverage.
+// colors, depths and counts, bit for bit, on random spans with random planes and buffers. Then
+// the fast exact method (spans, narrow blocks) of every width against per-pixel coverage, on
+// random triangles in every fragment state, whole or cut to a rectangle as tiles are.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,6 +30,15 @@ std::vector<const FragmentPaths*> pathsOfThisCpu() {
     return paths;
 }
 
+std::string describe(const FragmentKey& key) {
+    const char* const shadings[] = {"flat", "linear", "perspective"};
+    std::string text = shadings[static_cast<int>(key.shading)];
+    if (key.depthTest) {
+        text += " depth func " + std::to_string(static_cast<int>(key.depthFunc)) + (key.depthWrite ? " write" : "");
+    }
+    return text;
+}
+
 // A routine to check, with the key it serves (any key for the routines for any key).
 struct NamedRoutine {
     std::string name;
@@ -42,8 +51,7 @@ std::vector<NamedRoutine> routinesOfThisCpu() {
     std::vector<NamedRoutine> routines;
     for (const FragmentPaths* paths : pathsOfThisCpu()) {
         for (const FragmentPaths::FastPath& fast : paths->fastPaths()) {
-            routines.push_back({std::string(paths->name()) + " fast path " + std::to_string(routines.size()),
-                                &fast.routine, false, fast.key});
+            routines.push_back({std::string(paths->name()) + " " + describe(fast.key), &fast.routine, false, fast.key});
         }
         routines.push_back({std::string(paths->name()) + " any key", &paths->anyKey(), true, {}});
     }
@@ -81,14 +89,21 @@ struct Target {
     }
 };
 
-void expectSame(const Target& expected, const Target& actual, const std::string& what) {
-    ASSERT_TRUE(std::equal(expected.framebuffer.color().begin(), expected.framebuffer.color().end(),
-                           actual.framebuffer.color().begin())) << what << ": colors";
-    ASSERT_TRUE(std::equal(expected.framebuffer.depth().begin(), expected.framebuffer.depth().end(),
-                           actual.framebuffer.depth().begin())) << what << ": depths";
-    ASSERT_EQ(expected.counts.fragments, actual.counts.fragments) << what;
-    ASSERT_EQ(expected.counts.passed, actual.counts.passed) << what;
+testing::AssertionResult same(const Target& expected, const Target& actual) {
+    if (!std::equal(expected.framebuffer.color().begin(), expected.framebuffer.color().end(),
+                    actual.framebuffer.color().begin())) {
+        return testing::AssertionFailure() << "colors differ";
+    }
+    if (!std::equal(expected.framebuffer.depth().begin(), expected.framebuffer.depth().end(),
+                    actual.framebuffer.depth().begin())) {
+        return testing::AssertionFailure() << "depths differ";
+    }
+    if (expected.counts.fragments != actual.counts.fragments || expected.counts.passed != actual.counts.passed) {
+        return testing::AssertionFailure() << "counts differ";
+    }
+    return testing::AssertionSuccess();
 }
+
 
 std::vector<std::uint32_t> randomPixels(std::mt19937& random, std::uint32_t max) {
     std::uniform_int_distribution<std::uint32_t> value(0, max);
@@ -139,9 +154,9 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
             inputs.invW = randomPlane(random, 0.25f, 4.0f);
             inputs.depth = randomPlane(random, -0.1f, 1.1f);
             inputs.flatColor = word(random);
-            inputs.path = {tested.anyKey ? randomKey(random) : tested.key, tested.routine};
+            inputs.setPath({tested.anyKey ? randomKey(random) : tested.key, tested.routine});
             FragmentInputs general = inputs;
-            general.path.routine = &generalFragmentRoutine();
+            general.routine = &generalFragmentRoutine();
 
             const std::vector<std::uint32_t> color = randomPixels(random, 0xFFFFFFFF);
             const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
@@ -156,7 +171,7 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
                 inputs.shadeSpan(y, begin, end, actual.framebuffer, actual.counts);
                 ++spans;
             }
-            expectSame(expected, actual, tested.name + " inputs " + std::to_string(i));
+            ASSERT_TRUE(same(expected, actual)) << tested.name << " key " << describe(inputs.key) << " inputs " << i;
         }
     }
     EXPECT_GT(spans, 10000);
@@ -202,11 +217,11 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
             if (paths == allPaths.front()) ++drawn;
             Target expected(color, depth);
             rasterizeTriangleExact(triangle, rect, expected.framebuffer, expected.counts);
-            for (const FragmentRoutine* routine : {triangle.fragment.path.routine, &paths->anyKey()}) {
+            for (const FragmentRoutine* routine : {triangle.fragment.routine, &paths->anyKey()}) {
                 Target actual(color, depth);
                 rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, *routine);
-                expectSame(expected, actual, std::string(paths->name()) + " triangle " + std::to_string(i) +
-                                                 (routine == &paths->anyKey() ? " any key" : ""));
+                ASSERT_TRUE(same(expected, actual)) << paths->name() << " key " << describe(triangle.fragment.key)
+                                                    << (routine == &paths->anyKey() ? " any key" : "") << " triangle " << i;
             }
         }
     }
