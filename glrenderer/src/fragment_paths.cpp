@@ -19,12 +19,6 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {
     constantW = {key, &paths.routine(key)};
 }
 
-const FragmentPath& FragmentChoice::path(const AttributePlane& invW) const {
-    // The plane (1, 0, 0) is 1 at every pixel, and x * 1 is x for every float x.
-    const bool constantOne = invW.a0 == 1.0f && invW.dadx == 0.0f && invW.dady == 0.0f;
-    return constantOne ? constantW : varyingW;
-}
-
 const FragmentPaths& bestFragmentPaths() {
     static const FragmentPaths& best = []() -> const FragmentPaths& {
         const char* cap = std::getenv("MYGL_KERNELS");

@@ -66,8 +66,12 @@ inline const FragmentRoutine& generalFragmentRoutine() { return scalarFragmentPa
 struct FragmentChoice {
     FragmentChoice(const FragmentPaths& paths, FragmentKey key);
 
-    // The path of a primitive of perspective shading with this plane of 1 / w.
-    const FragmentPath& path(const AttributePlane& invW) const;
+    // The path of a primitive of perspective shading with this plane of 1 / w. The plane
+    // (1, 0, 0) is 1 at every pixel, and x * 1 is x for every float x.
+    const FragmentPath& path(const AttributePlane& invW) const {
+        const bool constantOne = invW.a0 == 1.0f && invW.dadx == 0.0f && invW.dady == 0.0f;
+        return constantOne ? constantW : varyingW;
+    }
 
     FragmentPath varyingW, constantW;
 };
