@@ -122,8 +122,8 @@ template <class L>
         stepX[k] = L::mul(dx, L::ints(static_cast<int>(t.edges[k].stepX)));
         stepY[k] = L::mul(dy, L::ints(static_cast<int>(t.edges[k].stepY)));
     }
-    Mask rowLanes[L::kCount];
-    for (int row = 0; row < blockRows; ++row) {
+    Mask rowLanes[L::kCount];  // the lanes of each row of a block, for the rows the area has
+    for (int row = 0; row < std::min(blockRows, height); ++row) {
         const int firstLane = row * static_cast<int>(columns);
         rowLanes[row] = L::lanesBetween(firstLane, firstLane + static_cast<int>(columns) - 1);
     }

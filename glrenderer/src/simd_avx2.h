@@ -17,7 +17,9 @@ namespace glrenderer {
 struct Avx2Lanes {
     static constexpr int kCount = 8;
     static constexpr bool kCheapMasks = false;
-    static constexpr bool kNarrowBlocks = true;  // narrow triangles in 2D blocks of lanes
+    // No 2D blocks for narrow triangles: they took more instructions than spans on triangles of
+    // a pixel or two (callgrind, bench-tiny), and gathers are slow on several AVX2 CPUs.
+    static constexpr bool kNarrowBlocks = false;
     static constexpr std::string_view kName = "avx2";
     using Float = __m256;
     using Int = __m256i;
