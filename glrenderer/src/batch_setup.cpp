@@ -77,7 +77,8 @@ void BatchSetup::setUp(const SubmittedBatch& submitted, TriangleTarget& target, 
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const Call call{batch, &target, stats,
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
+    const Call call{batch, &target, stats, fragments,
                     path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
                         batch.methods.culling == CullMethod::WindowArea};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
@@ -90,7 +91,8 @@ void BatchSetup::select(const SubmittedBatch& submitted, HitRange& hits, Stats& 
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const Call call{batch, nullptr, stats, batch.state.cullEnabled, &hits};
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));  // (unused)
+    const Call call{batch, nullptr, stats, fragments, batch.state.cullEnabled, &hits};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), DecompositionPath::DrawModule,
                        v1v3Quads, [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
@@ -141,7 +143,8 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
 void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
-    setUpTriangle(Call{batch, &target, stats}, v0, v1, v2, flatColor);
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
+    setUpTriangle(Call{batch, &target, stats, fragments}, v0, v1, v2, flatColor);
 }
 
 // Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.
@@ -180,7 +183,8 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     ++call.stats.rasterized;
-    if (prepareTriangle(triangle, state, methods, framebuffer_.width(), framebuffer_.height(), call.target->slot())) {
+    if (prepareTriangle(triangle, call.fragments, methods.raster, framebuffer_.width(), framebuffer_.height(),
+                        call.target->slot())) {
         call.target->keep();
     }
 }

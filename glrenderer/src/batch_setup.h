@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "batch.h"
+#include "fragment_paths.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
@@ -55,6 +56,7 @@ private:
         const Batch& batch;
         TriangleTarget* target;  // null in GL_SELECT
         Stats& stats;
+        const FragmentChoice& fragments;  // the batch's, chosen once
         // The batch goes through the reference's draw module with culling on: its cull stage
         // decides first, by drawModuleFacing.
         bool drawModuleCulls = false;

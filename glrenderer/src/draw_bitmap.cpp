@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "batch_drawer.h"
-#include "depth_test.h"
+#include "fragment_paths.h"
 #include "glrenderer/color_convert.h"
 #include "glrenderer/pipeline.h"
 
@@ -16,27 +16,24 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     const std::int64_t left = bitmap.x, bottom = bitmap.y;
     const std::int64_t x0 = std::max<std::int64_t>(left, 0), x1 = std::min<std::int64_t>(left + bitmap.width, fb.width());
     const std::int64_t y0 = std::max<std::int64_t>(bottom, 0), y1 = std::min<std::int64_t>(bottom + bitmap.height, fb.height());
-    const std::uint32_t rgba = fragmentRgba8(bitmap.color);
-    const std::uint32_t z = toDepth24(bitmap.z);
-    const auto color = fb.color();
-    const auto depth = fb.depth();
-    const std::size_t width = static_cast<std::size_t>(fb.width());
+    // Runs of set bits, in each row, are spans of one colour and depth for the fragment stage.
+    FragmentInputs fragment;
+    fragment.setPath(FragmentChoice(bestFragmentPaths(), flatFragmentKey(state)).varyingW);
+    fragment.flatColor = fragmentRgba8(bitmap.color);
+    fragment.depth = {bitmap.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
+    FragmentCounts counts;
     for (std::int64_t y = y0; y < y1; ++y) {
         const std::uint8_t* row = bitmap.rows.data() + static_cast<std::size_t>(y - bottom) * bitmap.rowStride;
+        const auto isSet = [&](std::int64_t x) { return (row[(x - left) / 8] & (0x80 >> ((x - left) % 8))) != 0; };
+        const int internalRow = fb.height() - 1 - static_cast<int>(y);
         for (std::int64_t x = x0; x < x1; ++x) {
-            const std::int64_t bit = x - left;
-            if (!(row[bit / 8] & (0x80 >> (bit % 8)))) continue;
-            ++submitted_.fragments;
-            const std::size_t index = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
-            if (state.depthTest) {
-                if (!depthPasses(state.depthFunc, z, depth[index])) continue;
-                if (state.depthWrite) depth[index] = z;
-            }
-            ++submitted_.fragmentsPassed;
-            ++submitted_.pixelsWritten;
-            color[index] = rgba;
+            if (!isSet(x)) continue;
+            const std::int64_t runBegin = x;
+            while (x + 1 < x1 && isSet(x + 1)) ++x;
+            fragment.shadeSpan(internalRow, static_cast<int>(runBegin), static_cast<int>(x), fb, counts);
         }
     }
+    addFragmentCounts(submitted_, counts);
     fb.markWritten();
 }
 

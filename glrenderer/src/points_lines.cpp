@@ -49,11 +49,14 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
 
 void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                         Framebuffer& framebuffer, Stats& stats) {
+    // Points are drawn flat; lines as the state says.
+    const FragmentChoice fragments(bestFragmentPaths(),
+                                   mode == PrimitiveMode::Points ? flatFragmentKey(state) : fragmentKey(state));
     forEachPrimitive(
         mode, vertices, ViewportTransform(state, framebuffer.height()),
-        [&](const WindowVertex& v) { rasterizePoint(v, state, framebuffer, stats); },
+        [&](const WindowVertex& v) { rasterizePoint(v, state, fragments, framebuffer, stats); },
         [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4& flatColor) {
-            rasterizeLine(a, b, flatColor, state, framebuffer, stats);
+            rasterizeLine(a, b, flatColor, state.lineWidth, fragments, framebuffer, stats);
         });
 }
 

@@ -12,8 +12,7 @@ struct Point {
 
 }  // namespace
 
-void rasterizeScanline(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb,
-                       FragmentCounts& counts, SpanShader shader) {
+void rasterizeScanline(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts) {
     Point v[3] = {{t.windowX[0], t.windowY[0]}, {t.windowX[1], t.windowY[1]}, {t.windowX[2], t.windowY[2]}};
     std::sort(std::begin(v), std::end(v), [](const Point& a, const Point& b) { return a.y < b.y; });
     // The long edge v0-v2 is on one side, the two short edges on the other.
@@ -30,12 +29,12 @@ void rasterizeScanline(const RasterTriangle& t, const PixelRect& rect, Framebuff
         if (!std::isfinite(left) || !std::isfinite(right)) continue;
         const int begin = std::max(static_cast<int>(std::ceil(left - 0.5f)), std::max(t.minX, rect.minX));
         const int end = std::min(static_cast<int>(std::ceil(right - 0.5f)) - 1, std::min(t.maxX, rect.maxX));
-        if (begin <= end) shader(t, row, begin, end, fb, counts);
+        if (begin <= end) t.fragment.shadeSpan(row, begin, end, fb, counts);
     }
 }
 
 void rasterizeBoundingBoxFloat(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb,
-                               FragmentCounts& counts, SpanShader shader) {
+                               FragmentCounts& counts) {
     const float* x = t.windowX;
     const float* y = t.windowY;
     const float area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
@@ -53,20 +52,19 @@ void rasterizeBoundingBoxFloat(const RasterTriangle& t, const PixelRect& rect, F
                                 edge(2, 0, cx, py) >= 0.0f;
             if (inside && runBegin < 0) runBegin = px;
             if (!inside && runBegin >= 0) {
-                shader(t, row, runBegin, px - 1, fb, counts);
+                t.fragment.shadeSpan(row, runBegin, px - 1, fb, counts);
                 runBegin = -1;
             }
         }
     }
 }
 
-void rasterizeWithMethod(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb,
-                         FragmentCounts& counts, const ExactKernels& kernels) {
+void rasterizeWithMethod(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts) {
     switch (t.method) {
-    case RasterMethod::Exact: rasterizeTriangleSpans(t, rect, fb, counts, kernels); break;
+    case RasterMethod::Exact: rasterizeTriangleSpans(t, rect, fb, counts, *t.fragment.routine); break;
     case RasterMethod::ExactPerPixel: rasterizeTriangleExact(t, rect, fb, counts); break;
-    case RasterMethod::Scanline: rasterizeScanline(t, rect, fb, counts, kernels.span); break;
-    case RasterMethod::BoundingBoxFloat: rasterizeBoundingBoxFloat(t, rect, fb, counts, kernels.span); break;
+    case RasterMethod::Scanline: rasterizeScanline(t, rect, fb, counts); break;
+    case RasterMethod::BoundingBoxFloat: rasterizeBoundingBoxFloat(t, rect, fb, counts); break;
     }
 }
 

@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <utility>
 
-#include "depth_test.h"
 #include "glrenderer/color_convert.h"
 #include "round_half_away.h"
 #include "triangle_setup.h"
@@ -202,15 +201,8 @@ private:
     float dx_, dy_, oneOverLengthSquared_, x1Center_, y1Center_;
 };
 
-struct LinePlanes {
-    AttributePlane color[4];
-    AttributePlane invW;
-    AttributePlane depth;
-};
-
-template <bool DepthTest, bool Smooth>
-void fillQuad(const LineQuad& q, const LinePlanes& planes, const glm::vec4& flatColor,
-              const DrawState& state, Framebuffer& fb, Stats& stats) {
+// Draws the quad's pixels: per row, the span the four edges bound, through the fragment stage.
+void fillQuad(const LineQuad& q, const FragmentInputs& fragment, Framebuffer& fb, Stats& stats) {
     const LineEdge edges[4] = {LineEdge(q.x[0], q.y[0], q.x[1], q.y[1]),
                                LineEdge(q.x[1], q.y[1], q.x[2], q.y[2]),
                                LineEdge(q.x[2], q.y[2], q.x[3], q.y[3]),
@@ -221,13 +213,7 @@ void fillQuad(const LineQuad& q, const LinePlanes& planes, const glm::vec4& flat
     const std::int64_t maxX = std::min<std::int64_t>(((std::max({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits) - 1, fb.width() - 1);
     const std::int64_t minY = std::max<std::int64_t>((std::min({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits, 0);
     const std::int64_t maxY = std::min<std::int64_t>(((std::max({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits) - 1, fb.height() - 1);
-    if (minX > maxX || minY > maxY) return;
-
-    const std::uint32_t flat = fragmentRgba8(flatColor);
-    const auto color = fb.color();
-    const auto depth = fb.depth();
-    const std::size_t width = static_cast<std::size_t>(fb.width());
-    std::uint64_t fragments = 0, passed = 0;
+    FragmentCounts counts;
     for (std::int64_t py = minY; py <= maxY; ++py) {
         // Each edge bounds the row's span: value(px) = a * px + b > 0.
         std::int64_t first = minX, last = maxX;
@@ -238,31 +224,11 @@ void fillQuad(const LineQuad& q, const LinePlanes& planes, const glm::vec4& flat
             else if (a < 0) last = std::min(last, -floorDiv(-b, -a) - 1);
             else if (b <= 0) last = first - 1;
         }
-        const std::size_t row = static_cast<std::size_t>(fb.height() - 1 - py) * width;
-        const float y = static_cast<float>(py);
-        for (std::int64_t px = first; px <= last; ++px) {
-            ++fragments;
-            const std::size_t index = row + static_cast<std::size_t>(px);
-            const float x = static_cast<float>(px);
-            if constexpr (DepthTest) {
-                const std::uint32_t z = toDepth24(planes.depth.at(x, y));
-                if (!depthPasses(state.depthFunc, z, depth[index])) continue;
-                if (state.depthWrite) depth[index] = z;
-            }
-            ++passed;
-            if constexpr (Smooth) {
-                const float w = 1.0f / planes.invW.at(x, y);
-                const glm::vec4 rgba(planes.color[0].at(x, y) * w, planes.color[1].at(x, y) * w,
-                                     planes.color[2].at(x, y) * w, planes.color[3].at(x, y) * w);
-                color[index] = fragmentRgba8(rgba);
-            } else {
-                color[index] = flat;
-            }
+        if (first <= last) {
+            fragment.shadeSpan(static_cast<int>(py), static_cast<int>(first), static_cast<int>(last), fb, counts);
         }
     }
-    stats.fragments += fragments;
-    stats.fragmentsPassed += passed;
-    stats.pixelsWritten += passed;
+    addFragmentCounts(stats, counts);
 }
 
 bool isUsable(const WindowVertex& v) {
@@ -272,34 +238,31 @@ bool isUsable(const WindowVertex& v) {
 
 }  // namespace
 
-void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor,
-                   const DrawState& state, Framebuffer& framebuffer, Stats& stats) {
+void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor, float lineWidth,
+                   const FragmentChoice& fragments, Framebuffer& framebuffer, Stats& stats) {
     if (!isUsable(start) || !isUsable(end)) return;
     if (start.x == end.x && start.y == end.y) return;  // zero length draws nothing
     // Width rounded to an integer (halves up), at least one pixel; NaN draws as 1, as the
     // reference's comparisons with NaN all fail.
-    const float width = state.lineWidth > 1.0f ? std::min(state.lineWidth, kMaxLineWidth) : 1.0f;
+    const float width = lineWidth > 1.0f ? std::min(lineWidth, kMaxLineWidth) : 1.0f;
     const std::int64_t fixedWidth = roundHalfAway(width) << kSubpixelBits;
     const LineQuad quad = buildQuad(start.x, start.y, end.x, end.y, fixedWidth);
 
     const LinePlaneBuilder builder(start, end);
-    LinePlanes planes;
-    const bool smooth = state.shadeModel == ShadeModel::Smooth;
-    if (smooth) {
-        for (int c = 0; c < 4; ++c) {
-            planes.color[c] = builder.plane(start.color[c] * start.invW, end.color[c] * end.invW);
-        }
-        planes.invW = builder.plane(start.invW, end.invW);
-    }
-    if (state.depthTest) planes.depth = builder.plane(start.z, end.z);
-
-    if (state.depthTest) {
-        if (smooth) fillQuad<true, true>(quad, planes, flatColor, state, framebuffer, stats);
-        else fillQuad<true, false>(quad, planes, flatColor, state, framebuffer, stats);
+    FragmentInputs fragment;
+    fragment.setPath(fragments.varyingW);
+    const FragmentKey& key = fragments.varyingW.key;
+    if (key.shading == Shading::Flat) {
+        fragment.flatColor = fragmentRgba8(flatColor);
     } else {
-        if (smooth) fillQuad<false, true>(quad, planes, flatColor, state, framebuffer, stats);
-        else fillQuad<false, false>(quad, planes, flatColor, state, framebuffer, stats);
+        for (int c = 0; c < 4; ++c) {
+            fragment.color[c] = builder.plane(start.color[c] * start.invW, end.color[c] * end.invW);
+        }
+        fragment.invW = builder.plane(start.invW, end.invW);
+        fragment.setPath(fragments.path(fragment.invW));
     }
+    if (key.depthTest) fragment.depth = builder.plane(start.z, end.z);
+    fillQuad(quad, fragment, framebuffer, stats);
 }
 
 }  // namespace glrenderer

@@ -1,7 +1,7 @@
 #pragma once
 #include <glm/vec4.hpp>
 
-#include "glrenderer/draw_state.h"
+#include "fragment_paths.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
 #include "window_vertex.h"
@@ -13,8 +13,9 @@ namespace glrenderer {
 // integer-rounded width whose ends are moved by the diamond-exit test, so that the pixels lit
 // depend on the direction of the segment. Smooth colors are interpolated along the major axis
 // from the unsnapped ends; flat lines take `flatColor` (the second vertex's, provoking last).
-// Segments with a non-finite or huge end draw nothing.
-void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor,
-                   const DrawState& state, Framebuffer& framebuffer, Stats& stats);
+// The fragments take the path of `fragments` (a choice for fragmentKey(state)). Segments with a
+// non-finite or huge end draw nothing.
+void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor, float lineWidth,
+                   const FragmentChoice& fragments, Framebuffer& framebuffer, Stats& stats);
 
 }  // namespace glrenderer

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "depth_test.h"
 #include "glrenderer/color_convert.h"
 #include "round_half_away.h"
 #include "triangle_setup.h"
@@ -40,35 +39,10 @@ PixelBox pointBox(const WindowVertex& v, float size) {
     return {x0, y0, x0 + s - 1, y0 + s - 1};
 }
 
-template <bool DepthTest>
-void fillBox(const PixelBox& box, std::uint32_t rgba, std::uint32_t z, const DrawState& state,
-             Framebuffer& fb, Stats& stats) {
-    const auto color = fb.color();
-    const auto depth = fb.depth();
-    const std::size_t width = static_cast<std::size_t>(fb.width());
-    std::uint64_t fragments = 0, passed = 0;
-    for (std::int64_t py = box.y0; py <= box.y1; ++py) {
-        const std::size_t row = static_cast<std::size_t>(fb.height() - 1 - py) * width;
-        for (std::int64_t px = box.x0; px <= box.x1; ++px) {
-            ++fragments;
-            const std::size_t index = row + static_cast<std::size_t>(px);
-            if constexpr (DepthTest) {
-                if (!depthPasses(state.depthFunc, z, depth[index])) continue;
-                if (state.depthWrite) depth[index] = z;
-            }
-            ++passed;
-            color[index] = rgba;
-        }
-    }
-    stats.fragments += fragments;
-    stats.fragmentsPassed += passed;
-    stats.pixelsWritten += passed;
-}
-
 }  // namespace
 
-void rasterizePoint(const WindowVertex& point, const DrawState& state, Framebuffer& framebuffer,
-                    Stats& stats) {
+void rasterizePoint(const WindowVertex& point, const DrawState& state, const FragmentChoice& fragments,
+                    Framebuffer& framebuffer, Stats& stats) {
     if (!(std::fabs(point.x) < kMaxPointCoordinate && std::fabs(point.y) < kMaxPointCoordinate &&
           std::isfinite(point.z) && std::isfinite(point.invW))) {
         return;
@@ -85,9 +59,15 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, Framebuff
     // perspective-correct attribute of the reference; flat colors are used as they are.
     glm::vec4 c = point.color;
     if (state.shadeModel == ShadeModel::Smooth) c = c * point.invW * (1.0f / point.invW);
-    const std::uint32_t rgba = fragmentRgba8(c);
-    if (state.depthTest) fillBox<true>(box, rgba, toDepth24(point.z), state, framebuffer, stats);
-    else fillBox<false>(box, rgba, 0, state, framebuffer, stats);
+    FragmentInputs fragment;
+    fragment.setPath(fragments.varyingW);
+    fragment.flatColor = fragmentRgba8(c);
+    fragment.depth = {point.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
+    FragmentCounts counts;
+    for (std::int64_t row = box.y0; row <= box.y1; ++row) {
+        fragment.shadeSpan(static_cast<int>(row), static_cast<int>(box.x0), static_cast<int>(box.x1), framebuffer, counts);
+    }
+    addFragmentCounts(stats, counts);
 }
 
 }  // namespace glrenderer

@@ -6,6 +6,8 @@
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/methods.h"
+#include "fragment_inputs.h"
+#include "fragment_paths.h"
 #include "triangle_setup.h"
 
 namespace glrenderer {
@@ -33,48 +35,32 @@ struct EdgeFunction {
     }
 };
 
-// The per-fragment work a draw's state asks for; a frame pays only for what it enables.
-struct FragmentState {
-    bool depthTest = false;
-    CompareFunc depthFunc = CompareFunc::Less;
-    bool depthWrite = true;
-    bool smooth = true;
-    // The color planes hold color / w and need the interpolated 1 / w to divide by. False when
-    // 1 / w is the constant 1 (every vertex has w = 1, as orthographic scenes do, or the
-    // screen-linear interpolation): the division is by one and changes no bit, so the fast
-    // kernels skip it (the per-pixel kernel, the reference for them, always divides).
-    bool perspective = true;
-};
-
 // Everything the kernel needs, computed once per triangle so that any tile can draw its part.
 struct RasterTriangle {
     EdgeFunction edges[3];
-    AttributePlane color[4];  // color / w, only under smooth shading
-    AttributePlane invW;      // 1 / w, only under smooth shading
-    AttributePlane depth;     // window z, only with the depth test
-    std::uint32_t flatColor = 0;
-    FragmentState state;
+    FragmentInputs fragment;
     RasterMethod method = RasterMethod::Exact;
     float windowX[3] = {}, windowY[3] = {};  // unsnapped, for the float methods
     float meanDepth = 0;                      // for the painter's sort
     int minX = 0, maxX = -1, minY = 0, maxY = -1;  // inclusive pixel bounds, internal rows
 };
 
-// Builds the edge functions and the planes the state needs, with pixel bounds clipped to the
-// framebuffer. Returns false when no pixel center can be covered.
-bool prepareTriangle(const SetupTriangle& triangle, const DrawState& state, const Methods& methods,
-                     int width, int height, RasterTriangle& out);
+// The fragment key of a draw's triangles: the state's, with the methods' departures (the
+// painter's sort replaces the depth test, screen-linear interpolation divides by no 1 / w).
+FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods);
+
+// Builds the edge functions and the planes the key of `fragments` reads, with pixel bounds
+// clipped to the framebuffer, and picks the triangle's fragment path from `fragments`. Returns
+// false when no pixel center can be covered.
+bool prepareTriangle(const SetupTriangle& triangle, const FragmentChoice& fragments, RasterMethod method, int width,
+                     int height, RasterTriangle& out);
 
 struct PixelRect {
     int minX, maxX, minY, maxY;  // inclusive
 };
 
-struct FragmentCounts {
-    std::uint64_t fragments = 0, passed = 0;
-};
-
-// The exact method over the part of the triangle inside `rect`: integer edge functions at 1/256
-// pixel, perspective-correct color, 24-bit depth.
+// The exact method over the part of the triangle inside `rect`, tested pixel by pixel: integer
+// edge functions at 1/256 pixel; the covered pixels go through the scalar fragment routine.
 void rasterizeTriangleExact(const RasterTriangle& triangle, const PixelRect& rect,
                             Framebuffer& framebuffer, FragmentCounts& counts);
 

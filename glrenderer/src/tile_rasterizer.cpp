@@ -60,7 +60,7 @@ void prefetch(const RasterTriangle& triangle) {
 
 TileRasterizer::TileRasterizer(Framebuffer& framebuffer)
     : framebuffer_(framebuffer), pool_(workerThreadCount()),
-      threadCounts_(pool_.threadCount()), kernels_(bestExactKernels()) {}
+      threadCounts_(pool_.threadCount()) {}
 
 void TileRasterizer::refitTiles() {
     binnedWidth_ = framebuffer_.width();
@@ -159,15 +159,9 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     constexpr std::size_t kPrefetchAhead = 4;
     for (std::size_t i = 0; i < bin.size(); ++i) {
         if (i + kPrefetchAhead < bin.size()) prefetch(*bin[i + kPrefetchAhead]);
-        rasterizeWithMethod(*bin[i], rect, framebuffer_, counts, kernels_);
+        rasterizeWithMethod(*bin[i], rect, framebuffer_, counts);
     }
     bin.clear();
-}
-
-void TileRasterizer::addCounts(Stats& stats, const FragmentCounts& counts) {
-    stats.fragments += counts.fragments;
-    stats.fragmentsPassed += counts.passed;
-    stats.pixelsWritten += counts.passed;
 }
 
 void TileRasterizer::flush(Stats& stats, bool paintersSort) {
@@ -183,7 +177,7 @@ void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     } else {
         pool_.run(bins_.size(), drawAny);
     }
-    for (const ThreadCounts& c : threadCounts_) addCounts(stats, c.counts);
+    for (const ThreadCounts& c : threadCounts_) addFragmentCounts(stats, c.counts);
     queued_ = 0;
     clear_ = {};
     // Steady state allocates nothing even if the next frame draws fewer tiles early.

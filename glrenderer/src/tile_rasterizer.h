@@ -6,7 +6,6 @@
 
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
-#include "raster_span.h"
 #include "triangle_arena.h"
 #include "worker_pool.h"
 
@@ -56,11 +55,11 @@ public:
         FragmentCounts counts;
         startDrawingTiles();
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) {
-            if (stop()) return addCounts(stats, counts);
+            if (stop()) return addFragmentCounts(stats, counts);
             if (!bins_[tile].empty()) drawTile(tile, counts, false);
         }
         queued_ = 0;  // every bin is empty
-        addCounts(stats, counts);
+        addFragmentCounts(stats, counts);
     }
     std::size_t queued() const { return queued_; }
 
@@ -79,7 +78,6 @@ private:
     // Clears the tile's part of the buffers being cleared that do not hold the values already;
     // `drawnNext` if triangles follow.
     void clearTile(std::size_t tile, const PixelRect& rect, bool drawnNext);
-    static void addCounts(Stats& stats, const FragmentCounts& counts);
 
     struct PendingClear {
         bool color = false, depth = false;
@@ -93,7 +91,6 @@ private:
     Framebuffer& framebuffer_;
     WorkerPool pool_;
     std::vector<ThreadCounts> threadCounts_;
-    ExactKernels kernels_;
     PendingClear clear_;
     std::vector<std::uint8_t> clearPending_;  // per tile: not yet cleared by clear_
     // Per tile, the buffers whose pixels there still hold heldRgba_ / heldDepth24_, the values

@@ -106,7 +106,9 @@ class UnfilledDrawer {
 public:
     UnfilledDrawer(const DrawState& state, Framebuffer& framebuffer, Stats& stats,
                    const UnfilledTarget& target)
-        : state_(state), framebuffer_(framebuffer), stats_(stats), target_(target) {}
+        : state_(state), framebuffer_(framebuffer), stats_(stats), target_(target),
+          lineFragments_(bestFragmentPaths(), fragmentKey(state)),
+          pointFragments_(bestFragmentPaths(), flatFragmentKey(state)) {}
 
     // One triangle out of the clipper (provoking vertex last) with its edge bits.
     void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c,
@@ -146,22 +148,23 @@ public:
 
 private:
     void line(const WindowVertex& from, const WindowVertex& to, const glm::vec4& flatColor) {
-        rasterizeLine(from, to, flatColor, state_, framebuffer_, stats_);
+        rasterizeLine(from, to, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
     }
     void point(const WindowVertex& p, bool flat, const glm::vec4& flatColor) {
         if (!flat) {
-            rasterizePoint(p, state_, framebuffer_, stats_);
+            rasterizePoint(p, state_, pointFragments_, framebuffer_, stats_);
             return;
         }
         WindowVertex colored = p;
         colored.color = flatColor;
-        rasterizePoint(colored, state_, framebuffer_, stats_);
+        rasterizePoint(colored, state_, pointFragments_, framebuffer_, stats_);
     }
 
     const DrawState& state_;
     Framebuffer& framebuffer_;
     Stats& stats_;
     const UnfilledTarget& target_;
+    const FragmentChoice lineFragments_, pointFragments_;  // the batch's, chosen once
 };
 
 }  // namespace

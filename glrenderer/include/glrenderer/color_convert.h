@@ -46,12 +46,6 @@ inline std::uint32_t fragmentRgba8(const glm::vec4& c) {
 
 inline constexpr std::uint32_t kDepthMax24 = 0xFFFFFF;
 
-// Depth in [0, 1] to the 24-bit buffer value: round float(z * 16777215) to nearest even.
-inline std::uint32_t toDepth24(float depth) {
-    const float clamped = depth > 0.0f ? std::min(depth, 1.0f) : 0.0f;
-    return static_cast<std::uint32_t>(roundToEven(clamped * 16777215.0f));
-}
-
 // glClear's depth: the clear value (a double in [0, 1]) times 16777215, rounded in double to
 // nearest even.
 inline std::uint32_t clearDepth24(double depth) {

@@ -1,0 +1,69 @@
+#pragma once
+#include <cstdint>
+
+#include "fragment_key.h"
+#include "glrenderer/framebuffer.h"
+#include "glrenderer/stats.h"
+#include "triangle_setup.h"
+
+namespace glrenderer {
+
+struct RasterTriangle;
+struct PixelRect;
+struct FragmentInputs;
+
+struct FragmentCounts {
+    std::uint64_t fragments = 0, passed = 0;
+};
+
+// Every fragment that passes writes its pixel (no colour mask yet).
+inline void addFragmentCounts(Stats& stats, const FragmentCounts& counts) {
+    stats.fragments += counts.fragments;
+    stats.fragmentsPassed += counts.passed;
+    stats.pixelsWritten += counts.passed;
+}
+
+// The fragment stage for one key at one vector width, over the pixel sets that coverage makes.
+struct FragmentRoutine {
+    // The pixels [begin, end] of internal row `row` (y down), all covered by the primitive.
+    using Span = void (*)(const FragmentInputs& inputs, int row, int begin, int end, Framebuffer& framebuffer,
+                          FragmentCounts& counts);
+    // A narrow triangle's part in `area` (its bounds within a tile), in 2D blocks of lanes with
+    // their own coverage test, no span search; returns false, drawing nothing, if the area is
+    // too wide for the blocks.
+    using Narrow = bool (*)(const RasterTriangle& triangle, const PixelRect& area, Framebuffer& framebuffer,
+                            FragmentCounts& counts);
+
+    Span span = nullptr;
+    Narrow narrow = nullptr;  // optional
+};
+
+// A key and the routine that serves it on this CPU.
+struct FragmentPath {
+    FragmentKey key;
+    const FragmentRoutine* routine = nullptr;
+};
+
+// What the fragment stage needs of one primitive: planes of its attributes over the window,
+// evaluated at pixel (x, y) in internal rows, and the path that draws them. Only the planes the
+// key reads are set.
+struct FragmentInputs {
+    AttributePlane color[4];  // colour, or colour / w under perspective shading
+    AttributePlane invW;      // 1 / w, under perspective shading
+    AttributePlane depth;     // window z, with the depth test
+    // The path's key and routine, as two fields so that the flat colour packs between them.
+    FragmentKey key;
+    std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
+    const FragmentRoutine* routine = nullptr;
+
+    void setPath(const FragmentPath& path) {
+        key = path.key;
+        routine = path.routine;
+    }
+    // Draws the pixels [begin, end] of `row` with the primitive's routine.
+    void shadeSpan(int row, int begin, int end, Framebuffer& framebuffer, FragmentCounts& counts) const {
+        routine->span(*this, row, begin, end, framebuffer, counts);
+    }
+};
+
+}  // namespace glrenderer

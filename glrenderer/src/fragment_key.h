@@ -1,0 +1,51 @@
+#pragma once
+#include <cstdint>
+
+#include "glrenderer/draw_state.h"
+
+namespace glrenderer {
+
+// How a primitive's colour reaches its fragments.
+enum class Shading : std::uint8_t {
+    Flat,         // one colour for the whole primitive
+    Linear,       // colour planes, used as they are (1 / w is the constant 1, or screen-linear)
+    Perspective,  // planes of colour / w, divided per fragment by the interpolated 1 / w
+};
+
+// What changes the work of the fragment stage, and nothing else: computed once per draw, it
+// picks the routine that draws the draw's fragments (fragment_paths.h). Fields are in GL's
+// order of the stage; a field that does not matter under the others is normalized (no depth
+// function without the depth test), so that equal work has equal keys. A structural type: fast
+// paths take their key as a template argument and the compiler removes every step it turns off.
+struct FragmentKey {
+    Shading shading = Shading::Flat;
+    // Issue 16 adds here the texture environment and the texture's format, then the fog mode.
+    // Then the per-fragment tests: scissor, alpha test (function), stencil (functions, ops).
+    bool depthTest = false;
+    CompareFunc depthFunc = CompareFunc::Always;
+    bool depthWrite = false;
+    // Then blending (equation, factors), the logic op and the colour and depth masks.
+
+    bool operator==(const FragmentKey&) const = default;
+};
+
+// A key from its parts, normalized.
+constexpr FragmentKey makeFragmentKey(Shading shading, bool depthTest, CompareFunc depthFunc, bool depthWrite) {
+    if (!depthTest) return {shading, false, CompareFunc::Always, false};
+    return {shading, true, depthFunc, depthWrite};
+}
+
+// The key of a draw's state for primitives that interpolate their colour (triangles, lines).
+inline FragmentKey fragmentKey(const DrawState& state) {
+    const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
+    return makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite);
+}
+
+// The same key for primitives of one colour (points, bitmaps).
+inline FragmentKey flatFragmentKey(const DrawState& state) {
+    FragmentKey key = fragmentKey(state);
+    key.shading = Shading::Flat;
+    return key;
+}
+
+}  // namespace glrenderer

@@ -1,0 +1,79 @@
+#pragma once
+#include <span>
+#include <string_view>
+
+#include "fragment_inputs.h"
+#include "fragment_key.h"
+
+namespace glrenderer {
+
+// The keys with fast paths of their own at every vector width: what scenes draw with nearly
+// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading). Each is
+// compiled with its key as a constant, so that it holds only the steps the key turns on.
+inline constexpr FragmentKey kFastFragmentKeys[] = {
+    makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false),
+    makeFragmentKey(Shading::Linear, false, CompareFunc::Always, false),
+    makeFragmentKey(Shading::Perspective, false, CompareFunc::Always, false),
+    makeFragmentKey(Shading::Flat, true, CompareFunc::Less, true),
+    makeFragmentKey(Shading::Linear, true, CompareFunc::Less, true),
+    makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true),
+    makeFragmentKey(Shading::Flat, true, CompareFunc::LessEqual, true),
+    makeFragmentKey(Shading::Linear, true, CompareFunc::LessEqual, true),
+    makeFragmentKey(Shading::Perspective, true, CompareFunc::LessEqual, true),
+};
+
+// The fragment routines of one vector width: a fast path per key of kFastFragmentKeys, and one
+// routine that reads any key at run time (per block of lanes) for the others. The scalar
+// width's routine for any key is the general path: it serves every key and is the reference
+// the others are tested against, bit for bit (tests/unit/test_fragment_paths.cpp).
+class FragmentPaths {
+public:
+    struct FastPath {
+        FragmentKey key;
+        FragmentRoutine routine;
+    };
+
+    constexpr FragmentPaths(std::string_view name, std::span<const FastPath> fast, FragmentRoutine anyKey)
+        : name_(name), fast_(fast), anyKey_(anyKey) {}
+
+    std::string_view name() const { return name_; }
+    // The fast path of `key` if it has one, else the routine for any key.
+    const FragmentRoutine& routine(FragmentKey key) const;
+    std::span<const FastPath> fastPaths() const { return fast_; }
+    const FragmentRoutine& anyKey() const { return anyKey_; }
+
+private:
+    std::string_view name_;
+    std::span<const FastPath> fast_;
+    FragmentRoutine anyKey_;
+};
+
+// One at a time, portable: the general path and scalar fast paths.
+const FragmentPaths& scalarFragmentPaths();
+// 8 lanes of AVX2 with FMA; only after cpuHasAvx2Fma().
+const FragmentPaths& avx2FragmentPaths();
+// 16 lanes of AVX-512F; only after cpuHasAvx512().
+const FragmentPaths& avx512FragmentPaths();
+// The widest this CPU runs, chosen once. MYGL_KERNELS=avx2 or scalar caps the choice, to see
+// how a CPU without AVX-512 (or AVX2) would run: the pixels are the same.
+const FragmentPaths& bestFragmentPaths();
+// The general path: the scalar routine for any key.
+inline const FragmentRoutine& generalFragmentRoutine() { return scalarFragmentPaths().anyKey(); }
+
+// A draw's fragment paths, chosen once per draw from its key. A primitive whose 1 / w is the
+// constant 1 (w = 1 at every vertex, as in orthographic scenes) takes `constantW`: the key with
+// linear shading, as dividing by one would change no bit.
+struct FragmentChoice {
+    FragmentChoice(const FragmentPaths& paths, FragmentKey key);
+
+    // The path of a primitive of perspective shading with this plane of 1 / w. The plane
+    // (1, 0, 0) is 1 at every pixel, and x * 1 is x for every float x.
+    const FragmentPath& path(const AttributePlane& invW) const {
+        const bool constantOne = invW.a0 == 1.0f && invW.dadx == 0.0f && invW.dady == 0.0f;
+        return constantOne ? constantW : varyingW;
+    }
+
+    FragmentPath varyingW, constantW;
+};
+
+}  // namespace glrenderer

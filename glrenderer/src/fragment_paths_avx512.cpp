@@ -1,0 +1,10 @@
+// The fragment routines in 16 lanes of AVX-512F. Compiled with -mavx512f -mfma; called only
+// after cpuHasAvx512().
+#include "fragment_routines.h"
+#include "simd_avx512.h"
+
+namespace glrenderer {
+
+const FragmentPaths& avx512FragmentPaths() { return fragmentPathsOf<Avx512Lanes>(); }
+
+}  // namespace glrenderer

@@ -1,0 +1,201 @@
+#pragma once
+// The fragment routines of one vector width: the stage (fragment_stage.h) driven over the pixel
+// sets coverage makes (spans of a row, 2D blocks of a narrow triangle), compiled once per fast
+// key and once for any key. Included only by fragment_paths_*.cpp, each with its lane type.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+#include <utility>
+
+#include "fragment_paths.h"
+#include "fragment_stage.h"
+#include "raster_triangle.h"
+
+namespace glrenderer {
+
+template <class L>
+[[gnu::always_inline]] inline void shadeSpan(FragmentKey key, const FragmentInputs& in, int row, int begin, int end,
+                                             Framebuffer& fb, FragmentCounts& counts) {
+    const std::ptrdiff_t rowStart = static_cast<std::ptrdiff_t>(fb.height() - 1 - row) * fb.width();
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data()};
+    const FragmentLanes<L> lanes(in);
+    const typename L::Float y = L::floats(static_cast<float>(row));
+    std::uint64_t passed = 0;
+    // With cheap masks, blocks are aligned to cache lines (the buffers are): a block across two
+    // lines made every masked load and store touch both, a third of a dense frame. The first
+    // block starts at the line holding `begin`, its lanes before it masked off.
+    int first = begin;
+    if constexpr (L::kCheapMasks && L::kCount > 1) {
+        first -= static_cast<int>((rowStart + begin) % L::kCount);
+    }
+    for (int px = first; px <= end; px += L::kCount) {
+        const typename L::Mask covered = L::lanesBetween(begin - px, end - px);
+        const typename L::Float x = L::toFloat(L::add(L::ints(px), L::laneIndex()));
+        const RowBlock<L> block(rowStart + px, px >= begin && px + L::kCount - 1 <= end);
+        passed += L::count(shadeBlock<L>(key, lanes, x, y, covered, block, buffers));
+    }
+    counts.fragments += static_cast<std::uint64_t>(end - begin + 1);
+    counts.passed += passed;
+}
+
+// Lanes on a block of a narrow area: lane i is pixel (dx, dy) = (i % columns, i / columns) from
+// the block's first pixel, columns a power of two; rows go down in memory as y goes up.
+template <class L>
+class NarrowBlock {
+public:
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+
+    // `laneOffsets` holds each lane's dx - dy * (framebuffer width), `rowLanes` the lanes of each
+    // row of the block.
+    NarrowBlock(std::size_t firstPixel, int rows, unsigned columns, std::size_t width, Int laneOffsets,
+                const Mask* rowLanes)
+        : firstPixel_(firstPixel), rows_(rows), columns_(columns), width_(width), laneOffsets_(laneOffsets),
+          rowLanes_(rowLanes) {}
+
+    // One gather: it measured faster than a masked load per row, which stalls behind the
+    // previous triangle's stores.
+    Int load(const std::uint32_t* buffer, Mask lanes) const {
+        return L::gather(buffer + firstPixel_, laneOffsets_, lanes);
+    }
+    // A masked store per row (a scatter measured slower).
+    void store(std::uint32_t* buffer, Mask lanes, Int values) const {
+        for (int row = 0; row < rows_; ++row) {
+            const Mask inRow = L::both(lanes, rowLanes_[row]);
+            if (!L::none(inRow)) L::store(laneZero(buffer, row), inRow, values);
+        }
+    }
+
+private:
+    // Where lane 0 would be for the lanes of `row` to land on their pixels of `buffer`. Formed
+    // as an integer: it may lie before the buffer, where only masked-off lanes point.
+    std::uint32_t* laneZero(std::uint32_t* buffer, int row) const {
+        const std::uint32_t* rowStart = buffer + firstPixel_ - static_cast<std::size_t>(row) * width_;
+        return reinterpret_cast<std::uint32_t*>(reinterpret_cast<std::uintptr_t>(rowStart) -
+                                                sizeof(std::uint32_t) * static_cast<unsigned>(row) * columns_);
+    }
+
+    std::size_t firstPixel_;
+    int rows_;
+    unsigned columns_;
+    std::size_t width_;
+    Int laneOffsets_;
+    const Mask* rowLanes_;
+};
+
+// Areas up to L::kCount pixels wide, in blocks of L::kCount lanes (kCount x 1 up to 1 x kCount
+// pixels, as narrow as the area), with no span search: most of a dense mesh's triangles are a
+// few pixels across.
+template <class L>
+[[gnu::always_inline]] inline bool shadeNarrowTriangle(FragmentKey key, const RasterTriangle& t, const PixelRect& area,
+                                                       Framebuffer& fb, FragmentCounts& counts) {
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+    const int width = area.maxX - area.minX + 1;
+    if (width > L::kCount) return false;
+    const unsigned columns = std::bit_ceil(static_cast<unsigned>(width));
+    const int columnBits = std::countr_zero(columns);
+    const int blockRows = L::kCount >> columnBits;
+    // Edge values in 32-bit lanes: they hold every value of every block when the steps and the
+    // values at the area's corners (the extremes of a linear function) are this small, as for
+    // any triangle this narrow that is not also huge.
+    constexpr std::int64_t kStepLimit = std::int64_t{1} << 25, kValueLimit = std::int64_t{1} << 29;
+    const int height = area.maxY - area.minY + 1;  // at most a tile's
+    for (const EdgeFunction& edge : t.edges) {
+        if (std::abs(edge.stepX) >= kStepLimit || std::abs(edge.stepY) >= kStepLimit) return false;
+        const std::int64_t corner = edge.at(area.minX, area.minY);
+        const std::int64_t acrossX = edge.stepX * (width - 1), acrossY = edge.stepY * (height - 1);
+        for (const std::int64_t value : {corner, corner + acrossX, corner + acrossY, corner + acrossX + acrossY}) {
+            if (std::abs(value) >= kValueLimit) return false;
+        }
+    }
+    const Int dx = L::bitAnd(L::laneIndex(), L::ints(static_cast<int>(columns - 1)));
+    const Int dy = L::shiftRight(L::laneIndex(), columnBits);
+    const typename L::Float x = L::toFloat(L::add(L::ints(area.minX), dx));
+    const Mask inColumns = L::lessThan(dx, L::ints(width));
+    const Int laneOffsets = L::sub(dx, L::mul(dy, L::ints(fb.width())));
+    Int stepX[3], stepY[3];
+    for (int k = 0; k < 3; ++k) {
+        stepX[k] = L::mul(dx, L::ints(static_cast<int>(t.edges[k].stepX)));
+        stepY[k] = L::mul(dy, L::ints(static_cast<int>(t.edges[k].stepY)));
+    }
+    Mask rowLanes[L::kCount];  // the lanes of each row of a block, for the rows the area has
+    for (int row = 0; row < std::min(blockRows, height); ++row) {
+        const int firstLane = row * static_cast<int>(columns);
+        rowLanes[row] = L::lanesBetween(firstLane, firstLane + static_cast<int>(columns) - 1);
+    }
+    const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data()};
+    const FragmentLanes<L> lanes(t.fragment);
+    std::uint64_t fragments = 0, passed = 0;
+    for (int top = area.minY; top <= area.maxY; top += blockRows) {
+        const int rows = std::min(blockRows, area.maxY - top + 1);
+        Int outside = L::ints(0);  // sign bit set where any edge is negative
+        for (int k = 0; k < 3; ++k) {
+            const Int first = L::ints(static_cast<int>(t.edges[k].at(area.minX, top)));
+            outside = L::bitOr(outside, L::add(first, L::add(stepX[k], stepY[k])));
+        }
+        const Mask inBlock = L::both(inColumns, L::lessThan(dy, L::ints(rows)));
+        const Mask covered = L::both(inBlock, L::notNegative(outside));
+        if (L::none(covered)) continue;
+        fragments += L::count(covered);
+        const std::size_t firstPixel = static_cast<std::size_t>(fb.height() - 1 - top) * fbWidth +
+                                       static_cast<std::size_t>(area.minX);
+        const NarrowBlock<L> block(firstPixel, rows, columns, fbWidth, laneOffsets, rowLanes);
+        const typename L::Float y = L::toFloat(L::add(L::ints(top), dy));
+        passed += L::count(shadeBlock<L>(key, lanes, x, y, covered, block, buffers));
+    }
+    counts.fragments += fragments;
+    counts.passed += passed;
+    return true;
+}
+
+// The routines of lane type L: per key of kFastFragmentKeys, the key a constant (a fast path),
+// and for any key, read from the primitive at run time.
+template <class L>
+struct RoutinesOf {
+    template <FragmentKey Key>
+    static void span(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb, FragmentCounts& counts) {
+        shadeSpan<L>(Key, in, row, begin, end, fb, counts);
+    }
+    static void anyKeySpan(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb,
+                           FragmentCounts& counts) {
+        shadeSpan<L>(in.key, in, row, begin, end, fb, counts);
+    }
+    template <FragmentKey Key>
+    static bool narrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
+        return shadeNarrowTriangle<L>(Key, t, area, fb, counts);
+    }
+    static bool anyKeyNarrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
+        return shadeNarrowTriangle<L>(t.fragment.key, t, area, fb, counts);
+    }
+
+    // The fast path of `Key`.
+    template <FragmentKey Key>
+    static constexpr FragmentRoutine fastRoutine() {
+        if constexpr (L::kNarrowBlocks) return {&span<Key>, &narrow<Key>};
+        else return {&span<Key>, nullptr};
+    }
+    template <std::size_t... I>
+    static constexpr auto fastPaths(std::index_sequence<I...>) {
+        return std::array<FragmentPaths::FastPath, sizeof...(I)>{{{kFastFragmentKeys[I], fastRoutine<kFastFragmentKeys[I]>()}...}};
+    }
+    static constexpr FragmentRoutine anyKey() {
+        if constexpr (L::kNarrowBlocks) return {&anyKeySpan, &anyKeyNarrow};
+        else return {&anyKeySpan, nullptr};
+    }
+};
+
+// The paths of lane type L, in constants: nothing runs at static initialization, where the CPU
+// may not have L's instructions.
+template <class L>
+const FragmentPaths& fragmentPathsOf() {
+    static constexpr auto fast = RoutinesOf<L>::fastPaths(std::make_index_sequence<std::size(kFastFragmentKeys)>());
+    static constexpr FragmentPaths paths(L::kName, fast, RoutinesOf<L>::anyKey());
+    return paths;
+}
+
+}  // namespace glrenderer

@@ -1,0 +1,132 @@
+#pragma once
+// The fragment stage, written once over a lane type L (simd_scalar.h, simd_avx2.h,
+// simd_avx512.h: L::kCount pixels per block) and a key. Included only by the files that compile
+// it for one width (fragment_paths_*.cpp). Every lane performs the scalar operations in the same
+// order (the planes' two fmas, one IEEE division, the conversions' clamps), so the bits do not
+// depend on the width; with a constant key the compiler drops every step the key turns off.
+#include <cstddef>
+#include <cstdint>
+
+#include "fragment_inputs.h"
+
+namespace glrenderer {
+
+template <class L>
+struct PlaneLanes {
+    typename L::Float a0, dadx, dady;
+
+    explicit PlaneLanes(const AttributePlane& p) : a0(L::floats(p.a0)), dadx(L::floats(p.dadx)), dady(L::floats(p.dady)) {}
+    typename L::Float at(typename L::Float x, typename L::Float y) const { return L::fma(dady, y, L::fma(dadx, x, a0)); }
+};
+
+template <class L>
+typename L::Float clampUnit(typename L::Float v) {  // NaN and negatives to 0
+    return L::min(L::max(v, L::floats(0.0f)), L::floats(1.0f));
+}
+
+// The reference's fragment colour conversion (color_convert.h, fragmentToUnorm8) in lanes.
+template <class L>
+typename L::Int fragmentToUnorm8(typename L::Float v) {
+    const typename L::Float biased = L::add(L::mul(clampUnit<L>(v), L::floats(255.0f / 256.0f)), L::floats(32768.0f));
+    return L::bitAnd(L::bitsOf(biased), L::ints(0xFF));
+}
+
+// A primitive's fragment inputs broadcast to the lanes, and what the stage computes from them
+// for a block of pixels at (x, y).
+template <class L>
+class FragmentLanes {
+public:
+    using Float = typename L::Float;
+    using Int = typename L::Int;
+
+    explicit FragmentLanes(const FragmentInputs& in)
+        : depth_(in.depth), invW_(in.invW), red_(in.color[0]), green_(in.color[1]), blue_(in.color[2]),
+          alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))) {}
+
+    // 24-bit window depth: round(clamp(z) * (2^24 - 1)), ties to even.
+    Int depth24(Float x, Float y) const {
+        return L::roundToInt(L::mul(clampUnit<L>(depth_.at(x, y)), L::floats(16777215.0f)));
+    }
+
+    // The colour words, packed R, G, B, A from the low byte.
+    [[gnu::always_inline]] inline Int rgba(Shading shading, Float x, Float y) const {
+        if (shading == Shading::Flat) return flat_;
+        Float r = red_.at(x, y), g = green_.at(x, y), b = blue_.at(x, y), a = alpha_.at(x, y);
+        if (shading == Shading::Perspective) {
+            const Float w = L::div(L::floats(1.0f), invW_.at(x, y));
+            r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
+        }
+        return L::bitOr(L::bitOr(fragmentToUnorm8<L>(r), L::template shiftLeft<8>(fragmentToUnorm8<L>(g))),
+                        L::bitOr(L::template shiftLeft<16>(fragmentToUnorm8<L>(b)),
+                                 L::template shiftLeft<24>(fragmentToUnorm8<L>(a))));
+    }
+
+private:
+    PlaneLanes<L> depth_, invW_, red_, green_, blue_, alpha_;
+    Int flat_;
+};
+
+// Lanes on consecutive pixels of a row: lane i is pixel first + i of the buffers. A whole
+// block (every lane inside the span) uses plain loads and stores where masked ones are slow.
+template <class L>
+class RowBlock {
+public:
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+
+    // `first` may lie a few pixels before the buffer, where only masked-off lanes point.
+    RowBlock(std::ptrdiff_t first, bool whole) : first_(first), whole_(whole) {}
+
+    Int load(const std::uint32_t* buffer, Mask lanes) const {
+        if constexpr (!L::kCheapMasks) {
+            if (whole_) return L::loadWhole(buffer + first_);
+        }
+        return L::load(buffer + first_, lanes);
+    }
+    void store(std::uint32_t* buffer, Mask lanes, Int values) const {
+        if constexpr (!L::kCheapMasks) {
+            if (whole_) {
+                const Int merged = L::all(lanes) ? values : L::select(lanes, values, L::loadWhole(buffer + first_));
+                return L::storeWhole(buffer + first_, merged);
+            }
+        }
+        L::store(buffer + first_, lanes, values);
+    }
+
+private:
+    std::ptrdiff_t first_;
+    bool whole_;
+};
+
+// The framebuffer's planes, from their first pixel.
+struct PixelBuffers {
+    std::uint32_t* color;
+    std::uint32_t* depth;
+};
+
+// The fragment stage on one block of pixels at (x, y), `covered` the lanes the primitive covers,
+// in GL's order. Returns the lanes written. Colour is computed after the tests: nothing before
+// them reads it yet, and the fragments that fail need none.
+template <class L, class Block>
+[[gnu::always_inline]] inline typename L::Mask shadeBlock(const FragmentKey& key, const FragmentLanes<L>& in,
+                                               typename L::Float x, typename L::Float y, typename L::Mask covered,
+                                               const Block& block, const PixelBuffers& buffers) {
+    typename L::Mask live = covered;
+    // Texture environment, then fog (issue 16): they make the colour, computed below; the alpha
+    // test needs it here, before the tests.
+    // Scissor (issue 16): a rectangle, cut from coverage before the stage where it can be.
+    // Alpha test, then the stencil test (issue 16).
+    if (key.depthTest) {
+        const typename L::Int z = in.depth24(x, y);
+        live = L::compare(key.depthFunc, live, z, block.load(buffers.depth, live));
+        if (key.depthWrite) block.store(buffers.depth, live, z);
+    }
+    // Stencil operations on depth pass and fail (issue 16).
+    if (L::none(live)) return live;
+    const typename L::Int rgba = in.rgba(key.shading, x, y);
+    // Blending, the logic op, the colour mask (issue 16): here, reading the stored colour.
+    block.store(buffers.color, live, rgba);
+    return live;
+}
+
+}  // namespace glrenderer

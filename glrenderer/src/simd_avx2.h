@@ -1,0 +1,97 @@
+#pragma once
+// Only for files compiled with -mavx2 -mfma, called after cpuHasAvx2Fma().
+#include <immintrin.h>
+
+#include <bit>
+#include <cstdint>
+#include <string_view>
+
+#include "glrenderer/draw_state.h"
+
+namespace glrenderer {
+
+// 8 lanes of AVX2: the lane operations of the fragment stage (fragment_stage.h). A mask is a
+// vector of all-ones or zero lanes. Masked loads and stores are slow on some CPUs, so blocks
+// whose lanes all lie inside the span use plain ones (kCheapMasks = false: loadWhole,
+// storeWhole, select).
+struct Avx2Lanes {
+    static constexpr int kCount = 8;
+    static constexpr bool kCheapMasks = false;
+    // No 2D blocks for narrow triangles: they took more instructions than spans on triangles of
+    // a pixel or two (callgrind, bench-tiny), and gathers are slow on several AVX2 CPUs.
+    static constexpr bool kNarrowBlocks = false;
+    static constexpr std::string_view kName = "avx2";
+    using Float = __m256;
+    using Int = __m256i;
+    using Mask = __m256i;
+
+    static Float floats(float v) { return _mm256_set1_ps(v); }
+    static Int ints(int v) { return _mm256_set1_epi32(v); }
+    static Int laneIndex() { return _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7); }
+
+    static Float fma(Float a, Float b, Float c) { return _mm256_fmadd_ps(a, b, c); }
+    static Float mul(Float a, Float b) { return _mm256_mul_ps(a, b); }
+    static Float add(Float a, Float b) { return _mm256_add_ps(a, b); }
+    static Float div(Float a, Float b) { return _mm256_div_ps(a, b); }
+    static Float min(Float a, Float b) { return _mm256_min_ps(a, b); }
+    static Float max(Float a, Float b) { return _mm256_max_ps(a, b); }
+    static Float toFloat(Int v) { return _mm256_cvtepi32_ps(v); }
+    static Int roundToInt(Float v) { return _mm256_cvtps_epi32(v); }
+    static Int bitsOf(Float v) { return _mm256_castps_si256(v); }
+
+    static Int add(Int a, Int b) { return _mm256_add_epi32(a, b); }
+    static Int sub(Int a, Int b) { return _mm256_sub_epi32(a, b); }
+    static Int mul(Int a, Int b) { return _mm256_mullo_epi32(a, b); }
+    static Int bitAnd(Int a, Int b) { return _mm256_and_si256(a, b); }
+    static Int bitOr(Int a, Int b) { return _mm256_or_si256(a, b); }
+    template <int N>
+    static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }
+    static Int shiftRight(Int v, int n) { return _mm256_srl_epi32(v, _mm_cvtsi32_si128(n)); }
+
+    static Mask lessThan(Int a, Int b) { return _mm256_cmpgt_epi32(b, a); }
+    static Mask notNegative(Int a) { return _mm256_cmpgt_epi32(a, _mm256_set1_epi32(-1)); }
+    static Mask lanesBetween(int first, int last) {
+        return _mm256_andnot_si256(_mm256_cmpgt_epi32(_mm256_set1_epi32(first), laneIndex()),
+                                   _mm256_cmpgt_epi32(_mm256_set1_epi32(last + 1), laneIndex()));
+    }
+    static Mask both(Mask a, Mask b) { return _mm256_and_si256(a, b); }
+    static bool none(Mask m) { return _mm256_testz_si256(m, m); }
+    static bool all(Mask m) { return _mm256_movemask_ps(_mm256_castsi256_ps(m)) == 0xFF; }
+    static unsigned count(Mask m) {
+        return static_cast<unsigned>(std::popcount(static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(m)))));
+    }
+    // Lanes of `active` where incoming passes against stored. Signed compares: depths are below
+    // 2^24.
+    static Mask compare(CompareFunc func, Mask active, Int incoming, Int stored) {
+        const Int ones = _mm256_set1_epi32(-1);
+        switch (func) {
+        case CompareFunc::Never: return _mm256_setzero_si256();
+        case CompareFunc::Less: return both(active, _mm256_cmpgt_epi32(stored, incoming));
+        case CompareFunc::Equal: return both(active, _mm256_cmpeq_epi32(incoming, stored));
+        case CompareFunc::LessEqual: return _mm256_andnot_si256(_mm256_cmpgt_epi32(incoming, stored), active);
+        case CompareFunc::Greater: return both(active, _mm256_cmpgt_epi32(incoming, stored));
+        case CompareFunc::NotEqual: return _mm256_andnot_si256(_mm256_cmpeq_epi32(incoming, stored), active);
+        case CompareFunc::GreaterEqual: return _mm256_andnot_si256(_mm256_cmpgt_epi32(stored, incoming), active);
+        case CompareFunc::Always: return both(active, ones);
+        }
+        return _mm256_setzero_si256();
+    }
+
+    static Int load(const std::uint32_t* pixels, Mask m) {
+        return _mm256_maskload_epi32(reinterpret_cast<const int*>(pixels), m);
+    }
+    static void store(std::uint32_t* pixels, Mask m, Int v) {
+        _mm256_maskstore_epi32(reinterpret_cast<int*>(pixels), m, v);
+    }
+    static Int loadWhole(const std::uint32_t* pixels) {
+        return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(pixels));
+    }
+    static void storeWhole(std::uint32_t* pixels, Int v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(pixels), v); }
+    static Int select(Mask m, Int ifSet, Int ifClear) { return _mm256_blendv_epi8(ifClear, ifSet, m); }
+    // The lanes of `m` read at base[offsets[i]], the others zero.
+    static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
+        return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), offsets, m, 4);
+    }
+};
+
+}  // namespace glrenderer

@@ -1,0 +1,82 @@
+#pragma once
+// Only for files compiled with -mavx512f -mfma, called after cpuHasAvx512().
+#include <immintrin.h>
+
+#include <bit>
+#include <cstdint>
+#include <string_view>
+
+#include "glrenderer/draw_state.h"
+
+namespace glrenderer {
+
+// 16 lanes of AVX-512F: the lane operations of the fragment stage (fragment_stage.h). Masks are
+// mask registers, which make partial blocks as cheap as whole ones (kCheapMasks).
+struct Avx512Lanes {
+    static constexpr int kCount = 16;
+    static constexpr bool kCheapMasks = true;
+    static constexpr bool kNarrowBlocks = true;  // narrow triangles in 2D blocks of lanes
+    static constexpr std::string_view kName = "avx512";
+    using Float = __m512;
+    using Int = __m512i;
+    using Mask = __mmask16;
+
+    static Float floats(float v) { return _mm512_set1_ps(v); }
+    static Int ints(int v) { return _mm512_set1_epi32(v); }
+    // A function, not a constant: a static initializer would run AVX-512 code on any CPU.
+    static Int laneIndex() { return _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15); }
+
+    static Float fma(Float a, Float b, Float c) { return _mm512_fmadd_ps(a, b, c); }
+    static Float mul(Float a, Float b) { return _mm512_mul_ps(a, b); }
+    static Float add(Float a, Float b) { return _mm512_add_ps(a, b); }
+    static Float div(Float a, Float b) { return _mm512_div_ps(a, b); }
+    static Float min(Float a, Float b) { return _mm512_min_ps(a, b); }
+    static Float max(Float a, Float b) { return _mm512_max_ps(a, b); }
+    static Float toFloat(Int v) { return _mm512_cvtepi32_ps(v); }
+    static Int roundToInt(Float v) { return _mm512_cvtps_epi32(v); }
+    static Int bitsOf(Float v) { return _mm512_castps_si512(v); }
+
+    static Int add(Int a, Int b) { return _mm512_add_epi32(a, b); }
+    static Int sub(Int a, Int b) { return _mm512_sub_epi32(a, b); }
+    static Int mul(Int a, Int b) { return _mm512_mullo_epi32(a, b); }
+    static Int bitAnd(Int a, Int b) { return _mm512_and_epi32(a, b); }
+    static Int bitOr(Int a, Int b) { return _mm512_or_epi32(a, b); }
+    template <int N>
+    static Int shiftLeft(Int v) { return _mm512_slli_epi32(v, N); }
+    static Int shiftRight(Int v, int n) { return _mm512_srl_epi32(v, _mm_cvtsi32_si128(n)); }
+
+    static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }
+    static Mask notNegative(Int a) { return _mm512_cmpge_epi32_mask(a, _mm512_setzero_si512()); }
+    static Mask lanesBetween(int first, int last) {
+        const unsigned upTo = last >= 15 ? 0xFFFFu : last < 0 ? 0u : (2u << last) - 1;
+        const unsigned from = first <= 0 ? 0xFFFFu : first > 15 ? 0u : 0xFFFFu << first;
+        return static_cast<Mask>(upTo & from);
+    }
+    static Mask both(Mask a, Mask b) { return a & b; }
+    static bool none(Mask m) { return m == 0; }
+    static bool all(Mask m) { return m == 0xFFFF; }
+    static unsigned count(Mask m) { return static_cast<unsigned>(std::popcount(static_cast<unsigned>(m))); }
+    // Lanes of `active` where incoming passes against stored (depths are below 2^24).
+    static Mask compare(CompareFunc func, Mask active, Int incoming, Int stored) {
+        switch (func) {
+        case CompareFunc::Never: return 0;
+        case CompareFunc::Less: return _mm512_mask_cmplt_epu32_mask(active, incoming, stored);
+        case CompareFunc::Equal: return _mm512_mask_cmpeq_epu32_mask(active, incoming, stored);
+        case CompareFunc::LessEqual: return _mm512_mask_cmple_epu32_mask(active, incoming, stored);
+        case CompareFunc::Greater: return _mm512_mask_cmpgt_epu32_mask(active, incoming, stored);
+        case CompareFunc::NotEqual: return _mm512_mask_cmpneq_epu32_mask(active, incoming, stored);
+        case CompareFunc::GreaterEqual: return _mm512_mask_cmpge_epu32_mask(active, incoming, stored);
+        case CompareFunc::Always: return active;
+        }
+        return 0;
+    }
+
+    static Int load(const std::uint32_t* pixels, Mask m) { return _mm512_maskz_loadu_epi32(m, pixels); }
+    static void store(std::uint32_t* pixels, Mask m, Int v) { _mm512_mask_storeu_epi32(pixels, m, v); }
+    // The lanes of `m` read at base[offsets[i]], the others zero.
+    static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
+        return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), m, offsets, base, 4);
+    }
+};
+
+}  // namespace glrenderer

@@ -1,0 +1,70 @@
+#pragma once
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <string_view>
+
+#include "glrenderer/draw_state.h"
+#include "glrenderer/round_to_even.h"
+
+namespace glrenderer {
+
+// One lane, in plain C++: the lane operations of the fragment stage (fragment_stage.h) for any
+// CPU. min and max follow x86's minps/maxps (the second operand when either is NaN), so that the
+// stage's clamps give the same bits at every width.
+struct ScalarLanes {
+    static constexpr int kCount = 1;
+    static constexpr bool kCheapMasks = true;
+    static constexpr bool kNarrowBlocks = false;  // a block of one lane is a span
+    static constexpr std::string_view kName = "scalar";
+    using Float = float;
+    using Int = std::uint32_t;
+    using Mask = bool;
+
+    static Float floats(float v) { return v; }
+    static Int ints(int v) { return static_cast<Int>(v); }
+    static Int laneIndex() { return 0; }
+
+    static Float fma(Float a, Float b, Float c) { return std::fma(a, b, c); }
+    static Float mul(Float a, Float b) { return a * b; }
+    static Float add(Float a, Float b) { return a + b; }
+    static Float div(Float a, Float b) { return a / b; }
+    static Float min(Float a, Float b) { return a < b ? a : b; }
+    static Float max(Float a, Float b) { return a > b ? a : b; }
+    static Float toFloat(Int v) { return static_cast<Float>(static_cast<std::int32_t>(v)); }
+    static Int roundToInt(Float v) { return static_cast<Int>(roundToEven(v)); }  // |v| < 2^31
+    static Int bitsOf(Float v) { return std::bit_cast<Int>(v); }
+
+    static Int add(Int a, Int b) { return a + b; }
+    static Int bitAnd(Int a, Int b) { return a & b; }
+    static Int bitOr(Int a, Int b) { return a | b; }
+    template <int N>
+    static Int shiftLeft(Int v) { return v << N; }
+
+    // Lane 0 when first <= 0 <= last.
+    static Mask lanesBetween(int first, int last) { return first <= 0 && last >= 0; }
+    static Mask both(Mask a, Mask b) { return a && b; }
+    static bool none(Mask m) { return !m; }
+    static bool all(Mask m) { return m; }
+    static unsigned count(Mask m) { return m ? 1u : 0u; }
+    static Mask compare(CompareFunc func, Mask active, Int incoming, Int stored) {
+        switch (func) {
+        case CompareFunc::Never: return false;
+        case CompareFunc::Less: return active && incoming < stored;
+        case CompareFunc::Equal: return active && incoming == stored;
+        case CompareFunc::LessEqual: return active && incoming <= stored;
+        case CompareFunc::Greater: return active && incoming > stored;
+        case CompareFunc::NotEqual: return active && incoming != stored;
+        case CompareFunc::GreaterEqual: return active && incoming >= stored;
+        case CompareFunc::Always: return active;
+        }
+        return false;
+    }
+
+    static Int load(const std::uint32_t* pixel, Mask m) { return m ? *pixel : 0; }
+    static void store(std::uint32_t* pixel, Mask m, Int v) {
+        if (m) *pixel = v;
+    }
+};
+
+}  // namespace glrenderer

@@ -1,0 +1,229 @@
+// The fragment paths of every vector width this CPU runs (scalar, AVX2, AVX-512), each fast path
+// and each routine for any key, against the general path (the scalar routine for any key): same
+// colors, depths and counts, bit for bit, on random spans with random planes and buffers. Then
+// the fast exact method (spans, narrow blocks) of every width against per-pixel coverage, on
+// random triangles in every fragment state, whole or cut to a rectangle as tiles are.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cpu_features.h"
+#include "fragment_paths.h"
+#include "glrenderer/color_convert.h"
+#include "raster_span.h"
+#include "window_vertex.h"
+
+using namespace glrenderer;
+
+namespace {
+
+constexpr int kWidth = 97, kHeight = 61;  // odd sizes exercise the partial blocks
+
+std::vector<const FragmentPaths*> pathsOfThisCpu() {
+    std::vector<const FragmentPaths*> paths{&scalarFragmentPaths()};
+    if (cpuHasAvx2Fma()) paths.push_back(&avx2FragmentPaths());
+    if (cpuHasAvx512()) paths.push_back(&avx512FragmentPaths());
+    return paths;
+}
+
+std::string describe(const FragmentKey& key) {
+    const char* const shadings[] = {"flat", "linear", "perspective"};
+    std::string text = shadings[static_cast<int>(key.shading)];
+    if (key.depthTest) {
+        text += " depth func " + std::to_string(static_cast<int>(key.depthFunc)) + (key.depthWrite ? " write" : "");
+    }
+    return text;
+}
+
+// A routine to check, with the key it serves (any key for the routines for any key).
+struct NamedRoutine {
+    std::string name;
+    const FragmentRoutine* routine;
+    bool anyKey;
+    FragmentKey key;
+};
+
+std::vector<NamedRoutine> routinesOfThisCpu() {
+    std::vector<NamedRoutine> routines;
+    for (const FragmentPaths* paths : pathsOfThisCpu()) {
+        for (const FragmentPaths::FastPath& fast : paths->fastPaths()) {
+            routines.push_back({std::string(paths->name()) + " " + describe(fast.key), &fast.routine, false, fast.key});
+        }
+        routines.push_back({std::string(paths->name()) + " any key", &paths->anyKey(), true, {}});
+    }
+    return routines;
+}
+
+FragmentKey randomKey(std::mt19937& random) {
+    std::uniform_int_distribution<int> shading(0, 2), depthFunc(0, 7), coin(0, 1);
+    return makeFragmentKey(static_cast<Shading>(shading(random)), coin(random),
+                           static_cast<CompareFunc>(depthFunc(random)), coin(random));
+}
+
+// A plane whose values over the framebuffer lie around [low, high], now and then a special one.
+AttributePlane randomPlane(std::mt19937& random, float low, float high) {
+    std::uniform_real_distribution<float> value(low, high), unit(0.0f, 1.0f);
+    std::uniform_int_distribution<int> special(0, 40);
+    const float start = value(random), across = value(random) - start, down = value(random) - start;
+    AttributePlane plane{start, across * unit(random) / kWidth, down * unit(random) / kHeight};
+    switch (special(random)) {
+    case 0: return {std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f};
+    case 1: return {1.0f, 0.0f, 0.0f};
+    case 2: return {start, std::numeric_limits<float>::infinity(), 0.0f};
+    case 3: return {-0.0f, 0.0f, 0.0f};
+    default: return plane;
+    }
+}
+
+struct Target {
+    Framebuffer framebuffer{kWidth, kHeight};
+    FragmentCounts counts;
+
+    Target(const std::vector<std::uint32_t>& color, const std::vector<std::uint32_t>& depth) {
+        std::copy(color.begin(), color.end(), framebuffer.color().begin());
+        std::copy(depth.begin(), depth.end(), framebuffer.depth().begin());
+    }
+};
+
+testing::AssertionResult same(const Target& expected, const Target& actual) {
+    if (!std::equal(expected.framebuffer.color().begin(), expected.framebuffer.color().end(),
+                    actual.framebuffer.color().begin())) {
+        return testing::AssertionFailure() << "colors differ";
+    }
+    if (!std::equal(expected.framebuffer.depth().begin(), expected.framebuffer.depth().end(),
+                    actual.framebuffer.depth().begin())) {
+        return testing::AssertionFailure() << "depths differ";
+    }
+    if (expected.counts.fragments != actual.counts.fragments || expected.counts.passed != actual.counts.passed) {
+        return testing::AssertionFailure() << "counts differ";
+    }
+    return testing::AssertionSuccess();
+}
+
+
+std::vector<std::uint32_t> randomPixels(std::mt19937& random, std::uint32_t max) {
+    std::uniform_int_distribution<std::uint32_t> value(0, max);
+    std::vector<std::uint32_t> pixels(kWidth * kHeight);
+    for (auto& p : pixels) p = value(random);
+    return pixels;
+}
+
+WindowVertex randomVertex(std::mt19937& random, float spread) {
+    std::uniform_real_distribution<float> position(-spread, spread), unit(0.0f, 1.0f), w(0.2f, 4.0f);
+    WindowVertex v;
+    v.x = kWidth / 2.0f + position(random);
+    v.y = kHeight / 2.0f + position(random);
+    v.z = unit(random) * 1.2f - 0.1f;  // slightly outside [0, 1] to exercise the clamp
+    v.invW = 1.0f / w(random);
+    v.color = {unit(random) * 1.2f - 0.1f, unit(random), unit(random), unit(random)};
+    return v;
+}
+
+}  // namespace
+
+TEST(FragmentPaths, FastKeysFindTheirPathsAndOtherKeysTheRoutineForAnyKey) {
+    for (const FragmentPaths* paths : pathsOfThisCpu()) {
+        for (const FragmentPaths::FastPath& fast : paths->fastPaths()) {
+            EXPECT_EQ(&paths->routine(fast.key), &fast.routine) << paths->name();
+        }
+        const FragmentKey greater = makeFragmentKey(Shading::Perspective, true, CompareFunc::Greater, true);
+        EXPECT_EQ(&paths->routine(greater), &paths->anyKey()) << paths->name();
+    }
+    // Keys are normalized: without the depth test, the function and writes do not matter.
+    EXPECT_EQ(makeFragmentKey(Shading::Flat, false, CompareFunc::Less, true),
+              makeFragmentKey(Shading::Flat, false, CompareFunc::Greater, false));
+    // A primitive with 1 / w constant 1 takes the key without the division.
+    const FragmentChoice choice(scalarFragmentPaths(), makeFragmentKey(Shading::Perspective, false, {}, false));
+    EXPECT_EQ(choice.path({1.0f, 0.0f, 0.0f}).key.shading, Shading::Linear);
+    EXPECT_EQ(choice.path({1.0f, 0.0f, 1e-9f}).key.shading, Shading::Perspective);
+}
+
+TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
+    std::mt19937 random(11);
+    std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1), shortSpan(0, 20);
+    std::uniform_int_distribution<std::uint32_t> word;
+    int spans = 0;
+    for (const NamedRoutine& tested : routinesOfThisCpu()) {
+        for (int i = 0; i < 300; ++i) {
+            FragmentInputs inputs;
+            for (AttributePlane& c : inputs.color) c = randomPlane(random, -0.1f, 1.1f);
+            inputs.invW = randomPlane(random, 0.25f, 4.0f);
+            inputs.depth = randomPlane(random, -0.1f, 1.1f);
+            inputs.flatColor = word(random);
+            inputs.setPath({tested.anyKey ? randomKey(random) : tested.key, tested.routine});
+            FragmentInputs general = inputs;
+            general.routine = &generalFragmentRoutine();
+
+            const std::vector<std::uint32_t> color = randomPixels(random, 0xFFFFFFFF);
+            const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
+            Target expected(color, depth), actual(color, depth);
+            // Several spans of the same inputs, short and long, over one another.
+            for (int k = 0; k < 6; ++k) {
+                const int y = row(random);
+                int begin = column(random), end = column(random);
+                if (k % 2 == 0) end = std::min(kWidth - 1, begin + shortSpan(random));
+                if (begin > end) std::swap(begin, end);
+                general.shadeSpan(y, begin, end, expected.framebuffer, expected.counts);
+                inputs.shadeSpan(y, begin, end, actual.framebuffer, actual.counts);
+                ++spans;
+            }
+            ASSERT_TRUE(same(expected, actual)) << tested.name << " key " << describe(inputs.key) << " inputs " << i;
+        }
+    }
+    EXPECT_GT(spans, 10000);
+}
+
+TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
+    std::mt19937 random(5);
+    std::uniform_int_distribution<int> depthFunc(0, 7), coin(0, 1), fourth(0, 3);
+    std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1);
+    const std::vector<const FragmentPaths*> allPaths = pathsOfThisCpu();
+    int drawn = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const float spread = i % 3 == 0 ? 3.0f : (i % 3 == 1 ? 30.0f : 400.0f);
+        SetupTriangle setup{{randomVertex(random, spread), randomVertex(random, spread), randomVertex(random, spread)},
+                            {}, 0, {0.3f, 0.6f, 0.9f, 1.0f}};
+        // Every fourth triangle has w = 1 at every vertex, as orthographic scenes do: its path
+        // then skips the division by 1 / w.
+        if (i % 4 == 3) {
+            for (WindowVertex& v : setup.v) v.invW = 1.0f;
+        }
+        for (int k = 0; k < 3; ++k) setup.fixed[k] = snap(setup.v[k]);
+        setup.area = fixedArea(setup.fixed[0], setup.fixed[1], setup.fixed[2]);
+        if (setup.area == 0) continue;
+        DrawState state;
+        state.depthTest = coin(random);
+        state.depthFunc = static_cast<CompareFunc>(depthFunc(random));
+        state.depthWrite = coin(random);
+        state.shadeModel = coin(random) ? ShadeModel::Smooth : ShadeModel::Flat;
+        Methods methods;
+        if (fourth(random) == 0) methods.interpolation = Interpolation::ScreenLinear;
+        // Every other triangle is drawn within a random rectangle, as a tile draws its part.
+        PixelRect rect{0, kWidth - 1, 0, kHeight - 1};
+        if (i % 2) {
+            const int x0 = column(random), x1 = column(random), y0 = row(random), y1 = row(random);
+            rect = {std::min(x0, x1), std::max(x0, x1), std::min(y0, y1), std::max(y0, y1)};
+        }
+        const std::vector<std::uint32_t> color(kWidth * kHeight, 0);
+        const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
+        for (const FragmentPaths* paths : allPaths) {
+            RasterTriangle triangle;
+            const FragmentChoice choice(*paths, triangleFragmentKey(state, methods));
+            if (!prepareTriangle(setup, choice, RasterMethod::Exact, kWidth, kHeight, triangle)) break;
+            if (paths == allPaths.front()) ++drawn;
+            Target expected(color, depth);
+            rasterizeTriangleExact(triangle, rect, expected.framebuffer, expected.counts);
+            for (const FragmentRoutine* routine : {triangle.fragment.routine, &paths->anyKey()}) {
+                Target actual(color, depth);
+                rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, *routine);
+                ASSERT_TRUE(same(expected, actual)) << paths->name() << " key " << describe(triangle.fragment.key)
+                                                    << (routine == &paths->anyKey() ? " any key" : "") << " triangle " << i;
+            }
+        }
+    }
+    EXPECT_GT(drawn, 2000);
+}
