@@ -16,7 +16,8 @@ bool byName(const EntryPoint& a, const EntryPoint& b) { return std::strcmp(a.nam
 std::vector<EntryPoint> sortedTable() {
     std::vector<EntryPoint> table;
     for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
-                      bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints()}) {
+                      bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
+                      lightingEntryPoints()}) {
         table.insert(table.end(), area.begin(), area.end());
     }
     std::sort(table.begin(), table.end(), byName);

@@ -14,9 +14,7 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_ALPHA_TEST, GL_BLEND, GL_COLOR_MATERIAL, GL_DITHER, GL_FOG, GL_LIGHTING, GL_LIGHT0, GL_LIGHT1,
-    GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH, GL_LINE_STIPPLE,
-    GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE,
+    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_FOG, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE,
     GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
 };
 
@@ -31,6 +29,7 @@ void setCapability(GLenum cap, bool enabled) {
         flag = enabled;
         return;
     }
+    if (setLightingCapability(*s, cap, enabled)) return;
     if (!isInert(cap)) return setError(*s, GL_INVALID_ENUM);
     auto& list = s->otherEnabled;
     const auto found = std::find(list.begin(), list.end(), cap);
@@ -43,6 +42,7 @@ GLboolean isEnabled(GLenum cap) {
     if (!s) return GL_FALSE;
     if (cap == GL_CULL_FACE) return s->draw.cullEnabled;
     if (cap == GL_DEPTH_TEST) return s->draw.depthTest;
+    if (const std::optional<bool> lighting = lightingCapability(*s, cap)) return *lighting;
     if (const ClientArray* array = s->arrays.find(cap)) return array->enabled;
     if (!isInert(cap)) {
         setError(*s, GL_INVALID_ENUM);

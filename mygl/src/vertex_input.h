@@ -17,6 +17,10 @@ inline glrenderer::QuadSplit quadSplitOf(const Context::State& s, bool indexed =
 }
 void end();
 
+// The colour of a vertex at `object` lit with the current normal and colour, clamped as the
+// reference clamps vertex colours (lighting.cpp).
+glm::vec4 litColor(Context::State& s, const glm::vec4& object);
+
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
 // `size`: glVertex2, 3 or 4.
@@ -26,7 +30,7 @@ void end();
     s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
     glrenderer::Vertex& v = s->pipeline.addVertex();
     v.position = transform(s->modelviewProjection, object);
-    v.color = s->vertexColor;
+    v.color = s->lightingEnabled ? litColor(*s, object) : s->vertexColor;
     v.edgeFlag = s->edgeFlag;
     if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
         const Matrix& m = s->modelview.top().matrix();
