@@ -33,6 +33,8 @@ std::size_t lightValueCount(GLenum name) {
          : name == GL_SPOT_DIRECTION                                                                ? 3
                                                                                                     : 1;
 }
+std::size_t materialValueCount(GLenum name) { return name == GL_SHININESS ? 1 : name == GL_COLOR_INDEXES ? 3 : 4; }
+std::size_t lightModelValueCount(GLenum name) { return name == GL_LIGHT_MODEL_AMBIENT ? 4 : 1; }
 
 // The eye-space value of a position or direction given now (Mesa's TRANSFORM_POINT and
 // TRANSFORM_DIRECTION with the modelview's upper rows).
@@ -151,8 +153,7 @@ template <class T>
 void materialv(GLenum face, GLenum name, const T* p) {
     if (!p) return;
     std::array<GLfloat, 4> f{};
-    const std::size_t count = name == GL_SHININESS ? 1 : name == GL_COLOR_INDEXES ? 3 : 4;
-    for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t i = 0; i < materialValueCount(name); ++i) {
         f[i] = std::is_same_v<T, GLint> && name != GL_SHININESS && name != GL_COLOR_INDEXES
                    ? intColor(static_cast<GLint>(p[i]))
                    : static_cast<GLfloat>(p[i]);
@@ -182,7 +183,7 @@ template <class T>
 void lightModelv(GLenum name, const T* p) {
     if (!p) return;
     std::array<GLfloat, 4> f{};
-    for (std::size_t i = 0; i < (name == GL_LIGHT_MODEL_AMBIENT ? 4u : 1u); ++i) {
+    for (std::size_t i = 0; i < lightModelValueCount(name); ++i) {
         f[i] = std::is_same_v<T, GLint> && name == GL_LIGHT_MODEL_AMBIENT ? intColor(static_cast<GLint>(p[i]))
                                                                          : static_cast<GLfloat>(p[i]);
     }
@@ -265,25 +266,36 @@ GLint toInteger(bool color, float v) {
 }
 GLfloat asFloat(bool, float v) { return v; }
 
+// The values behind the pointer of glLight*v, glMaterial*v and glLightModel*v (what a display
+// list keeps).
+template <class T>
+std::size_t lightCount(GLenum, GLenum name, const T*) { return lightValueCount(name); }
+template <class T>
+std::size_t materialCount(GLenum, GLenum name, const T*) { return materialValueCount(name); }
+template <class T>
+std::size_t lightModelCount(GLenum name, const T*) { return lightModelValueCount(name); }
+
 const EntryPoint kEntryPoints[] = {
     {"glLightf", compiled<+[](GLenum l, GLenum name, GLfloat v) { lightv(l, name, std::array<GLfloat, 4>{v}.data()); }>()},
     {"glLighti", compiled<+[](GLenum l, GLenum name, GLint v) {
          lightv(l, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
      }>()},
-    {"glLightfv", compiled<+[](GLenum l, GLenum name, const GLfloat* v) { lightv(l, name, v); }, 4>()},
-    {"glLightiv", compiled<+[](GLenum l, GLenum name, const GLint* v) { lightv(l, name, v); }, 4>()},
+    {"glLightfv", compiled<+[](GLenum l, GLenum name, const GLfloat* v) { lightv(l, name, v); }, lightCount<GLfloat>>()},
+    {"glLightiv", compiled<+[](GLenum l, GLenum name, const GLint* v) { lightv(l, name, v); }, lightCount<GLint>>()},
     {"glMaterialf", compiled<+[](GLenum face, GLenum name, GLfloat v) { materialv(face, name, std::array<GLfloat, 4>{v}.data()); }>()},
     {"glMateriali", compiled<+[](GLenum face, GLenum name, GLint v) {
          materialv(face, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
      }>()},
-    {"glMaterialfv", compiled<+[](GLenum face, GLenum name, const GLfloat* v) { materialv(face, name, v); }, 4>()},
-    {"glMaterialiv", compiled<+[](GLenum face, GLenum name, const GLint* v) { materialv(face, name, v); }, 4>()},
+    {"glMaterialfv", compiled<+[](GLenum face, GLenum name, const GLfloat* v) { materialv(face, name, v); },
+                              materialCount<GLfloat>>()},
+    {"glMaterialiv", compiled<+[](GLenum face, GLenum name, const GLint* v) { materialv(face, name, v); },
+                              materialCount<GLint>>()},
     {"glLightModelf", compiled<+[](GLenum name, GLfloat v) { lightModelv(name, std::array<GLfloat, 4>{v}.data()); }>()},
     {"glLightModeli", compiled<+[](GLenum name, GLint v) {
          lightModelv(name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
      }>()},
-    {"glLightModelfv", compiled<+[](GLenum name, const GLfloat* v) { lightModelv(name, v); }, 4>()},
-    {"glLightModeliv", compiled<+[](GLenum name, const GLint* v) { lightModelv(name, v); }, 4>()},
+    {"glLightModelfv", compiled<+[](GLenum name, const GLfloat* v) { lightModelv(name, v); }, lightModelCount<GLfloat>>()},
+    {"glLightModeliv", compiled<+[](GLenum name, const GLint* v) { lightModelv(name, v); }, lightModelCount<GLint>>()},
     {"glColorMaterial", compiled<+[](GLenum face, GLenum mode) { colorMaterial(face, mode); }>()},
     {"glGetLightfv", entry(+[](GLenum l, GLenum name, GLfloat* out) { getLight(l, name, out, asFloat); })},
     {"glGetLightiv", entry(+[](GLenum l, GLenum name, GLint* out) { getLight(l, name, out, toInteger); })},
