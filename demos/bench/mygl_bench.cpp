@@ -26,7 +26,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears"};
+const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears", "bench-lit-torus"};
 
 struct Variant {
     std::string name;

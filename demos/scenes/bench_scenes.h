@@ -8,5 +8,6 @@ void drawBenchFill(int width, int height, int frame);   // 32 full-window quads,
 void drawBenchCubes(int width, int height, int frame);  // 1000 cubes with push/translate/rotate
 void drawBenchTiny(int width, int height, int frame);   // 100k tiny triangles
 void drawBenchGears(int width, int height, int frame);  // three gears: flat-shaded strips and quads
+void drawBenchLitTorus(int width, int height, int frame);  // 16k triangles lit by a spot and a directional light
 
 }  // namespace scenes
