@@ -1,11 +1,17 @@
 // Lighting in the reference's arithmetic. Mesa turns the fixed-function state into a vertex
 // program (main/ffvertex_prog.c) whose constants it computes on the CPU (program/prog_statevars.c,
 // main/light.c); llvmpipe runs the program in float, every MAD a product then a sum (not fused),
-// RSQ as 1 / sqrt(|x|), RCP as 1 / x. Each step below names the instruction it reproduces.
+// RSQ as 1 / sqrt(|x|), RCP as 1 / x, POW by gallivm's approximations. Each step below names
+// the instruction it reproduces.
 #include "glrenderer/lighting.h"
 
+#include "cpu_features.h"
+
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace glrenderer {
 namespace {
@@ -44,8 +50,58 @@ glm::vec3 transformNormal(const Matrix& m, const glm::vec3& n) {
 
 glm::vec3 xyz(const glm::vec4& v) { return {v.x, v.y, v.z}; }
 
-// POW for the specular and spot terms.
-float power(float base, float exponent) { return std::pow(base, exponent); }
+// llvmpipe's POW: exp2(log2(x) * y), each an approximation of its own (gallivm's
+// lp_build_log2_safe and lp_build_exp2: minimax polynomials evaluated as even and odd halves,
+// with LLVM's fmuladd, which is fused on CPUs with FMA and not on others).
+float multiplyAdd(float a, float b, float c) {
+    static const bool fused = cpuHasFma();
+    return fused ? std::fma(a, b, c) : a * b + c;
+}
+
+float polynomial(float x, const double* coefficients, int count) {
+    const float x2 = x * x;
+    float even = 0.0f, odd = 0.0f;
+    bool haveEven = false, haveOdd = false;
+    for (int i = count - 1; i >= 0; --i) {
+        const float c = static_cast<float>(coefficients[i]);
+        float& term = i % 2 == 0 ? even : odd;
+        bool& have = i % 2 == 0 ? haveEven : haveOdd;
+        term = have ? multiplyAdd(x2, term, c) : c;
+        have = true;
+    }
+    return haveOdd ? multiplyAdd(odd, x, even) : even;
+}
+
+float log2Approximation(float x) {
+    static constexpr double kCoefficients[] = {2.88539009343309178325, 0.961791550404184197881, 0.577440339438736392009,
+                                               0.403343858251329912514, 0.406718052498846252698};
+    if (x < 0.0f || std::isnan(x)) return std::numeric_limits<float>::quiet_NaN();
+    if (x == 0.0f) return -std::numeric_limits<float>::infinity();
+    if (std::isinf(x)) return x;
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
+    const float exponent = static_cast<float>(static_cast<int>((bits & 0x7f800000u) >> 23) - 127);
+    const float mantissa = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);
+    const float y = (mantissa - 1.0f) / (mantissa + 1.0f);
+    const float z = y * y;
+    return multiplyAdd(y, polynomial(z, kCoefficients, 5), exponent);
+}
+
+float exp2Approximation(float x) {
+    static constexpr double kCoefficients[] = {1.0, 0.693153073200168932794, 0.240153617044375388211,
+                                               0.0558263180532956664775, 0.00898934009049466391101,
+                                               0.00187757667519147912699};
+    if (std::isnan(x)) return x;
+    x = std::max(std::min(x, 128.0f), -126.99999f);
+    const float whole = std::floor(x);
+    const float fraction = x - whole;
+    const float scale = std::bit_cast<float>(static_cast<std::uint32_t>(static_cast<int>(whole) + 127) << 23);
+    return scale * polynomial(fraction, kCoefficients, 6);
+}
+
+float power(float base, float exponent) {
+    if (base == 0.0f) return 0.0f;
+    return exp2Approximation(log2Approximation(base) * exponent);
+}
 
 // LIT: (1, max(x, 0), x > 0 ? pow(max(y, 0), clamp(w, -128, 128)) : 0, 1), as NIR lowers it.
 glm::vec4 lit(float x, float y, float w) {
