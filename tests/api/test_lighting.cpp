@@ -314,3 +314,77 @@ TEST(Lighting, StateAndErrorsMatchTheReference) {
     ASSERT_EQ(answers.mygl.size(), answers.osmesa.size());
     for (std::size_t i = 0; i < answers.mygl.size(); ++i) EXPECT_EQ(answers.mygl[i], answers.osmesa[i]) << "answer " << i;
 }
+
+// Modelviews whose inverse the reference computes by its general methods: a shear (the
+// adjugate), a projective matrix (Gauss-Jordan), and a gluLookAt product it finds to be a
+// rotation (object-space lighting).
+TEST(Lighting, ModelviewsOfEveryKindMatchTheReference) {
+    const auto lit = [](const GLfloat* position) {
+        whiteLight(GL_LIGHT0, position);
+        material(20);
+    };
+    std::vector<Case> cases;
+    for (const GLfloat* position : {kDirectional, kPositional}) {
+        const std::string light = position == kDirectional ? "directional" : "positional";
+        cases.emplace_back("shear, " + light, [=] {
+            lit(position);
+            const GLfloat shear[16] = {1, 0.2f, 0, 0, 0.3f, 1, 0.1f, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+            glMultMatrixf(shear);
+        });
+        cases.emplace_back("projective, " + light, [=] {
+            lit(position);
+            const GLfloat projective[16] = {1, 0, 0, 0.02f, 0, 1, 0, 0.01f, 0, 0, 1, 0, 0, 0, 0, 1};
+            glMultMatrixf(projective);
+        });
+        cases.emplace_back("look-at, " + light, [=] {
+            lit(position);
+            gluLookAt(0.3, 0.2, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
+        });
+        cases.emplace_back("uniform scale, " + light, [=] {  // eye space, normals not unit length
+            lit(position);
+            glScalef(0.8f, 0.8f, 0.8f);
+        });
+    }
+    expectSameFrames(cases, [] { sphere(); });
+}
+
+// A lit scene from a display list (materials and lights compiled in it) and from vertex arrays
+// with a normal array.
+TEST(Lighting, ListsAndArraysMatchTheReference) {
+    static std::vector<GLfloat> vertices, normals;
+    if (vertices.empty()) {
+        for (int i = 0; i <= 16; ++i) {
+            const float a = 0.35f * static_cast<float>(i);
+            for (float y : {-1.0f, 1.0f}) {
+                normals.insert(normals.end(), {std::cos(a), 0.3f * y, std::sin(a)});
+                vertices.insert(vertices.end(), {1.2f * std::cos(a), y, 1.2f * std::sin(a)});
+            }
+        }
+    }
+    expectSameFrames(
+        {
+            {"display list", [] {
+                 glNewList(1, GL_COMPILE);
+                 whiteLight(GL_LIGHT1, kPositional);
+                 glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 40.0f);
+                 glLightf(GL_LIGHT1, GL_SPOT_EXPONENT, 3.0f);
+                 material(12);
+                 glEndList();
+                 glCallList(1);
+             }},
+            {"vertex arrays", [] {
+                 whiteLight(GL_LIGHT0, kPositional);
+                 material(25);
+                 glEnableClientState(GL_VERTEX_ARRAY);
+                 glEnableClientState(GL_NORMAL_ARRAY);
+                 glVertexPointer(3, GL_FLOAT, 0, vertices.data());
+                 glNormalPointer(GL_FLOAT, 0, normals.data());
+             }},
+        },
+        [] {
+            GLboolean arrays = GL_FALSE;
+            glGetBooleanv(GL_VERTEX_ARRAY, &arrays);
+            if (arrays) glDrawArrays(GL_QUAD_STRIP, 0, static_cast<GLsizei>(vertices.size() / 3));
+            else sphere();
+        });
+}
