@@ -73,7 +73,9 @@ std::uint8_t BatchSetup::transform(const Batch& batch) {
 void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats) {
     const std::uint8_t anyOutside = transform(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
-    const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
+    // Two-sided lighting takes every triangle through the reference's draw module (its twoside stage).
+    const DecompositionPath path =
+        anyOutside == 0 && !batch.state.twoSidedColors ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
     const Call call{batch, target, stats,
@@ -87,7 +89,6 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     const Batch& batch = call.batch;
     const auto& vertices = batch.vertices;
     ++call.stats.triangles;
-    const glm::vec4& flatColor = vertices[t.v[2]].color;
     if (batch.methods.culling != CullMethod::WindowArea && batch.state.cullEnabled) {
         const Facing facing = seedFacing(batch.methods.culling, vertices[t.v[0]], vertices[t.v[1]],
                                          vertices[t.v[2]], batch.state.frontFaceCCW);
@@ -98,7 +99,8 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     }
     const std::uint8_t outsideAny = outcodes_[t.v[0]] | outcodes_[t.v[1]] | outcodes_[t.v[2]];
     if (outsideAny == 0) {
-        setUpTriangle(call, windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]], flatColor);
+        setUpSidedTriangle(call, {windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]]},
+                           {&vertices[t.v[0]], &vertices[t.v[1]], &vertices[t.v[2]]}, vertices[t.v[2]]);
         return;
     }
     if (outcodes_[t.v[0]] & outcodes_[t.v[1]] & outcodes_[t.v[2]]) {
@@ -119,11 +121,29 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     };
     const WindowVertex first = window(0);
     WindowVertex previous = window(1);
+    const auto& clipped = polygon.vertices;
     for (int i = 2; i < polygon.count; ++i) {
         const WindowVertex current = window(i);
-        setUpTriangle(call, previous, current, first, flatColor);
+        const auto k = static_cast<std::size_t>(i);
+        setUpSidedTriangle(call, {previous, current, first}, {&clipped[k - 1], &clipped[k], &clipped[0]},
+                           vertices[t.v[2]]);
         previous = current;
     }
+}
+
+// With two-sided lighting a triangle facing back by the draw module's determinant (its twoside
+// stage, after clipping: zero area keeps the front colours) takes the back colours.
+void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
+                                    const std::array<const Vertex*, 3>& source, const Vertex& provoking) {
+    const DrawState& state = call.batch.state;
+    if (state.twoSidedColors) {
+        const float determinant = drawModuleDeterminant(window[0], window[1], window[2]);
+        if (determinant != 0.0f && drawModuleFacing(determinant, state.frontFaceCCW) == Facing::Back) {
+            for (std::size_t i = 0; i < 3; ++i) window[i].color = source[i]->backColor;
+            return setUpTriangle(call, window[0], window[1], window[2], provoking.backColor);
+        }
+    }
+    setUpTriangle(call, window[0], window[1], window[2], provoking.color);
 }
 
 void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1,

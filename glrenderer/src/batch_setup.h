@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -52,6 +53,8 @@ private:
         bool drawModuleCulls = false;
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
+    void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
+                            const std::array<const Vertex*, 3>& source, const Vertex& provoking);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);
 

@@ -20,6 +20,7 @@ Vertex clipCrossing(const Vertex& a, float distanceA, const Vertex& b, float dis
     Vertex v;
     v.position = from.position + t * (to.position - from.position);
     v.color = from.color + t * (to.color - from.color);
+    v.backColor = from.backColor + t * (to.backColor - from.backColor);
     return v;
 }
 

@@ -114,8 +114,8 @@ enum Property { kEmission, kAmbient, kDiffuse, kSpecular };
 }  // namespace
 
 VertexLighting::VertexLighting(const LightingState& state, const LightingModelview& modelview)
-    : modelview_(modelview.matrix), inverse_(modelview.inverse), front_(state.materials[0]),
-      follows_(state.colorMaterial[0]), modelAmbient_(state.modelAmbient), normalize_(state.normalize),
+    : modelview_(modelview.matrix), inverse_(modelview.inverse), materials_(state.materials),
+      follows_(state.colorMaterial), modelAmbient_(state.modelAmbient), normalize_(state.normalize),
       localViewer_(state.localViewer) {
     bool anyPositional = false;
     for (const LightSource& l : state.lights) anyPositional = anyPositional || (l.enabled && l.position.w != 0.0f);
@@ -131,7 +131,8 @@ VertexLighting::VertexLighting(const LightingState& state, const LightingModelvi
         if (f < 1e-12f) f = 1.0f;
         normalScale_ = 1.0f / std::sqrt(f);
     }
-    shininessIsZero_ = front_.shininess == 0.0f;
+    // One flag for both faces: the program has a specular term if either face may need it.
+    shininessIsZero_ = materials_[0].shininess == 0.0f && (!state.twoSide || materials_[1].shininess == 0.0f);
     const glm::vec3 eyeZ = eyeSpace_ ? glm::vec3(0, 0, 1) : transformNormal(modelview_, {0, 0, 1});
     for (const LightSource& source : state.lights) {
         if (!source.enabled) continue;
@@ -154,12 +155,14 @@ VertexLighting::VertexLighting(const LightingState& state, const LightingModelvi
     }
 }
 
-glm::vec4 VertexLighting::material(int property, const glm::vec4& color) const {
+glm::vec4 VertexLighting::material(int face, int property, const glm::vec4& color) const {
+    const ColorMaterial& f = follows_[static_cast<std::size_t>(face)];
+    const Material& m = materials_[static_cast<std::size_t>(face)];
     switch (property) {
-    case kEmission: return follows_.emission ? color : front_.emission;
-    case kAmbient: return follows_.ambient ? color : front_.ambient;
-    case kDiffuse: return follows_.diffuse ? color : front_.diffuse;
-    default: return follows_.specular ? color : front_.specular;
+    case kEmission: return f.emission ? color : m.emission;
+    case kAmbient: return f.ambient ? color : m.ambient;
+    case kDiffuse: return f.diffuse ? color : m.diffuse;
+    default: return f.specular ? color : m.specular;
     }
 }
 
@@ -175,11 +178,13 @@ glm::vec3 VertexLighting::transformedNormal(const glm::vec3& normal) const {
     return n;
 }
 
-glm::vec4 VertexLighting::light(const glm::vec4& object, const glm::vec3& normal, const glm::vec4& color) const {
-    const glm::vec3 n = transformedNormal(normal);
-    const glm::vec4 diffuseMaterial = material(kDiffuse, color);
+glm::vec4 VertexLighting::light(const glm::vec4& object, const glm::vec3& normal, const glm::vec4& color,
+                                int face) const {
+    // The back face negates the dot products with the normal, which is exactly reversing it.
+    const glm::vec3 n = face == 0 ? transformedNormal(normal) : -transformedNormal(normal);
+    const glm::vec4 diffuseMaterial = material(face, kDiffuse, color);
     // The scene colour: model ambient * material ambient + emission, alpha the diffuse alpha.
-    glm::vec4 sum = modelAmbient_ * material(kAmbient, color) + material(kEmission, color);
+    glm::vec4 sum = modelAmbient_ * material(face, kAmbient, color) + material(face, kEmission, color);
     sum.w = diffuseMaterial.w;
     const float alpha = sum.w;
     if (lightCount_ == 0) return sum;
@@ -190,9 +195,9 @@ glm::vec4 VertexLighting::light(const glm::vec4& object, const glm::vec3& normal
         eye = xyz(transformPoint(m, object));
         if (localViewer_) eyeDirection = normalizeInProgram(eye);
     }
-    const glm::vec4 ambientMaterial = material(kAmbient, color);
-    const glm::vec4 specularMaterial = material(kSpecular, color);
-    const float shininess = front_.shininess;
+    const glm::vec4 ambientMaterial = material(face, kAmbient, color);
+    const glm::vec4 specularMaterial = material(face, kSpecular, color);
+    const float shininess = materials_[static_cast<std::size_t>(face)].shininess;
     for (int i = 0; i < lightCount_; ++i) {
         const Light& l = lights_[static_cast<std::size_t>(i)];
         glm::vec3 toLight = l.position;

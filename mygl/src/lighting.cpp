@@ -168,7 +168,11 @@ void lightModel(GLenum name, const GLfloat* p) {
     switch (name) {
     case GL_LIGHT_MODEL_AMBIENT: l.modelAmbient = {p[0], p[1], p[2], p[3]}; break;
     case GL_LIGHT_MODEL_LOCAL_VIEWER: l.localViewer = p[0] != 0.0f; break;
-    case GL_LIGHT_MODEL_TWO_SIDE: l.twoSide = p[0] != 0.0f; break;
+    case GL_LIGHT_MODEL_TWO_SIDE:
+        endBatch(*s);
+        l.twoSide = p[0] != 0.0f;
+        s->draw.twoSidedColors = s->lightingEnabled && l.twoSide;
+        break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
         if (p[0] == static_cast<GLfloat>(GL_SINGLE_COLOR)) l.separateSpecular = false;
         else if (p[0] == static_cast<GLfloat>(GL_SEPARATE_SPECULAR_COLOR)) l.separateSpecular = true;
@@ -313,7 +317,11 @@ bool setLightingCapability(Context::State& s, GLenum cap, bool enabled) {
         field = enabled;
         return true;
     };
-    if (cap == GL_LIGHTING) return flag(s.lightingEnabled);
+    if (cap == GL_LIGHTING) {
+        flag(s.lightingEnabled);
+        s.draw.twoSidedColors = enabled && s.lighting.twoSide;
+        return true;
+    }
     if (cap == GL_NORMALIZE) return flag(s.lighting.normalize);
     if (cap == GL_RESCALE_NORMAL) return flag(s.lighting.rescaleNormal);
     if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + glrenderer::kMaxLights) return flag(s.lighting.lights[cap - GL_LIGHT0].enabled);
@@ -335,13 +343,14 @@ std::optional<bool> lightingCapability(const Context::State& s, GLenum cap) {
     return std::nullopt;
 }
 
-glm::vec4 litColor(Context::State& s, const glm::vec4& object) {
+void lightVertex(Context::State& s, const glm::vec4& object, glrenderer::Vertex& v) {
     if (s.lightingStale) {
         const StackMatrix& m = s.modelview.top();
         s.vertexLighting = glrenderer::VertexLighting(s.lighting, {m.matrix(), m.inverse(), m.lengthPreserving()});
         s.lightingStale = false;
     }
-    return saturate(s.vertexLighting.light(object, s.normal, s.color));
+    v.color = saturate(s.vertexLighting.light(object, s.normal, s.color));
+    if (s.draw.twoSidedColors) v.backColor = saturate(s.vertexLighting.light(object, s.normal, s.color, 1));
 }
 
 }  // namespace mygl

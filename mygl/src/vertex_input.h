@@ -17,9 +17,9 @@ inline glrenderer::QuadSplit quadSplitOf(const Context::State& s, bool indexed =
 }
 void end();
 
-// The colour of a vertex at `object` lit with the current normal and colour, clamped as the
-// reference clamps vertex colours (lighting.cpp).
-glm::vec4 litColor(Context::State& s, const glm::vec4& object);
+// The colour (and with two-sided lighting the back colour) of a vertex at `object` lit with the
+// current normal and colour, clamped as the reference clamps vertex colours (lighting.cpp).
+void lightVertex(Context::State& s, const glm::vec4& object, glrenderer::Vertex& v);
 
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
@@ -30,7 +30,8 @@ glm::vec4 litColor(Context::State& s, const glm::vec4& object);
     s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
     glrenderer::Vertex& v = s->pipeline.addVertex();
     v.position = transform(s->modelviewProjection, object);
-    v.color = s->lightingEnabled ? litColor(*s, object) : s->vertexColor;
+    if (s->lightingEnabled) lightVertex(*s, object, v);
+    else v.color = s->vertexColor;
     v.edgeFlag = s->edgeFlag;
     if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
         const Matrix& m = s->modelview.top().matrix();

@@ -388,3 +388,48 @@ TEST(Lighting, ListsAndArraysMatchTheReference) {
             else sphere();
         });
 }
+
+// Two-sided lighting: triangles facing back (by the window-space determinant, after clipping)
+// take the back material lit with the reversed normal.
+TEST(Lighting, TwoSidedLightingMatchesTheReference) {
+    const auto twoSided = [](float frontShininess, float backShininess) {
+        whiteLight(GL_LIGHT0, kPositional);
+        material(frontShininess);
+        const GLfloat backDiffuse[] = {0.2f, 0.4f, 0.9f, 1}, backSpecular[] = {0.5f, 0.9f, 0.5f, 1};
+        glMaterialfv(GL_BACK, GL_DIFFUSE, backDiffuse);
+        glMaterialfv(GL_BACK, GL_SPECULAR, backSpecular);
+        glMaterialf(GL_BACK, GL_SHININESS, backShininess);
+        glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    };
+    // A ring seen from above, its outside and inside both in view; a part crosses the near plane.
+    const auto ring = [] {
+        glRotatef(50.0f, 1.0f, 0.0f, 0.0f);
+        glBegin(GL_QUAD_STRIP);
+        for (int i = 0; i <= 24; ++i) {
+            const float a = 0.2618f * static_cast<float>(i);
+            glNormal3f(std::cos(a), 0.0f, std::sin(a));
+            glVertex3f(1.4f * std::cos(a), -0.6f, 1.4f * std::sin(a));
+            glVertex3f(1.4f * std::cos(a), 0.6f, 1.4f * std::sin(a));
+        }
+        glEnd();
+    };
+    expectSameFrames(
+        {
+            {"two-sided", [=] { twoSided(20, 40); }},
+            {"two-sided, front shininess 0", [=] { twoSided(0, 10); }},
+            {"two-sided, flat, clockwise front", [=] {
+                 twoSided(20, 5);
+                 glShadeModel(GL_FLAT);
+                 glFrontFace(GL_CW);
+             }},
+            {"two-sided, clipped by the near plane", [=] {
+                 twoSided(20, 40);
+                 glTranslatef(0.0f, 0.0f, 2.6f);
+             }},
+            {"two-sided, back faces culled", [=] {
+                 twoSided(20, 40);
+                 glEnable(GL_CULL_FACE);
+             }},
+        },
+        ring);
+}

@@ -41,6 +41,8 @@ struct DrawState {
     float depthNear = 0.0f, depthFar = 1.0f;
     float lineWidth = 1.0f;
     float pointSize = 1.0f;
+    // Two-sided lighting: filled triangles facing back take their vertices' back colours.
+    bool twoSidedColors = false;
     bool operator==(const DrawState&) const = default;
 };
 

@@ -64,8 +64,9 @@ public:
     VertexLighting(const LightingState& state, const LightingModelview& modelview);
 
     // The lit colour (not yet clamped) of a vertex at `object` with the object-space normal
-    // `normal`; `color`: the current colour, for the material colours that follow it.
-    glm::vec4 light(const glm::vec4& object, const glm::vec3& normal, const glm::vec4& color) const;
+    // `normal`; `color`: the current colour, for the material colours that follow it. `face`
+    // 1 lights the back face (back material, the normal reversed) for two-sided lighting.
+    glm::vec4 light(const glm::vec4& object, const glm::vec3& normal, const glm::vec4& color, int face = 0) const;
 
 private:
     struct Light {
@@ -78,14 +79,14 @@ private:
         bool positional, spot, attenuated;
     };
     glm::vec3 transformedNormal(const glm::vec3& normal) const;
-    glm::vec4 material(int property, const glm::vec4& color) const;
+    glm::vec4 material(int face, int property, const glm::vec4& color) const;
 
     std::array<Light, kMaxLights> lights_{};
     int lightCount_ = 0;
     std::array<float, 16> modelview_{};
     std::array<float, 16> inverse_{};
-    Material front_;
-    ColorMaterial follows_;
+    std::array<Material, 2> materials_;
+    std::array<ColorMaterial, 2> follows_;
     glm::vec4 modelAmbient_{0.0f};
     float normalScale_ = 1.0f;
     bool eyeSpace_ = false, normalize_ = false, rescale_ = false, localViewer_ = false;

@@ -5,11 +5,13 @@
 namespace glrenderer {
 
 // A vertex after the modelview-projection transform: clip-space position and its RGBA color
-// (floats, not yet clamped). The edge flag hides polygon edges in line and point mode. Eye-space
+// (floats, not yet clamped); with two-sided lighting also the colour lit for the back face,
+// which triangles facing back take. The edge flag hides polygon edges in line and point mode. Eye-space
 // position and normal are filled only when a culling method asks for them (Methods::needsEyeSpace).
 struct Vertex {
     glm::vec4 position;
     glm::vec4 color;
+    glm::vec4 backColor;  // only with DrawState::twoSidedColors
     bool edgeFlag = true;
     glm::vec3 eye{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
