@@ -73,9 +73,7 @@ std::uint8_t BatchSetup::transform(const Batch& batch) {
 void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats) {
     const std::uint8_t anyOutside = transform(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
-    // Two-sided lighting takes every triangle through the reference's draw module (its twoside stage).
-    const DecompositionPath path =
-        anyOutside == 0 && !batch.state.twoSidedColors ? DecompositionPath::Direct : DecompositionPath::DrawModule;
+    const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
     const Call call{batch, target, stats,
@@ -131,14 +129,15 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     }
 }
 
-// With two-sided lighting a triangle facing back by the draw module's determinant (its twoside
-// stage, after clipping: zero area keeps the front colours) takes the back colours.
+// With two-sided lighting a triangle that setup finds facing back (its fixed-point area, after
+// clipping) takes the back colours: the reference picks them in the fragment shader by
+// gl_FrontFacing, both colours interpolated as usual.
 void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
                                     const std::array<const Vertex*, 3>& source, const Vertex& provoking) {
     const DrawState& state = call.batch.state;
     if (state.twoSidedColors) {
-        const float determinant = drawModuleDeterminant(window[0], window[1], window[2]);
-        if (determinant != 0.0f && drawModuleFacing(determinant, state.frontFaceCCW) == Facing::Back) {
+        const std::int64_t area = fixedArea(snap(window[0]), snap(window[1]), snap(window[2]));
+        if (facingOf(area, state.frontFaceCCW) == Facing::Back) {
             for (std::size_t i = 0; i < 3; ++i) window[i].color = source[i]->backColor;
             return setUpTriangle(call, window[0], window[1], window[2], provoking.backColor);
         }

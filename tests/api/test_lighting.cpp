@@ -433,3 +433,41 @@ TEST(Lighting, TwoSidedLightingMatchesTheReference) {
         },
         ring);
 }
+
+// Lit quads (a cube with a normal per face, two faces open to show the inside), split as the
+// reference splits them on each path: smooth, flat, and two-sided (the draw module's split).
+TEST(Lighting, LitQuadsAreSplitAsTheReferenceSplitsThem) {
+    const auto cube = [] {
+        static const GLfloat corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                              {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+        static const int faces[4][4] = {{0, 3, 2, 1}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}};
+        static const GLfloat normals[4][3] = {{0, 0, -1}, {0, -1, 0}, {0, 1, 0}, {1, 0, 0}};
+        glRotatef(35.0f, 1.0f, 0.2f, 0.0f);
+        glBegin(GL_QUADS);
+        for (int f = 0; f < 4; ++f) {
+            for (int v : faces[f]) {
+                glNormal3f(normals[f][0] + 0.3f * corners[v][0], normals[f][1] + 0.3f * corners[v][1],
+                           normals[f][2] + 0.3f * corners[v][2]);
+                glVertex3fv(corners[v]);
+            }
+        }
+        glEnd();
+    };
+    const auto lit = [] {
+        whiteLight(GL_LIGHT0, kPositional);
+        material(30);
+        glEnable(GL_NORMALIZE);
+    };
+    expectSameFrames(
+        {
+            {"smooth", lit},
+            {"flat", [=] { lit(); glShadeModel(GL_FLAT); }},
+            {"two-sided, smooth", [=] { lit(); glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE); }},
+            {"two-sided, flat", [=] {
+                 lit();
+                 glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+                 glShadeModel(GL_FLAT);
+             }},
+        },
+        cube);
+}
