@@ -1,7 +1,7 @@
 /* Picking with gluPickMatrix and the selection buffer: a click redraws the scene in GL_SELECT
  * mode through a 5 x 5 pixel pick matrix, each object named with glLoadName; the nearest hit is
  * highlighted. Headless, a click on the third sphere is simulated.
- * Needs glSelectBuffer, glRenderMode, glInitNames, glPushName and glLoadName. */
+ * Uses glSelectBuffer, glRenderMode, glInitNames, glPushName and glLoadName. */
 #include <mygl/glut.h>
 #include <mygl/glu.h>
 

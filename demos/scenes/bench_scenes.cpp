@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "scene.h"
 
@@ -160,7 +161,11 @@ void drawBenchTiny(int width, int height, int) {
     glEnd();
 }
 
-void drawBenchGears(int width, int height, int frame) {
+namespace {
+
+// The gears of glxgears' layout, drawn at once or from display lists compiled on the first frame
+// of a context.
+void gears(int width, int height, int frame, bool fromLists) {
     beginFrame(width, height, true, true);
     glShadeModel(GL_FLAT);
     perspectiveView(width, height, 30.0f);
@@ -173,14 +178,71 @@ void drawBenchGears(int width, int height, int frame) {
     } gears[3] = {{-3.0f, -2.0f, angle, {0.8f, 0.1f, 0.0f}, 1.0f, 4.0f, 1.0f, 20},
                   {3.1f, -2.0f, -2.0f * angle - 9.0f, {0.0f, 0.8f, 0.2f}, 0.5f, 2.0f, 2.0f, 10},
                   {-3.1f, 4.2f, -2.0f * angle - 25.0f, {0.2f, 0.2f, 1.0f}, 1.3f, 2.0f, 0.5f, 10}};
-    for (const auto& g : gears) {
-        glPushMatrix();
-        glTranslatef(g.x, g.y, 0.0f);
-        glRotatef(g.rotation, 0.0f, 0.0f, 1.0f);
+    constexpr GLuint kFirstList = 1;
+    const auto draw = [](const auto& g) {
         glColor3fv(g.color);
         gear(g.inner, g.outer, g.width, g.teeth, 0.7f);
+    };
+    if (fromLists && !glIsList(kFirstList)) {
+        for (GLuint i = 0; i < 3; ++i) {
+            glNewList(kFirstList + i, GL_COMPILE);
+            draw(gears[i]);
+            glEndList();
+        }
+    }
+    for (GLuint i = 0; i < 3; ++i) {
+        glPushMatrix();
+        glTranslatef(gears[i].x, gears[i].y, 0.0f);
+        glRotatef(gears[i].rotation, 0.0f, 0.0f, 1.0f);
+        if (fromLists) glCallList(kFirstList + i);
+        else draw(gears[i]);
         glPopMatrix();
     }
+}
+
+// A wavy terrain of 224 x 224 quads (100352 triangles), a colour per vertex by height.
+struct Terrain {
+    static constexpr int kQuads = 224;
+    std::vector<GLfloat> positions, colors;
+    std::vector<GLuint> indices;
+    Terrain() {
+        constexpr int n = kQuads + 1;
+        for (int j = 0; j < n; ++j) {
+            for (int i = 0; i < n; ++i) {
+                const float x = static_cast<float>(i) / kQuads * 2.0f - 1.0f, y = static_cast<float>(j) / kQuads * 2.0f - 1.0f;
+                const float h = 0.12f * std::sin(7.0f * x) * std::cos(5.0f * y) + 0.05f * std::sin(23.0f * x * y);
+                positions.insert(positions.end(), {x, y, h});
+                colors.insert(colors.end(), {0.3f + 2.0f * h, 0.6f - h, 0.4f + 3.0f * h});
+            }
+        }
+        for (int j = 0; j < kQuads; ++j) {
+            for (int i = 0; i < kQuads; ++i) {
+                const GLuint v = static_cast<GLuint>(j * n + i);
+                indices.insert(indices.end(), {v, v + 1, v + n + 1, v, v + n + 1, v + n});
+            }
+        }
+    }
+};
+
+}  // namespace
+
+void drawBenchGears(int width, int height, int frame) { gears(width, height, frame, false); }
+
+void drawBenchGearsLists(int width, int height, int frame) { gears(width, height, frame, true); }
+
+void drawBenchMesh(int width, int height, int frame) {
+    static const Terrain terrain;
+    beginFrame(width, height, true, true);
+    perspectiveView(width, height, 2.6f);
+    glRotatef(-55.0f, 1.0f, 0.0f, 0.0f);
+    glRotatef(static_cast<float>(frame) * 3.0f, 0.0f, 0.0f, 1.0f);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, terrain.positions.data());
+    glColorPointer(3, GL_FLOAT, 0, terrain.colors.data());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(terrain.indices.size()), GL_UNSIGNED_INT, terrain.indices.data());
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
 }
 
 }  // namespace scenes

@@ -33,6 +33,8 @@ std::span<const Scene> allScenes() {
         {"bench-cubes", "benchmark: 1000 cubes drawn with push/translate/rotate", drawBenchCubes},
         {"bench-tiny", "benchmark: 100k tiny triangles", drawBenchTiny},
         {"bench-gears", "benchmark: three flat-shaded gears", drawBenchGears},
+        {"bench-gears-lists", "benchmark: the three gears from display lists", drawBenchGearsLists},
+        {"bench-mesh", "benchmark: a 100k-triangle terrain through glDrawElements", drawBenchMesh},
         {"bench-lit-torus", "benchmark: a 16k-triangle torus lit by a spot and a directional light, specular",
          drawBenchLitTorus},
     };

@@ -7,6 +7,7 @@
 #include "glrenderer/methods.h"
 #include "glrenderer/pipeline.h"
 #include "glrenderer/stats.h"
+#include "clip_vertex.h"
 #include "glrenderer/vertex.h"
 #include "raster_triangle.h"
 
@@ -16,15 +17,21 @@ namespace glrenderer {
 // state, merged, with the methods in force when they were submitted.
 struct BatchHeader {
     DrawState state;
+    VertexTransform transform;
     Methods methods;
     PrimitiveMode mode = PrimitiveMode::Points;
     QuadSplit quadSplit = QuadSplit::ByPath;
     bool colorsPerVertex = false;  // glColor was called inside its glBegin/glEnd blocks
 };
 
-// One draw with its vertices.
-struct Batch : BatchHeader {
+// One draw with its vertices as the program gave them.
+struct SubmittedBatch : BatchHeader {
     std::span<const Vertex> vertices;
+};
+
+// One draw after the vertex stage (VertexStage::toClipSpace).
+struct Batch : BatchHeader {
+    std::span<const ClipVertex> vertices;
 };
 
 // A batch's place in its chunk.
@@ -58,8 +65,8 @@ struct BatchChunk {
     // The entry's batch as the reference draws it. Without a color per vertex the color is a
     // constant of the draw, not an interpolation of equal values (which perspective would blur
     // by one unit here and there): flat.
-    Batch batch(const BatchEntry& entry) const {
-        Batch batch{entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
+    SubmittedBatch batch(const BatchEntry& entry) const {
+        SubmittedBatch batch{entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
         if (!batch.colorsPerVertex) batch.state.shadeModel = ShadeModel::Flat;
         return batch;
     }

@@ -11,11 +11,15 @@ BatchDrawer::BatchDrawer(Framebuffer& framebuffer)
 
 void BatchDrawer::flush() { tiles_.flush(stats_, paintersSort_); }
 
-void BatchDrawer::draw(const Batch& batch) {
-    paintersSort_ = batch.methods.hiddenSurface == HiddenSurface::PaintersSort;
-    if (BatchSetup::handles(batch)) {
-        setup_.setUp(batch, tiles_, stats_);
-    } else if (isTriangleMode(batch.mode)) {
+void BatchDrawer::draw(const SubmittedBatch& submitted) {
+    if (submitted.state.selection) return select(submitted);
+    paintersSort_ = submitted.methods.hiddenSurface == HiddenSurface::PaintersSort;
+    if (BatchSetup::handles(submitted)) {
+        setup_.setUp(submitted, tiles_, stats_);
+        return;
+    }
+    const Batch batch = setup_.toClipSpace(submitted);
+    if (isTriangleMode(batch.mode)) {
         drawUnfilled(batch);
     } else {
         flush();  // points and lines are drawn at once: queued triangles first
@@ -32,6 +36,14 @@ void BatchDrawer::draw(const BatchChunk& chunk) {
     tiles_.queue(chunk.setUpTriangles);
     stats_ = stats_ + chunk.setupStats;
     paintersSort_ = chunk.batches.back().methods.hiddenSurface == HiddenSurface::PaintersSort;
+}
+
+// The reference's selection runs its draw module's clip and cull stages and records the window
+// depth of what comes out; polygons count as filled whatever their polygon mode.
+void BatchDrawer::select(const SubmittedBatch& submitted) {
+    if (isTriangleMode(submitted.mode)) return setup_.select(submitted, hits_, stats_);
+    selectPointsAndLines(submitted.mode, setup_.toClipSpace(submitted).vertices, submitted.state, framebuffer_.height(),
+                         hits_);
 }
 
 void BatchDrawer::drawUnfilled(const Batch& batch) {

@@ -1,10 +1,12 @@
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "batch.h"
 #include "batch_setup.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
 #include "tile_rasterizer.h"
 
@@ -21,7 +23,9 @@ public:
     const Stats& stats() const { return stats_; }
     void resetStats() { stats_ = {}; }
 
-    void draw(const Batch& batch);
+    void draw(const SubmittedBatch& batch);
+    // What GL_SELECT batches hit since the last call.
+    HitRange takeHits() { return std::exchange(hits_, {}); }
     // Every batch of the chunk, in order; triangles its poster has set up already are only
     // queued.
     void draw(const BatchChunk& chunk);
@@ -53,6 +57,7 @@ private:
     static constexpr std::size_t kEarlyTriangles = 2048;
 
     void drawUnfilled(const Batch& batch);
+    void select(const SubmittedBatch& batch);
 
     Framebuffer& framebuffer_;
     // Written for every triangle on the batch thread: a line of its own, not shared with
@@ -61,6 +66,7 @@ private:
     TileRasterizer tiles_;
     BatchSetup setup_;
     bool paintersSort_ = false;  // of the last batch drawn: how its tiles order triangles
+    HitRange hits_;
 };
 
 }  // namespace glrenderer

@@ -70,17 +70,29 @@ std::uint8_t BatchSetup::transform(const Batch& batch) {
     return transformVertices(batch.vertices, viewport, outcodes_.data(), windowVertices_.data());
 }
 
-void BatchSetup::setUp(const Batch& batch, TriangleTarget& target, Stats& stats) {
+void BatchSetup::setUp(const SubmittedBatch& submitted, TriangleTarget& target, Stats& stats) {
+    const Batch batch = toClipSpace(submitted);
     const std::uint8_t anyOutside = transform(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const Call call{batch, target, stats,
+    const Call call{batch, &target, stats,
                     path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
                         batch.methods.culling == CullMethod::WindowArea};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
                        [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
+}
+
+void BatchSetup::select(const SubmittedBatch& submitted, HitRange& hits, Stats& stats) {
+    const Batch batch = toClipSpace(submitted);
+    transform(batch);
+    const ViewportTransform viewport(batch.state, framebuffer_.height());
+    const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
+                           batch.quadSplit == QuadSplit::V1V3;
+    const Call call{batch, nullptr, stats, batch.state.cullEnabled, &hits};
+    decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), DecompositionPath::DrawModule,
+                       v1v3Quads, [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
 
 void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const ViewportTransform& viewport) {
@@ -133,7 +145,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
 // clipping) takes the back colours: the reference picks them in the fragment shader by
 // gl_FrontFacing, both colours interpolated as usual.
 void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
-                                    const std::array<const Vertex*, 3>& source, const Vertex& provoking) {
+                                    const std::array<const ClipVertex*, 3>& source, const ClipVertex& provoking) {
     const DrawState& state = call.batch.state;
     if (state.twoSidedColors) {
         const std::int64_t area = fixedArea(snap(window[0]), snap(window[1]), snap(window[2]));
@@ -148,7 +160,7 @@ void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3
 void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
-    setUpTriangle(Call{batch, target, stats}, v0, v1, v2, flatColor);
+    setUpTriangle(Call{batch, &target, stats}, v0, v1, v2, flatColor);
 }
 
 // Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.
@@ -161,11 +173,18 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     if (call.drawModuleCulls) {
-        const Facing facing = drawModuleFacing(drawModuleDeterminant(v0, v1, v2), state.frontFaceCCW);
+        const float determinant = drawModuleDeterminant(v0, v1, v2);
+        const Facing facing = drawModuleFacing(determinant, state.frontFaceCCW);
         if (isCulled(state, facing)) {
             ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
             return;
         }
+        // Selection's cull stage drops a triangle of no area too (measured with OSMesa).
+        if (call.hits && determinant == 0.0f) return;
+    }
+    if (call.hits) {
+        call.hits->add(v0.z), call.hits->add(v1.z), call.hits->add(v2.z);
+        return;
     }
     SetupTriangle triangle{{v0, v1, v2}, {snap(v0), snap(v1), snap(v2)}, 0, flatColor};
     triangle.area = fixedArea(triangle.fixed[0], triangle.fixed[1], triangle.fixed[2]);
@@ -180,8 +199,8 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     ++call.stats.rasterized;
-    if (prepareTriangle(triangle, state, methods, framebuffer_.width(), framebuffer_.height(), call.target.slot())) {
-        call.target.keep();
+    if (prepareTriangle(triangle, state, methods, framebuffer_.width(), framebuffer_.height(), call.target->slot())) {
+        call.target->keep();
     }
 }
 

@@ -6,22 +6,25 @@
 
 #include "batch.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
 #include "triangle_arena.h"
+#include "vertex_stage.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
 
 struct TriangleIndices;
 
-// Turns the triangles of a batch into RasterTriangles: window transform, decomposition,
-// clipping, culling and setup. It touches no pixels, so it runs on whichever thread has time;
+// Turns the triangles of a batch into RasterTriangles: vertex stage, window transform,
+// decomposition, clipping, culling and setup. It touches no pixels, so it runs on whichever thread has time;
 // the triangles go to a target, and what it counts to a Stats, both given per batch.
 class BatchSetup {
 public:
     // Its scratch arrays are sized for `batchVertices`, so that a batch of up to that many
     // allocates nothing, however rarely this instance is used.
-    BatchSetup(const Framebuffer& framebuffer, std::size_t batchVertices) : framebuffer_(framebuffer) {
+    BatchSetup(const Framebuffer& framebuffer, std::size_t batchVertices)
+        : framebuffer_(framebuffer), vertexStage_(batchVertices) {
         outcodes_.reserve(batchVertices);
         windowVertices_.reserve(batchVertices);
     }
@@ -29,11 +32,16 @@ public:
     // Whether setUp() takes the batch: filled triangles (the unfilled stage draws lines at once).
     static bool handles(const BatchHeader& batch);
     // The whole batch.
-    void setUp(const Batch& batch, TriangleTarget& target, Stats& stats);
+    void setUp(const SubmittedBatch& batch, TriangleTarget& target, Stats& stats);
+    // GL_SELECT: the batch's triangles that survive clipping and culling add their window depths
+    // to `hits` instead of being set up.
+    void select(const SubmittedBatch& batch, HitRange& hits, Stats& stats);
     // Every batch of the chunk, into `writer`'s slots listed in the chunk and the chunk's
     // counts, if it handles them all; returns whether it did.
     bool setUp(BatchChunk& chunk, ArenaWriter& writer);
 
+    // The batch in clip space, for the stages that draw at once (kept until the next batch).
+    Batch toClipSpace(const SubmittedBatch& batch) { return vertexStage_.toClipSpace(batch); }
     // The parts for the unfilled stage, which decomposes and clips the batch itself: window
     // positions and outcodes of its vertices (kept until the next batch), and the setup of one
     // triangle already clipped.
@@ -46,19 +54,21 @@ public:
 private:
     struct Call {
         const Batch& batch;
-        TriangleTarget& target;
+        TriangleTarget* target;  // null in GL_SELECT
         Stats& stats;
         // The batch goes through the reference's draw module with culling on: its cull stage
         // decides first, by drawModuleFacing.
         bool drawModuleCulls = false;
+        HitRange* hits = nullptr;  // GL_SELECT
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
-                            const std::array<const Vertex*, 3>& source, const Vertex& provoking);
+                            const std::array<const ClipVertex*, 3>& source, const ClipVertex& provoking);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);
 
     const Framebuffer& framebuffer_;  // for its size only
+    VertexStage vertexStage_;
     // Per batch vertex: which clip planes it is outside of, and its window position.
     std::vector<std::uint8_t> outcodes_;
     std::vector<WindowVertex> windowVertices_;

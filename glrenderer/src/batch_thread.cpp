@@ -1,5 +1,7 @@
 #include "batch_thread.h"
 
+#include "denormals_are_zero.h"
+
 namespace glrenderer {
 
 BatchThread::BatchThread(BatchDrawer& drawer, const Framebuffer& framebuffer,
@@ -89,6 +91,7 @@ void BatchThread::drawPosted(std::unique_lock<std::mutex>& lock, bool tilesWhenI
 }
 
 void BatchThread::run() {
+    const DenormalsAreZero denormals;
     std::unique_lock lock(mutex_);
     for (;;) {
         wake_.wait(lock, [this] { return stopping_ || (!posted_.empty() && !drawing_); });

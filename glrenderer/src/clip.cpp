@@ -11,13 +11,13 @@ bool isFinite(const glm::vec4& p) {
 
 }  // namespace
 
-Vertex clipCrossing(const Vertex& a, float distanceA, const Vertex& b, float distanceB) {
+ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& b, float distanceB) {
     const bool fromA = std::fabs(distanceA) < std::fabs(distanceB) ||
                        (std::fabs(distanceA) == std::fabs(distanceB) && distanceA >= 0.0f);
-    const Vertex& from = fromA ? a : b;
-    const Vertex& to = fromA ? b : a;
+    const ClipVertex& from = fromA ? a : b;
+    const ClipVertex& to = fromA ? b : a;
     const float t = fromA ? distanceA / (distanceA - distanceB) : distanceB / (distanceB - distanceA);
-    Vertex v;
+    ClipVertex v;
     v.position = from.position + t * (to.position - from.position);
     v.color = from.color + t * (to.color - from.color);
     v.backColor = from.backColor + t * (to.backColor - from.backColor);
@@ -33,7 +33,7 @@ std::uint8_t clipOutcode(const glm::vec4& p) {
     return code;
 }
 
-ClippedPolygon clipTriangle(const Vertex& v0, const Vertex& v1, const Vertex& v2,
+ClippedPolygon clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
                             std::uint8_t outcodeUnion) {
     ClippedPolygon polygons[2];
     polygons[0].vertices[0] = v0;
@@ -51,8 +51,8 @@ ClippedPolygon clipTriangle(const Vertex& v0, const Vertex& v1, const Vertex& v2
         // Walk the edges (p[i-1], p[i]) for i = 1..n with p[n] = p[0], so that the output
         // starts where the input did: the fan's first vertex depends on it.
         for (int i = 1; i <= in.count; ++i) {
-            const Vertex& previous = in.vertices[static_cast<std::size_t>(i - 1)];
-            const Vertex& vertex = in.vertices[static_cast<std::size_t>(i % in.count)];
+            const ClipVertex& previous = in.vertices[static_cast<std::size_t>(i - 1)];
+            const ClipVertex& vertex = in.vertices[static_cast<std::size_t>(i % in.count)];
             if (!isFinite(vertex.position)) return ClippedPolygon{};
             const float previousDistance = clipPlaneDistance(previous.position, plane);
             const float distance = clipPlaneDistance(vertex.position, plane);

@@ -4,7 +4,7 @@
 
 #include <glm/vec4.hpp>
 
-#include "glrenderer/vertex.h"
+#include "clip_vertex.h"
 
 namespace glrenderer {
 
@@ -29,12 +29,12 @@ std::uint8_t clipOutcode(const glm::vec4& position);
 // Where the edge a-b crosses a plane, given both ends' distances to it (of opposite signs):
 // interpolated in clip space from the end nearer the plane (the inside one on a tie), as the
 // reference does.
-Vertex clipCrossing(const Vertex& a, float distanceA, const Vertex& b, float distanceB);
+ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& b, float distanceB);
 // A triangle clipped by six planes gains at most one vertex per plane.
 inline constexpr int kMaxClippedVertices = 3 + kClipPlaneCount;
 
 struct ClippedPolygon {
-    std::array<Vertex, kMaxClippedVertices> vertices;
+    std::array<ClipVertex, kMaxClippedVertices> vertices;
     // Which input vertex (0, 1, 2) each one is, or kNewVertex for one made on a clip plane: the
     // reference keeps the input vertices' window positions from its vertex stage.
     std::array<int, kMaxClippedVertices> source;
@@ -45,7 +45,7 @@ inline constexpr int kNewVertex = -1;
 // Clips triangle (v0, v1, v2) in clip space against the view volume (Sutherland-Hodgman, plane
 // by plane in the reference's order). The polygon starts at v0 and is drawn as the fan
 // (p[i-1], p[i], p[0]), as the reference emits it. Fewer than three vertices: nothing is left.
-ClippedPolygon clipTriangle(const Vertex& v0, const Vertex& v1, const Vertex& v2,
+ClippedPolygon clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
                             std::uint8_t outcodeUnion);
 
 }  // namespace glrenderer

@@ -9,8 +9,8 @@ namespace glrenderer {
 namespace {
 
 // `from` moved by fraction t towards `to`.
-Vertex moveTowards(const Vertex& from, const Vertex& to, float t) {
-    Vertex v = from;
+ClipVertex moveTowards(const ClipVertex& from, const ClipVertex& to, float t) {
+    ClipVertex v = from;
     v.position = from.position + t * (to.position - from.position);
     v.color = from.color + t * (to.color - from.color);
     return v;
@@ -18,7 +18,7 @@ Vertex moveTowards(const Vertex& from, const Vertex& to, float t) {
 
 }  // namespace
 
-bool clipLine(Vertex& a, Vertex& b, std::uint8_t outcodeA, std::uint8_t outcodeB) {
+bool clipLine(ClipVertex& a, ClipVertex& b, std::uint8_t outcodeA, std::uint8_t outcodeB) {
     const std::uint8_t planes = outcodeA | outcodeB;
     if (planes == 0) return true;
     if (outcodeA & outcodeB) return false;
@@ -32,7 +32,7 @@ bool clipLine(Vertex& a, Vertex& b, std::uint8_t outcodeA, std::uint8_t outcodeB
         if (da < 0.0f) tA = std::max(tA, da / (da - db));
         if (tA + tB >= 1.0f) return false;
     }
-    const Vertex originalA = a;
+    const ClipVertex originalA = a;
     if (outcodeA) a = moveTowards(originalA, b, tA);
     if (outcodeB) b = moveTowards(b, originalA, tB);
     return true;

@@ -1,7 +1,7 @@
 #pragma once
 #include <cstdint>
 
-#include "glrenderer/vertex.h"
+#include "clip_vertex.h"
 
 namespace glrenderer {
 
@@ -10,6 +10,6 @@ namespace glrenderer {
 // and color interpolated in clip space from that end. Returns false when nothing is left (both
 // ends outside one plane, the fractions meeting, or a non-finite distance). `outcodeA`/`B` are
 // clipOutcode() of the ends.
-bool clipLine(Vertex& a, Vertex& b, std::uint8_t outcodeA, std::uint8_t outcodeB);
+bool clipLine(ClipVertex& a, ClipVertex& b, std::uint8_t outcodeA, std::uint8_t outcodeB);
 
 }  // namespace glrenderer

@@ -4,6 +4,7 @@
 #include "batch_drawer.h"
 #include "batch_thread.h"
 #include "decompose.h"
+#include "denormals_are_zero.h"
 #include "glrenderer/immediate_buffer.h"
 #include "thread_count.h"
 
@@ -100,8 +101,9 @@ std::size_t Pipeline::wrapOpenPrimitive() {
     const PrimitiveMode mode = batch_->mode;
     const std::size_t count = open_.size();
     const WrapSplit split = splitAtWrap(mode, count, loopContinued_);
-    std::array<Vertex, 3> carried;
-    for (std::size_t i = 0; i < split.carriedCount; ++i) carried[i] = open_[split.carried[i]];
+    std::array<Vertex, std::tuple_size_v<decltype(split.carried)>> carried;
+    const std::size_t carriedCount = std::min(split.carriedCount, carried.size());  // (it is never more)
+    for (std::size_t i = 0; i < carriedCount; ++i) carried[i] = open_[split.carried[i]];
     open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(split.drawnFirst));
     open_.resize(split.drawnCount);
     if (mode == PrimitiveMode::LineLoop) batch_->mode = PrimitiveMode::LineStrip;
@@ -110,8 +112,8 @@ std::size_t Pipeline::wrapOpenPrimitive() {
     batch_->mode = mode;
     // (A part that carries all its vertices over starts the primitive again as it was.)
     if (mode == PrimitiveMode::LineLoop && split.carriedCount < count) loopContinued_ = true;
-    open_.assign(carried.begin(), carried.begin() + static_cast<std::ptrdiff_t>(split.carriedCount));
-    return split.carriedCount;
+    open_.assign(carried.begin(), carried.begin() + static_cast<std::ptrdiff_t>(carriedCount));
+    return carriedCount;
 }
 
 void Pipeline::wrapBuffer() { buffer_.wrap(wrapOpenPrimitive()); }
@@ -172,6 +174,12 @@ void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<cons
     endPrimitive();
 }
 
+void Pipeline::setTransform(const VertexTransform& transform) {
+    if (transform == batch_->transform) return;
+    closeBatch();  // (keeps the header: the batches after it take the new matrices)
+    batch_->transform = transform;
+}
+
 void Pipeline::endBatch() {
     buffer_.flushAndReset();
     closeBatch();
@@ -188,6 +196,7 @@ void Pipeline::closeBatch() {
 
 void Pipeline::handOverChunk() {
     if (chunk_->batches.empty()) return;
+    const DenormalsAreZero denormals;
     if (thread_) {
         chunk_ = thread_->post(std::move(chunk_));
     } else {
@@ -198,6 +207,7 @@ void Pipeline::handOverChunk() {
 }
 
 void Pipeline::drawSubmitted() {
+    const DenormalsAreZero denormals;
     closeBatch();
     handOverChunk();
     if (thread_) thread_->wait();
@@ -210,7 +220,14 @@ void Pipeline::drawSubmitted() {
 void Pipeline::finish() {
     buffer_.flushAndReset();
     drawSubmitted();
+    const DenormalsAreZero denormals;
     drawer_->flush();
+}
+
+HitRange Pipeline::takeHits() {
+    buffer_.flushAndReset();
+    drawSubmitted();
+    return drawer_->takeHits();
 }
 
 Stats Pipeline::stats() const { return submitted_ + drawer_->stats(); }

@@ -9,48 +9,59 @@
 namespace glrenderer {
 namespace {
 
-void drawSegment(const Vertex& start, const Vertex& end, const ViewportTransform& viewport,
-                 const DrawState& state, Framebuffer& framebuffer, Stats& stats) {
-    Vertex a = start, b = end;
-    const std::uint8_t outcodeA = clipOutcode(a.position), outcodeB = clipOutcode(b.position);
-    if (!clipLine(a, b, outcodeA, outcodeB)) return;
-    // An end that was outside has been moved by the clipper, which maps it unfused.
-    const auto toWindow = [&](const Vertex& v, std::uint8_t outcode) {
-        return outcode == 0 ? viewport.apply(v) : viewport.applyToClipped(v);
+// Visits the primitives of a points or lines batch as the reference draws them: each point
+// inside the view volume, point(window vertex); each segment clipped, segment(window a, window b,
+// the colour of its second vertex, which flat lines take even when that end was clipped).
+template <class Point, class Segment>
+void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, const ViewportTransform& viewport,
+                      Point&& point, Segment&& segment) {
+    const auto clipped = [&](const ClipVertex& start, const ClipVertex& end) {
+        ClipVertex a = start, b = end;
+        const std::uint8_t outcodeA = clipOutcode(a.position), outcodeB = clipOutcode(b.position);
+        if (!clipLine(a, b, outcodeA, outcodeB)) return;
+        // An end that was outside has been moved by the clipper, which maps it unfused.
+        const auto toWindow = [&](const ClipVertex& v, std::uint8_t outcode) {
+            return outcode == 0 ? viewport.apply(v) : viewport.applyToClipped(v);
+        };
+        segment(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color);
     };
-    // Flat lines take the second vertex's color even when that end was clipped.
-    rasterizeLine(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color, state, framebuffer, stats);
-}
-
-}  // namespace
-
-void drawPointsAndLines(PrimitiveMode mode, std::span<const Vertex> vertices, const DrawState& state,
-                        Framebuffer& framebuffer, Stats& stats) {
-    const ViewportTransform viewport(state, framebuffer.height());
     const std::size_t n = vertices.size();
     switch (mode) {
     case PrimitiveMode::Points:
-        for (const Vertex& v : vertices) {
-            if (clipOutcode(v.position) == 0) rasterizePoint(viewport.apply(v), state, framebuffer, stats);
+        for (const ClipVertex& v : vertices) {
+            if (clipOutcode(v.position) == 0) point(viewport.apply(v));
         }
         break;
     case PrimitiveMode::Lines:
-        for (std::size_t i = 0; i + 1 < n; i += 2) {
-            drawSegment(vertices[i], vertices[i + 1], viewport, state, framebuffer, stats);
-        }
+        for (std::size_t i = 0; i + 1 < n; i += 2) clipped(vertices[i], vertices[i + 1]);
         break;
     case PrimitiveMode::LineStrip:
     case PrimitiveMode::LineLoop:
-        for (std::size_t i = 0; i + 1 < n; ++i) {
-            drawSegment(vertices[i], vertices[i + 1], viewport, state, framebuffer, stats);
-        }
-        if (mode == PrimitiveMode::LineLoop && n >= 2) {
-            drawSegment(vertices[n - 1], vertices[0], viewport, state, framebuffer, stats);
-        }
+        for (std::size_t i = 0; i + 1 < n; ++i) clipped(vertices[i], vertices[i + 1]);
+        if (mode == PrimitiveMode::LineLoop && n >= 2) clipped(vertices[n - 1], vertices[0]);
         break;
     default:
         break;
     }
+}
+
+}  // namespace
+
+void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
+                        Framebuffer& framebuffer, Stats& stats) {
+    forEachPrimitive(
+        mode, vertices, ViewportTransform(state, framebuffer.height()),
+        [&](const WindowVertex& v) { rasterizePoint(v, state, framebuffer, stats); },
+        [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4& flatColor) {
+            rasterizeLine(a, b, flatColor, state, framebuffer, stats);
+        });
+}
+
+void selectPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
+                          int framebufferHeight, HitRange& hits) {
+    forEachPrimitive(
+        mode, vertices, ViewportTransform(state, framebufferHeight), [&](const WindowVertex& v) { hits.add(v.z); },
+        [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4&) { hits.add(a.z), hits.add(b.z); });
 }
 
 }  // namespace glrenderer

@@ -3,8 +3,9 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
-#include "glrenderer/vertex.h"
+#include "clip_vertex.h"
 
 namespace glrenderer {
 
@@ -12,7 +13,11 @@ namespace glrenderer {
 // the reference does: points are kept or dropped by their center, segments (i, i+1) in
 // submission order, a loop closed by (last, first), each clipped to the view volume and
 // rasterized with the reference's direction-dependent line rule.
-void drawPointsAndLines(PrimitiveMode mode, std::span<const Vertex> vertices, const DrawState& state,
+void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                         Framebuffer& framebuffer, Stats& stats);
+
+// GL_SELECT: the window depths of the points and clipped segments that reach the view volume.
+void selectPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
+                          int framebufferHeight, HitRange& hits);
 
 }  // namespace glrenderer

@@ -4,7 +4,7 @@
 
 namespace glrenderer {
 
-Facing seedFacing(CullMethod method, const Vertex& a, const Vertex& b, const Vertex& c, bool frontFaceCCW) {
+Facing seedFacing(CullMethod method, const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, bool frontFaceCCW) {
     if (method == CullMethod::LookVector) {
         // Seed 003: the first vertex's normal against the look vector (0, 0, -1). Right for an
         // orthographic view; under perspective the direction to the triangle is not the look

@@ -59,7 +59,7 @@ void decomposeWithEdges(PrimitiveMode mode, std::uint32_t n, Emit&& emit) {
 // A vertex of a (possibly clipped) polygon: clip and window position, its own edge flag, and
 // whether the polygon edge starting at it is drawn.
 struct PolygonVertex {
-    Vertex clip;
+    ClipVertex clip;
     WindowVertex window;
     bool edgeFlag;
     bool edgeVisible;
@@ -166,7 +166,7 @@ private:
 
 }  // namespace
 
-void drawUnfilledBatch(PrimitiveMode mode, std::span<const Vertex> vertices,
+void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
                        std::span<const std::uint8_t> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
                        const DrawState& state, Framebuffer& framebuffer, Stats& stats,
@@ -181,7 +181,7 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const Vertex> vertices,
         Polygon polygon;
         polygon.count = 3;
         for (std::size_t k = 0; k < 3; ++k) {
-            const Vertex& v = vertices[index[k]];
+            const ClipVertex& v = vertices[index[k]];
             polygon.v[k] = {v, windowVertices[index[k]], v.edgeFlag, (edges >> k & 1u) != 0};
         }
         const std::uint8_t outside = outcodes[i0] | outcodes[i1] | outcodes[i2];

@@ -8,7 +8,7 @@
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
-#include "glrenderer/vertex.h"
+#include "clip_vertex.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -28,7 +28,7 @@ struct UnfilledTarget {
 // mode, edges as lines (v2->v0, v0->v1, v1->v2) or vertices as points where the edge flag of
 // the primitive and of the edge's first vertex (glEdgeFlag) are both set. Flat shading uses the
 // triangle's provoking vertex color for all of it.
-void drawUnfilledBatch(PrimitiveMode mode, std::span<const Vertex> vertices,
+void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
                        std::span<const std::uint8_t> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
                        const DrawState& state, Framebuffer& framebuffer, Stats& stats,

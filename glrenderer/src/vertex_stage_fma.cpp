@@ -19,7 +19,7 @@ std::uint8_t outcodeFromLanes(int outsideMinus, int outsidePlus) {
 
 }  // namespace
 
-std::uint8_t transformVerticesFma(std::span<const Vertex> vertices, const ViewportTransform& viewport,
+std::uint8_t transformVerticesFma(std::span<const ClipVertex> vertices, const ViewportTransform& viewport,
                                   std::uint8_t* outcodes, WindowVertex* windowVertices) {
     const __m128 scale = _mm_setr_ps(viewport.scaleX(), viewport.scaleY(), viewport.scaleZ(), 0.0f);
     const __m128 translate = _mm_setr_ps(viewport.translateX(), viewport.translateY(), viewport.translateZ(), 0.0f);

@@ -13,12 +13,11 @@ ViewportTransform::ViewportTransform(const DrawState& state, int framebufferHeig
     // y flips: internal y = H - y_gl.
     scaleY_ = -halfHeight;
     translateY_ = static_cast<float>(framebufferHeight) - (halfHeight + static_cast<float>(vp.y));
-    const float halfDepth = (state.depthFar - state.depthNear) * 0.5f;
-    scaleZ_ = halfDepth;
-    translateZ_ = state.depthNear + halfDepth;
+    scaleZ_ = state.depthScale();
+    translateZ_ = state.depthTranslate();
 }
 
-WindowVertex ViewportTransform::apply(const Vertex& vertex) const {
+WindowVertex ViewportTransform::apply(const ClipVertex& vertex) const {
     const glm::vec4& p = vertex.position;
     WindowVertex out;
     out.invW = 1.0f / p.w;
@@ -29,7 +28,7 @@ WindowVertex ViewportTransform::apply(const Vertex& vertex) const {
     return out;
 }
 
-WindowVertex ViewportTransform::applyToClipped(const Vertex& vertex) const {
+WindowVertex ViewportTransform::applyToClipped(const ClipVertex& vertex) const {
     const glm::vec4& p = vertex.position;
     WindowVertex out;
     out.invW = 1.0f / p.w;

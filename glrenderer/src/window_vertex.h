@@ -2,7 +2,7 @@
 #include <glm/vec4.hpp>
 
 #include "glrenderer/draw_state.h"
-#include "glrenderer/vertex.h"
+#include "clip_vertex.h"
 
 namespace glrenderer {
 
@@ -22,10 +22,10 @@ public:
 
     // A vertex from the program: x_window = fma(x_clip * (1 / w), scale, translate), as the
     // reference's vertex stage computes it (one rounding for the multiply-add).
-    WindowVertex apply(const Vertex& vertex) const;
+    WindowVertex apply(const ClipVertex& vertex) const;
     // A vertex made by clipping: the same formula with a separate multiply and add, as the
     // reference's clipper computes it.
-    WindowVertex applyToClipped(const Vertex& vertex) const;
+    WindowVertex applyToClipped(const ClipVertex& vertex) const;
 
     float scaleX() const { return scaleX_; }
     float scaleY() const { return scaleY_; }

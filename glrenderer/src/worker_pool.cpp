@@ -1,5 +1,7 @@
 #include "worker_pool.h"
 
+#include "denormals_are_zero.h"
+
 namespace glrenderer {
 
 WorkerPool::WorkerPool(unsigned threads) {
@@ -34,6 +36,7 @@ void WorkerPool::drain(unsigned thread) {
 }
 
 void WorkerPool::run(std::size_t count, Job job) {
+    const DenormalsAreZero denormals;
     if (workers_.empty() || count <= 1) {
         for (std::size_t i = 0; i < count; ++i) job.invoke(job.task, i, 0);
         return;
@@ -54,6 +57,7 @@ void WorkerPool::run(std::size_t count, Job job) {
 }
 
 void WorkerPool::workerLoop(unsigned thread) {
+    const DenormalsAreZero denormals;
     unsigned seen = 0;
     std::unique_lock lock(mutex_);
     for (;;) {

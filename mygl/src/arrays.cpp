@@ -52,74 +52,6 @@ void emitElement(const ClientArrays& arrays, std::size_t i) {
     if (arrays.vertex.enabled) withElement(arrays.vertex, i, [&](const auto* v) { vertexv(v, arrays.vertex.size); });
 }
 
-// The elements a draw reads, copied, with arrays that point into the copy: what a display list
-// keeps of glArrayElement, glDrawArrays and glDrawElements (GL reads the arrays when the command
-// is compiled, not when the list runs).
-struct ArraySnapshot {
-    ClientArrays arrays;
-    std::vector<unsigned char> bytes;
-};
-
-std::shared_ptr<const ArraySnapshot> snapshot(const ClientArrays& source, const std::vector<std::size_t>& elements) {
-    auto copy = std::make_shared<ArraySnapshot>();
-    copy->arrays = source;
-    ClientArray* all[] = {&copy->arrays.vertex, &copy->arrays.normal, &copy->arrays.color,
-                          &copy->arrays.index, &copy->arrays.texCoord, &copy->arrays.edgeFlag};
-    std::vector<std::size_t> offsets;
-    for (ClientArray* a : all) {
-        offsets.push_back(copy->bytes.size());
-        if (!a->enabled) continue;
-        const std::size_t elementBytes = static_cast<std::size_t>(a->size) * componentBytes(a->type);
-        for (std::size_t i : elements) {
-            const auto* from = static_cast<const unsigned char*>(a->element(i));
-            copy->bytes.insert(copy->bytes.end(), from, from + elementBytes);
-        }
-        a->stride = 0;
-    }
-    for (std::size_t k = 0; k < std::size(all); ++k) all[k]->pointer = copy->bytes.data() + offsets[k];
-    return copy;
-}
-
-// Draws `elements` of `arrays` as one primitive of `mode`, a draw of its own. The reference
-// converts indexed quads to triangles before it draws them.
-void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, const std::vector<std::size_t>& elements,
-                    bool indexed) {
-    if (!arrays.vertex.enabled) return;  // no positions: nothing is drawn
-    const glm::vec4 color = s.color, vertexColor = s.vertexColor, texCoord = s.texCoord;
-    const glm::vec3 normal = s.normal;
-    const bool edgeFlag = s.edgeFlag;
-    endBatch(s);
-    begin(mode, quadSplitOf(s, indexed));
-    for (std::size_t i : elements) emitElement(arrays, i);
-    end();
-    endBatch(s);
-    s.color = color, s.vertexColor = vertexColor, s.texCoord = texCoord, s.normal = normal, s.edgeFlag = edgeFlag;
-}
-
-// Runs a draw now, or keeps it in the list being compiled (and runs it too in
-// GL_COMPILE_AND_EXECUTE).
-void drawOrCompile(Context::State& s, GLenum mode, std::vector<std::size_t> elements, bool indexed) {
-    if (s.lists.compiling()) {
-        std::vector<std::size_t> order(elements.size());
-        for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-        s.lists.add([mode, kept = snapshot(s.arrays, elements), order, indexed] {
-            if (Context::State* now = stateOutsideBeginEnd()) drawElementsOf(*now, mode, kept->arrays, order, indexed);
-        });
-        if (!s.lists.executingWhileCompiling()) return;
-    }
-    drawElementsOf(s, mode, s.arrays, elements, indexed);
-}
-
-void drawArrays(GLenum mode, GLint first, GLsizei count) {
-    Context::State* s = stateOutsideBeginEnd();
-    if (!s) return;
-    if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
-    if (first < 0 || count < 0) return setError(*s, GL_INVALID_VALUE);
-    std::vector<std::size_t> elements(static_cast<std::size_t>(count));
-    for (std::size_t k = 0; k < elements.size(); ++k) elements[k] = static_cast<std::size_t>(first) + k;
-    drawOrCompile(*s, mode, std::move(elements), false);
-}
-
 std::size_t readIndex(GLenum type, const void* indices, std::size_t k) {
     const auto* bytes = static_cast<const unsigned char*>(indices);
     if (type == GL_UNSIGNED_BYTE) return bytes[k];
@@ -133,6 +65,78 @@ std::size_t readIndex(GLenum type, const void* indices, std::size_t k) {
     return index;
 }
 
+// The elements a draw reads, in order: `count` from `first` (glDrawArrays), or the `count`
+// indices of `type` at `indices` (glDrawElements).
+struct Elements {
+    std::size_t first = 0, count = 0;
+    const void* indices = nullptr;
+    GLenum type = 0;
+    std::size_t operator[](std::size_t k) const { return indices ? readIndex(type, indices, k) : first + k; }
+};
+
+// The elements a draw reads, copied, with arrays that point into the copy: what a display list
+// keeps of glArrayElement, glDrawArrays and glDrawElements (GL reads the arrays when the command
+// is compiled, not when the list runs).
+struct ArraySnapshot {
+    ClientArrays arrays;
+    std::vector<unsigned char> bytes;
+};
+
+std::shared_ptr<const ArraySnapshot> snapshot(const ClientArrays& source, const Elements& elements) {
+    auto copy = std::make_shared<ArraySnapshot>();
+    copy->arrays = source;
+    ClientArray* all[] = {&copy->arrays.vertex, &copy->arrays.normal, &copy->arrays.color,
+                          &copy->arrays.index, &copy->arrays.texCoord, &copy->arrays.edgeFlag};
+    std::vector<std::size_t> offsets;
+    for (ClientArray* a : all) {
+        offsets.push_back(copy->bytes.size());
+        if (!a->enabled) continue;
+        const std::size_t elementBytes = static_cast<std::size_t>(a->size) * componentBytes(a->type);
+        for (std::size_t k = 0; k < elements.count; ++k) {
+            const auto* from = static_cast<const unsigned char*>(a->element(elements[k]));
+            copy->bytes.insert(copy->bytes.end(), from, from + elementBytes);
+        }
+        a->stride = 0;
+    }
+    for (std::size_t k = 0; k < std::size(all); ++k) all[k]->pointer = copy->bytes.data() + offsets[k];
+    return copy;
+}
+
+// Draws `elements` of `arrays` as one primitive of `mode`, a draw of its own. The reference
+// converts indexed quads to triangles before it draws them.
+void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, const Elements& elements, bool indexed) {
+    if (!arrays.vertex.enabled) return;  // no positions: nothing is drawn
+    const glm::vec4 color = s.color, vertexColor = s.vertexColor, texCoord = s.texCoord;
+    const glm::vec3 normal = s.normal;
+    const bool edgeFlag = s.edgeFlag;
+    endBatch(s);
+    begin(mode, quadSplitOf(s, indexed));
+    for (std::size_t k = 0; k < elements.count; ++k) emitElement(arrays, elements[k]);
+    end();
+    endBatch(s);
+    s.color = color, s.vertexColor = vertexColor, s.texCoord = texCoord, s.normal = normal, s.edgeFlag = edgeFlag;
+}
+
+// Runs a draw now, or keeps it in the list being compiled (and runs it too in
+// GL_COMPILE_AND_EXECUTE).
+void drawOrCompile(Context::State& s, GLenum mode, const Elements& elements, bool indexed) {
+    if (s.lists.compiling()) {
+        s.lists.add([mode, kept = snapshot(s.arrays, elements), count = elements.count, indexed] {
+            if (Context::State* now = stateOutsideBeginEnd()) drawElementsOf(*now, mode, kept->arrays, {0, count}, indexed);
+        });
+        if (!s.lists.executingWhileCompiling()) return;
+    }
+    drawElementsOf(s, mode, s.arrays, elements, indexed);
+}
+
+void drawArrays(GLenum mode, GLint first, GLsizei count) {
+    Context::State* s = stateOutsideBeginEnd();
+    if (!s) return;
+    if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
+    if (first < 0 || count < 0) return setError(*s, GL_INVALID_VALUE);
+    drawOrCompile(*s, mode, {static_cast<std::size_t>(first), static_cast<std::size_t>(count)}, false);
+}
+
 void drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
@@ -140,9 +144,7 @@ void drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) 
     if (count < 0) return setError(*s, GL_INVALID_VALUE);
     if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return setError(*s, GL_INVALID_ENUM);
     if (!indices) return;
-    std::vector<std::size_t> elements(static_cast<std::size_t>(count));
-    for (std::size_t k = 0; k < elements.size(); ++k) elements[k] = readIndex(type, indices, k);
-    drawOrCompile(*s, mode, std::move(elements), true);
+    drawOrCompile(*s, mode, {0, static_cast<std::size_t>(count), indices, type}, true);
 }
 
 // glArrayElement may be called inside glBegin/glEnd (that is what it is for).
@@ -151,7 +153,7 @@ void arrayElement(GLint i) {
     if (!s || i < 0) return;
     const auto element = static_cast<std::size_t>(i);
     if (s->lists.compiling()) {
-        s->lists.add([kept = snapshot(s->arrays, {element})] { emitElement(kept->arrays, 0); });
+        s->lists.add([kept = snapshot(s->arrays, {element, 1})] { emitElement(kept->arrays, 0); });
         if (!s->lists.executingWhileCompiling()) return;
     }
     emitElement(s->arrays, element);
@@ -285,6 +287,10 @@ const EntryPoint kEntryPoints[] = {
     {"glGetPointerv", entry(+[](GLenum name, void** out) {
          Context::State* s = stateOutsideBeginEnd();
          if (!s || !out) return;
+         if (name == GL_SELECTION_BUFFER_POINTER) {
+             *out = s->selection.buffer;
+             return;
+         }
          const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;
          if (!known) return setError(*s, GL_INVALID_ENUM);
          *out = const_cast<void*>(arrayPointer(*s, name));

@@ -15,6 +15,7 @@ void clear(GLbitfield mask) {
     if (!s) return;
     constexpr GLbitfield kKnown = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
     if (mask & ~kKnown) return setError(*s, GL_INVALID_VALUE);
+    if (s->renderMode != GL_RENDER) return;  // as the reference: selection clears nothing
     drawCachedBitmaps(*s);
     const bool color = mask & GL_COLOR_BUFFER_BIT;
     const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite;  // glDepthMask applies

@@ -10,9 +10,11 @@
 
 #include <glm/vec3.hpp>
 
+#include "attrib_stack.h"
 #include "bitmap_cache.h"
 #include "client_arrays.h"
 #include "display_lists.h"
+#include "selection.h"
 #include "stack_matrix.h"
 #include "mygl/context.h"
 
@@ -89,6 +91,7 @@ struct Context::State {
     int packAlignment = 4, unpackAlignment = 4;
     DisplayLists lists;
     ClientArrays arrays;
+    AttribStack attribStack, clientAttribStack;
 
     // Lighting: the state as set, and as prepared for lighting vertices (again after any state
     // change, which ends the batch: see endBatch).
@@ -107,6 +110,7 @@ struct Context::State {
         projection.top().settleKind();
         modelviewProjection = combine(projection.top(), modelview.top());
         modelviewProjectionStale = false;
+        pipeline.setTransform({modelviewProjection, modelview.top().matrix()});
     }
 
     // The current raster position (glRasterPos, moved by glBitmap) in window coordinates, and
@@ -115,6 +119,10 @@ struct Context::State {
     glm::vec4 rasterColor{1, 1, 1, 1};
     glm::vec4 rasterTexCoord{0, 0, 0, 1};
     float rasterDistance = 0;
+
+    // glRenderMode; in GL_SELECT, draws make hit records in the program's buffer instead of pixels.
+    GLenum renderMode = GL_RENDER;
+    Selection selection;
     bool rasterValid = true;
     BitmapCache bitmapCache;
 

@@ -11,20 +11,37 @@ namespace {
 
 bool byName(const EntryPoint& a, const EntryPoint& b) { return std::strcmp(a.name, b.name) < 0; }
 
+// The implemented entry points by name.
+const std::vector<EntryPoint>& implementedTable() {
+    static const std::vector<EntryPoint> table = [] {
+        std::vector<EntryPoint> all;
+        for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
+                          bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
+                          selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints()}) {
+            all.insert(all.end(), area.begin(), area.end());
+        }
+        std::sort(all.begin(), all.end(), byName);
+        return all;
+    }();
+    return table;
+}
+
 // Every entry point by name: the implemented ones, and a stub for each GL 1.1 function that
 // is not (yet).
 std::vector<EntryPoint> sortedTable() {
-    std::vector<EntryPoint> table;
-    for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
-                      bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
-                      lightingEntryPoints()}) {
-        table.insert(table.end(), area.begin(), area.end());
-    }
-    std::sort(table.begin(), table.end(), byName);
+    std::vector<EntryPoint> table = implementedTable();
     const std::vector<EntryPoint> missing = notImplementedEntryPoints(table);
     table.insert(table.end(), missing.begin(), missing.end());
     std::sort(table.begin(), table.end(), byName);
     return table;
+}
+
+const EntryPoint* findIn(const std::vector<EntryPoint>& table, const char* name) {
+    if (!name) return nullptr;
+    const auto found = std::lower_bound(table.begin(), table.end(), name, [](const EntryPoint& e, const char* n) {
+        return std::strcmp(e.name, n) < 0;
+    });
+    return found != table.end() && std::strcmp(found->name, name) == 0 ? &*found : nullptr;
 }
 
 }  // namespace
@@ -40,11 +57,10 @@ Context::State* stateOutsideBeginEnd() {
 
 ProcAddress getProcAddress(const char* name) {
     static const std::vector<EntryPoint> table = sortedTable();
-    if (!name) return nullptr;
-    const auto found = std::lower_bound(table.begin(), table.end(), name, [](const EntryPoint& e, const char* n) {
-        return std::strcmp(e.name, n) < 0;
-    });
-    return found != table.end() && std::strcmp(found->name, name) == 0 ? found->proc : nullptr;
+    const EntryPoint* found = findIn(table, name);
+    return found ? found->proc : nullptr;
 }
+
+bool implements(const char* name) { return findIn(implementedTable(), name) != nullptr; }
 
 }  // namespace mygl

@@ -28,6 +28,8 @@ std::span<const EntryPoint> listEntryPoints();
 std::span<const EntryPoint> arrayEntryPoints();
 std::span<const EntryPoint> rasterPosEntryPoints();
 std::span<const EntryPoint> lightingEntryPoints();
+std::span<const EntryPoint> selectionEntryPoints();
+std::span<const EntryPoint> attribStackEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.

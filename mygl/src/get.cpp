@@ -38,6 +38,9 @@ Value query(const Context::State& s, GLenum name) {
     case GL_MAX_MODELVIEW_STACK_DEPTH: return one(double(s.modelview.maxDepth()));
     case GL_MAX_PROJECTION_STACK_DEPTH: return one(double(s.projection.maxDepth()));
     case GL_MAX_TEXTURE_STACK_DEPTH: return one(double(s.texture.maxDepth()));
+    case GL_ATTRIB_STACK_DEPTH: return one(double(s.attribStack.depth()));
+    case GL_CLIENT_ATTRIB_STACK_DEPTH: return one(double(s.clientAttribStack.depth()));
+    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: return one(double(AttribStack::kMaxDepth));
     case GL_MAX_VIEWPORT_DIMS: return Value{{double(Context::kMaxSize), double(Context::kMaxSize)}};
     case GL_CULL_FACE: return flag(d.cullEnabled);
     case GL_DEPTH_TEST: return flag(d.depthTest);
@@ -93,6 +96,10 @@ Value query(const Context::State& s, GLenum name) {
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT: return one(s.hints.at(name));
     case GL_LIST_BASE: return one(s.lists.base);
+    case GL_RENDER_MODE: return one(s.renderMode);
+    case GL_NAME_STACK_DEPTH: return one(double(s.selection.names.size()));
+    case GL_MAX_NAME_STACK_DEPTH: return one(double(Selection::kMaxNameStackDepth));
+    case GL_SELECTION_BUFFER_SIZE: return one(s.selection.size);
     case GL_LIST_INDEX: return one(s.lists.compilingName());
     case GL_LIST_MODE: return one(s.lists.compilingMode());
     case GL_MAX_LIST_NESTING: return one(DisplayLists::kMaxNesting);

@@ -11,9 +11,8 @@
 #include "gl11_functions.h"
 
 namespace mygl {
-namespace {
 
-void reportMissing(const char* name) {
+void reportNotImplemented(const char* name) {
     if (Context::State* s = currentState()) setError(*s, GL_INVALID_OPERATION);
     static std::mutex mutex;
     static std::set<std::string_view> reported;
@@ -22,6 +21,8 @@ void reportMissing(const char* name) {
         std::fprintf(stderr, "MyGL: %s is not implemented yet (GL_INVALID_OPERATION)\n", name);
     }
 }
+
+namespace {
 
 // A name as a template argument, so that each stub knows its function.
 template <std::size_t N>
@@ -36,7 +37,7 @@ struct Stub;
 template <FunctionName Name, class R, class... Args>
 struct Stub<Name, R(GLAD_API_PTR*)(Args...)> {
     static R GLAD_API_PTR call(Args...) {
-        reportMissing(Name.chars);
+        reportNotImplemented(Name.chars);
         if constexpr (!std::is_void_v<R>) return R{};
     }
 };

@@ -1,6 +1,7 @@
 // glRasterPos and glBitmap: the current raster position and the bitmaps drawn at it, computed
 // as the reference's fixed-function path computes them (Mesa's rastpos.c and _mesa_Bitmap).
 #include <array>
+#include <algorithm>
 #include <cmath>
 
 #include "compiled.h"
@@ -28,14 +29,13 @@ void rasterPos(const glm::vec4& object) {
     const float d = clip.w == 0.0f ? 1.0f : 1.0f / clip.w;
     const auto& v = s->draw.viewport;
     const float halfWidth = static_cast<float>(v.width) * 0.5f, halfHeight = static_cast<float>(v.height) * 0.5f;
-    const float depthScale = 0.5f * (s->draw.depthFar - s->draw.depthNear);
-    const float depthTranslate = 0.5f * (s->draw.depthNear + s->draw.depthFar);
     s->rasterPosition = {clip.x * d * halfWidth + (halfWidth + static_cast<float>(v.x)),
                          clip.y * d * halfHeight + (halfHeight + static_cast<float>(v.y)),
-                         clip.z * d * depthScale + depthTranslate, clip.w};
+                         clip.z * d * s->draw.depthScale() + s->draw.depthTranslate(), clip.w};
     s->rasterDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
     s->rasterColor = s->color;
     s->rasterTexCoord = transform(s->texture.top().matrix(), s->texCoord);
+    if (s->renderMode == GL_SELECT) s->selection.rasterHits.add(s->rasterPosition.z);
 }
 
 template <class T>
@@ -52,8 +52,10 @@ std::size_t bitmapRowStride(GLsizei width, int alignment) {
     return (bytes + a - 1) / a * a;
 }
 
+// `stride`: bytes from one row to the next (the unpack alignment's when the program calls it,
+// 1-aligned rows when a display list replays it).
 void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
-            const GLubyte* bits) {
+            const GLubyte* bits, std::size_t stride) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
@@ -62,13 +64,12 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
     constexpr float kFarAway = 1 << 29;
     const bool nearWindow = std::fabs(s->rasterPosition.x) < kFarAway && std::fabs(s->rasterPosition.y) < kFarAway &&
                             std::fabs(xorig) < kFarAway && std::fabs(yorig) < kFarAway;
-    if (width > 0 && height > 0 && bits && nearWindow) {
+    if (width > 0 && height > 0 && bits && nearWindow && s->renderMode == GL_RENDER) {
         // The reference truncates position - origin after adding 1e-4 (SGI's rule, for
         // conformance): a raster position a hair below an integer still lands on it.
         constexpr float kEpsilon = 0.0001f;
         const int x = static_cast<int>(std::floor(s->rasterPosition.x + kEpsilon - xorig));
         const int y = static_cast<int>(std::floor(s->rasterPosition.y + kEpsilon - yorig));
-        const std::size_t stride = bitmapRowStride(width, s->unpackAlignment);
         const float z = s->rasterPosition.z;
         if (BitmapCache::cacheable(width, height)) {
             if (!s->bitmapCache.accepts(x, y, width, height, s->rasterColor, z)) drawCachedBitmaps(*s);
@@ -91,11 +92,33 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
     s->rasterPosition.y += ymove;
 }
 
+// glBitmap compiled into a list: its rows are copied under the unpack state of the moment (as
+// the reference unpacks them when it compiles the call), 1-aligned.
+CompiledCall keptBitmap(const Context::State& s, GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym,
+                        const GLubyte* bits) {
+    std::vector<GLubyte> rows;
+    const std::size_t packed = w > 0 ? bitmapRowStride(w, 1) : 0;
+    if (bits && w > 0 && h > 0) {
+        const std::size_t stride = bitmapRowStride(w, s.unpackAlignment);
+        rows.resize(packed * static_cast<std::size_t>(h));
+        for (std::size_t row = 0; row < static_cast<std::size_t>(h); ++row) {
+            std::copy_n(bits + row * stride, packed, rows.begin() + static_cast<std::ptrdiff_t>(row * packed));
+        }
+    }
+    return [=, rows = std::move(rows)] { bitmap(w, h, xo, yo, xm, ym, rows.empty() ? nullptr : rows.data(), packed); };
+}
+
 const EntryPoint kEntryPoints[] = {
     MYGL_POSITION_ENTRIES("glRasterPos", s, GLshort, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", i, GLint, rasterPosv),
     MYGL_POSITION_ENTRIES("glRasterPos", f, GLfloat, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", d, GLdouble, rasterPosv),
     {"glBitmap", entry(+[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
-         bitmap(w, h, xo, yo, xm, ym, bits);
+         Context::State* s = currentState();
+         if (!s) return;
+         if (s->lists.compiling()) {
+             s->lists.add(keptBitmap(*s, w, h, xo, yo, xm, ym, bits));
+             if (!s->lists.executingWhileCompiling()) return;
+         }
+         bitmap(w, h, xo, yo, xm, ym, bits, w > 0 ? bitmapRowStride(w, s->unpackAlignment) : 0);
      })},
 };
 

@@ -1,6 +1,7 @@
 // Enables and fixed-function state, translated into the pipeline's DrawState.
 #include <algorithm>
 
+#include "capabilities.h"
 #include "clamp_to_unit.h"
 #include "compiled.h"
 
@@ -14,41 +15,24 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_FOG, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE,
-    GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
+    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_FOG, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
+    GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
 };
 
 bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
 
 void setCapability(GLenum cap, bool enabled) {
     Context::State* s = stateOutsideBeginEnd();
-    if (!s) return;
-    if (cap == GL_CULL_FACE || cap == GL_DEPTH_TEST) {
-        bool& flag = cap == GL_CULL_FACE ? s->draw.cullEnabled : s->draw.depthTest;
-        if (flag != enabled) endBatch(*s);
-        flag = enabled;
-        return;
-    }
-    if (setLightingCapability(*s, cap, enabled)) return;
-    if (!isInert(cap)) return setError(*s, GL_INVALID_ENUM);
-    auto& list = s->otherEnabled;
-    const auto found = std::find(list.begin(), list.end(), cap);
-    if (enabled && found == list.end()) list.push_back(cap);
-    if (!enabled && found != list.end()) list.erase(found);
+    if (s && !setCapability(*s, cap, enabled)) setError(*s, GL_INVALID_ENUM);
 }
 
 GLboolean isEnabled(GLenum cap) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return GL_FALSE;
-    if (cap == GL_CULL_FACE) return s->draw.cullEnabled;
-    if (cap == GL_DEPTH_TEST) return s->draw.depthTest;
-    if (const std::optional<bool> lighting = lightingCapability(*s, cap)) return *lighting;
     if (const ClientArray* array = s->arrays.find(cap)) return array->enabled;
-    if (!isInert(cap)) {
-        setError(*s, GL_INVALID_ENUM);
-        return GL_FALSE;
-    }
-    return std::find(s->otherEnabled.begin(), s->otherEnabled.end(), cap) != s->otherEnabled.end();
+    const std::optional<bool> enabled = capabilityEnabled(*s, cap);
+    if (!enabled) setError(*s, GL_INVALID_ENUM);
+    return enabled.value_or(false);
 }
 
 // Sets a state value after validation, ending the batch only when the value really changes.
@@ -192,6 +176,30 @@ const EntryPoint kEntryPoints[] = {
 };
 
 }  // namespace
+
+bool setCapability(Context::State& s, GLenum cap, bool enabled) {
+    if (cap == GL_CULL_FACE || cap == GL_DEPTH_TEST) {
+        bool& flag = cap == GL_CULL_FACE ? s.draw.cullEnabled : s.draw.depthTest;
+        if (flag != enabled) endBatch(s);
+        flag = enabled;
+        return true;
+    }
+    if (setLightingCapability(s, cap, enabled)) return true;
+    if (!isInert(cap)) return false;
+    auto& list = s.otherEnabled;
+    const auto found = std::find(list.begin(), list.end(), cap);
+    if (enabled && found == list.end()) list.push_back(cap);
+    if (!enabled && found != list.end()) list.erase(found);
+    return true;
+}
+
+std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
+    if (cap == GL_CULL_FACE) return s.draw.cullEnabled;
+    if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
+    if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
+    if (!isInert(cap)) return std::nullopt;
+    return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
+}
 
 std::span<const EntryPoint> stateEntryPoints() { return kEntryPoints; }
 

@@ -23,23 +23,17 @@ void lightVertex(Context::State& s, const glm::vec4& object, glrenderer::Vertex&
 
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
-// `size`: glVertex2, 3 or 4.
+// The vertex goes to the pipeline as given; its vertex stage transforms it. `size`: glVertex2, 3 or 4.
 [[gnu::always_inline]] inline void addVertex(const glm::vec4& object, int size) {
     Context::State* s = currentState();
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
     s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
     glrenderer::Vertex& v = s->pipeline.addVertex();
-    v.position = transform(s->modelviewProjection, object);
+    v.position = object;
     if (s->lightingEnabled) lightVertex(*s, object, v);
     else v.color = s->vertexColor;
+    v.normal = s->normal;
     v.edgeFlag = s->edgeFlag;
-    if (s->pipeline.methods().needsEyeSpace()) {  // only the seeds' culling methods look at these
-        const Matrix& m = s->modelview.top().matrix();
-        v.eye = glm::vec3(transform(m, object));
-        v.normal = {at(m, 0, 0) * s->normal.x + at(m, 0, 1) * s->normal.y + at(m, 0, 2) * s->normal.z,
-                    at(m, 1, 0) * s->normal.x + at(m, 1, 1) * s->normal.y + at(m, 1, 2) * s->normal.z,
-                    at(m, 2, 0) * s->normal.x + at(m, 2, 1) * s->normal.y + at(m, 2, 2) * s->normal.z};
-    }
 }
 
 template <class T>

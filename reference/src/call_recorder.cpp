@@ -115,7 +115,7 @@ template <class T>
 std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(name); }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, selection (the program's hit buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -135,7 +135,9 @@ std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(
     X(glad_glMaterialf, 0) X(glad_glMateriali, 0) X(glad_glMaterialfv, lightCount<GLfloat>)      \
     X(glad_glMaterialiv, lightCount<GLint>) X(glad_glLightModelf, 0) X(glad_glLightModeli, 0)    \
     X(glad_glLightModelfv, lightModelCount<GLfloat>) X(glad_glLightModeliv, lightModelCount<GLint>) \
-    X(glad_glColorMaterial, 0)
+    X(glad_glColorMaterial, 0) \
+    X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
+    X(glad_glPushName, 0) X(glad_glPopName, 0)
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();

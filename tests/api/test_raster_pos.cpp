@@ -47,6 +47,11 @@ Frame readFrame() {
 
 // 11 x 7 bits, an irregular pattern so that a flipped or shifted bitmap shows.
 const GLubyte kGlyph[7 * 2] = {0xF1, 0x20, 0x80, 0xE0, 0x41, 0x40, 0x22, 0x00, 0x14, 0x20, 0x08, 0xA0, 0xFF, 0x60};
+// The same glyph with its rows 8-byte aligned.
+const GLubyte kGlyphAligned8[7 * 8] = {0xF1, 0x20, 0, 0, 0, 0, 0, 0, 0x80, 0xE0, 0, 0, 0, 0, 0, 0,
+                                       0x41, 0x40, 0, 0, 0, 0, 0, 0, 0x22, 0x00, 0, 0, 0, 0, 0, 0,
+                                       0x14, 0x20, 0, 0, 0, 0, 0, 0, 0x08, 0xA0, 0, 0, 0, 0, 0, 0,
+                                       0xFF, 0x60, 0, 0, 0, 0, 0, 0};
 
 void perspectiveView() {
     glMatrixMode(GL_PROJECTION);
@@ -183,17 +188,32 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
          }},
         {"unpack alignment 4 and 8", [] {
              setUp();
-             const GLubyte aligned[7 * 8] = {0xF1, 0x20, 0, 0, 0, 0, 0, 0, 0x80, 0xE0, 0, 0, 0, 0, 0, 0,
-                                             0x41, 0x40, 0, 0, 0, 0, 0, 0, 0x22, 0x00, 0, 0, 0, 0, 0, 0,
-                                             0x14, 0x20, 0, 0, 0, 0, 0, 0, 0x08, 0xA0, 0, 0, 0, 0, 0, 0,
-                                             0xFF, 0x60, 0, 0, 0, 0, 0, 0};
              glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
              glRasterPos2i(2, 2);
-             glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, aligned);
+             glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyphAligned8);
              glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
              const GLubyte four[7 * 4] = {0xF1, 0x20, 0, 0, 0x80, 0xE0, 0, 0, 0x41, 0x40, 0, 0, 0x22, 0x00, 0, 0,
                                           0x14, 0x20, 0, 0, 0x08, 0xA0, 0, 0, 0xFF, 0x60, 0, 0};
              glBitmap(11, 7, -15.0f, 0.0f, 0.0f, 0.0f, four);
+         }},
+        {"compiled into a list: unpacked when compiled, drawn when called", [] {
+             setUp();
+             glRasterPos2i(2, 2);
+             glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+             glNewList(5, GL_COMPILE);  // nothing drawn, the raster position not moved
+             glBitmap(11, 7, 0.0f, 0.0f, 12.0f, 3.0f, kGlyphAligned8);
+             glBitmap(11, 7, 1.0f, 0.0f, 12.0f, 3.0f, kGlyphAligned8);
+             glEndList();
+             glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+             glColor3f(0.9f, 0.8f, 0.1f);
+             glRasterPos2i(3, 20);
+             glCallList(5);
+             glCallList(5);
+             glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+             glNewList(6, GL_COMPILE_AND_EXECUTE);
+             glBitmap(11, 7, 0.0f, 0.0f, 0.0f, -9.0f, kGlyphAligned8);
+             glEndList();
+             glCallList(6);
          }},
         {"colours, including conversion ties and values out of range", [] {
              setUp();

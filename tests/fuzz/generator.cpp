@@ -50,7 +50,7 @@ enum class Shape { Scatter, Circle, ZigZag, Grid, Sliver };
 class Generator {
 public:
     Generator(std::uint64_t seed, const GeneratorOptions& options, AvoidedCounts& avoided)
-        : random_(seed), avoided_(avoided) {
+        : random_(seed), attribRandom_(seed ^ 0xA77B5EEDu), avoided_(avoided) {
         const bool large = random_.chance(0.25);
         stream_.width = static_cast<int>(random_.integer(1, large ? options.sizeMax : std::min(64, options.sizeMax)));
         stream_.height = static_cast<int>(random_.integer(1, large ? options.sizeMax : std::min(64, options.sizeMax)));
@@ -64,6 +64,7 @@ public:
         const auto episodes = random_.integer(3, 40);
         for (std::int64_t i = 0; i < episodes; ++i) {
             episode();
+            attribStackCall();
             if (random_.chance(0.6)) emit("glGetError");
         }
         emit("glGetError");
@@ -477,6 +478,34 @@ private:
         return makeCall("glRect" + t + (random_.chance(0.5) ? "v" : ""), {as(t, a.x), as(t, a.y), as(t, b.x), as(t, b.y)});
     }
 
+    // glPushAttrib/glPopAttrib and their client forms between episodes, now and then past the
+    // stacks' depth. They draw from a random source of their own, so that the rest of each seed's
+    // stream is what it was before they existed.
+    void attribStackCall() {
+        RandomSource& r = attribRandom_;
+        if (!r.chance(0.35)) return;
+        constexpr GLbitfield kGroups[] = {GL_CURRENT_BIT,  GL_POINT_BIT,    GL_LINE_BIT,        GL_POLYGON_BIT,
+                                          GL_LIGHTING_BIT, GL_DEPTH_BUFFER_BIT, GL_VIEWPORT_BIT, GL_TRANSFORM_BIT,
+                                          GL_ENABLE_BIT,   GL_COLOR_BUFFER_BIT, GL_HINT_BIT,     GL_LIST_BIT};
+        const auto times = r.chance(0.05) ? r.integer(1, 20) : 1;
+        for (std::int64_t i = 0; i < times; ++i) {
+            switch (r.integer(0, 5)) {
+            case 0: case 1: {
+                GLbitfield mask = r.chance(0.2) ? GL_ALL_ATTRIB_BITS : 0;
+                for (auto n = r.integer(1, 3); n > 0; --n) mask |= kGroups[r.integer(0, std::size(kGroups) - 1)];
+                emit("glPushAttrib", {static_cast<double>(mask)});
+                break;
+            }
+            case 2: case 3: emit("glPopAttrib"); break;
+            case 4:
+                emit("glPushClientAttrib", {static_cast<double>(r.pick<GLbitfield>(
+                                               {GL_CLIENT_PIXEL_STORE_BIT, GL_CLIENT_VERTEX_ARRAY_BIT, GL_CLIENT_ALL_ATTRIB_BITS}))});
+                break;
+            default: emit("glPopClientAttrib");
+            }
+        }
+    }
+
     void stackAbuse() {
         emit("glMatrixMode", {static_cast<double>(random_.pick<GLenum>({GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE}))});
         for (auto n = random_.integer(1, 40); n > 0; --n) emit("glPushMatrix");
@@ -487,6 +516,7 @@ private:
     }
 
     RandomSource random_;
+    RandomSource attribRandom_;
     AvoidedCounts& avoided_;
     Stream stream_;
     StreamContext context_;

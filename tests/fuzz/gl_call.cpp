@@ -153,7 +153,7 @@ struct FunctionInfo {
 
 UnsignedStyle unsignedStyle(std::string_view name) {
     if (name.starts_with("glColor")) return UnsignedStyle::Number;
-    if (name == "glClear") return UnsignedStyle::ClearMask;
+    if (name == "glClear" || name.ends_with("Attrib")) return UnsignedStyle::ClearMask;
     if (name == "glBegin") return UnsignedStyle::PrimitiveMode;
     return UnsignedStyle::Enum;
 }

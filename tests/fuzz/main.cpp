@@ -42,8 +42,10 @@ std::map<std::uint64_t, std::string> readExpected(const char* path) {
         line = line.substr(0, line.find('#'));
         std::istringstream fields(line);
         std::uint64_t seed;
-        std::string failure;
-        if (fields >> seed >> failure) expected[seed] = failure;
+        std::string failure;  // the rest of the line: a class name may have a space ("get answers")
+        if (!(fields >> seed) || !std::getline(fields >> std::ws, failure)) continue;
+        failure.erase(failure.find_last_not_of(" \t") + 1);
+        if (!failure.empty()) expected[seed] = failure;
     }
     return expected;
 }

@@ -90,6 +90,20 @@ bool readsUnknownFormat(const Call& call, const StreamContext&) {
     return std::find(std::begin(kFormats), std::end(kFormats), static_cast<GLenum>(call.args[4])) == std::end(kFormats);
 }
 
+bool togglesLightUnderEnableBit(const Call& call, const StreamContext& context) {
+    const std::string_view name = functionName(call);
+    if (name != "glEnable" && name != "glDisable") return false;
+    const auto cap = static_cast<GLenum>(call.args[0]);
+    if (cap < GL_LIGHT0 || cap > GL_LIGHT7) return false;
+    return std::any_of(context.attribStack.begin(), context.attribStack.end(), [](const StreamContext::Pushed& p) {
+        return (p.mask & GL_ENABLE_BIT) && !(p.mask & GL_LIGHTING_BIT);
+    });
+}
+
+bool popsNestedChange(const Call& call, const StreamContext& context) {
+    return functionName(call) == "glPopAttrib" && context.attribStack.size() >= 2 && context.attribStack.back().changedSince;
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -112,13 +126,30 @@ constexpr Departure kDepartures[] = {
     {"read-pixels-unknown-format",
      "glReadPixels with a format GL does not define: OSMesa reports GL_INVALID_OPERATION, the spec GL_INVALID_ENUM",
      readsUnknownFormat},
+    {"light-under-enable-bit-push",
+     "glEnable/glDisable(GL_LIGHTi) after a glPushAttrib(GL_ENABLE_BIT without GL_LIGHTING_BIT): OSMesa's pop keeps the light's new state",
+     togglesLightUnderEnableBit},
+    {"pop-after-nested-change",
+     "glPopAttrib of a nested push after a state change: OSMesa resets its changed-groups mask to the push's, so the outer pop skips groups changed inside",
+     popsNestedChange},
 };
 
 }  // namespace
 
 void StreamContext::update(const Call& call) {
     const std::string_view name = functionName(call);
-    if (name == "glBegin") {
+    const std::array<bool*, 6> flags = {&colorBeyondUnit,    &normalBeyondUnit,   &texCoordBeyondInt,
+                                        &lineWidthBeyondInt, &pointSizeBeyondInt, &alphaNotOneSinceFlush};
+    const bool query = name == "glGetError" || name.starts_with("glGet") || name == "glIsEnabled";
+    if (!attribStack.empty() && !query && name != "glPushAttrib" && name != "glPopAttrib") attribStack.back().changedSince = true;
+    if (name == "glPushAttrib" && !insideBegin && attribStack.size() < 16) {
+        Pushed pushed{static_cast<GLbitfield>(call.args[0]), {}};
+        for (std::size_t i = 0; i < flags.size(); ++i) pushed.flags[i] = *flags[i];
+        attribStack.push_back(pushed);
+    } else if (name == "glPopAttrib" && !insideBegin && !attribStack.empty()) {
+        for (std::size_t i = 0; i < flags.size(); ++i) *flags[i] = *flags[i] || attribStack.back().flags[i];
+        attribStack.pop_back();
+    } else if (name == "glBegin") {
         if (insideBegin || call.args[0] > GL_POLYGON) return;  // an error: nothing begins
         insideBegin = true;
         mode = static_cast<GLenum>(call.args[0]);

@@ -4,7 +4,9 @@
 // is not a MyGL bug: the generator drops every call a rule matches and counts it.
 #include <glad/gl.h>
 
+#include <array>
 #include <span>
+#include <vector>
 
 #include "gl_call.h"
 
@@ -28,6 +30,16 @@ struct StreamContext {
     bool colorBeyondUnit = false, normalBeyondUnit = false;
     bool texCoordBeyondInt = false, lineWidthBeyondInt = false, pointSizeBeyondInt = false;
     bool alphaNotOneSinceFlush = false;  // a glColor4* set an alpha other than 1 since the last glFlush/glFinish
+
+    // Each glPushAttrib that pushed: its mask, the flags above as they were then (a pop may
+    // bring back their values, so a pop ORs them back in), and whether a call that may change
+    // state came after it.
+    struct Pushed {
+        GLbitfield mask;
+        std::array<bool, 6> flags;
+        bool changedSince = false;
+    };
+    std::vector<Pushed> attribStack;
 
     void update(const Call& call);  // after `call` was added to the stream
 };

@@ -9,6 +9,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string_view>
+
+#include "gl11_functions.h"
 
 namespace {
 
@@ -192,4 +195,37 @@ TEST(CallRecorder, DisplayListsAndVertexArraysReplayOnOsmesa) {
     const reference::Image theirs{40, 30, osmesa.readPixels()};
     EXPECT_EQ(reference::compareImages(ours, theirs).differing, 0);
     EXPECT_GT(coveredPixels(theirs.rgba), 300);
+}
+
+// Compare mode replays what the recorder kept: a function MyGL implements that changes state or
+// draws and that the recorder does not wrap would make the two frames differ without a word.
+// Queries (glGet*, glIs*, glReadPixels, glAreTexturesResident) are not recorded.
+TEST(CallRecorder, WrapsEveryFunctionMyGLImplementsButTheQueries) {
+    struct Slot {
+        const char* name;
+        void** pointer;
+    };
+    static const Slot kSlots[] = {
+#define MYGL_SLOT(name) {#name, reinterpret_cast<void**>(&glad_##name)},
+        MYGL_GL11_FUNCTIONS(MYGL_SLOT)
+#undef MYGL_SLOT
+    };
+    const auto isQuery = [](std::string_view name) {
+        return name.starts_with("glGet") || name.starts_with("glIs") || name == "glReadPixels" ||
+               name == "glAreTexturesResident";
+    };
+    mygl::Context context(4, 4);
+    context.makeCurrent();
+    std::vector<void*> loaded;
+    for (const Slot& slot : kSlots) loaded.push_back(*slot.pointer);
+    reference::CallRecorder recorder;
+    recorder.start();
+    int checked = 0;
+    for (std::size_t i = 0; i < std::size(kSlots); ++i) {
+        if (!mygl::implements(kSlots[i].name) || isQuery(kSlots[i].name)) continue;
+        EXPECT_NE(*kSlots[i].pointer, loaded[i]) << kSlots[i].name << " is not recorded";
+        ++checked;
+    }
+    recorder.stop();
+    EXPECT_GT(checked, 100);
 }

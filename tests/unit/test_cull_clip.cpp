@@ -83,9 +83,9 @@ TEST(Decomposition, QuadDiagonalDependsOnPathAndShading) {
 }
 
 TEST(Clipping, TriangleThroughTheNearPlaneBecomesAQuadrilateral) {
-    const glrenderer::Vertex a{{0, 0, -2, 1}, {1, 0, 0, 1}};  // in front of the near plane
-    const glrenderer::Vertex b{{0.5f, 0, 0, 1}, {0, 1, 0, 1}};
-    const glrenderer::Vertex c{{0, 0.5f, 0, 1}, {0, 0, 1, 1}};
+    const glrenderer::ClipVertex a{{0, 0, -2, 1}, {1, 0, 0, 1}};  // in front of the near plane
+    const glrenderer::ClipVertex b{{0.5f, 0, 0, 1}, {0, 1, 0, 1}};
+    const glrenderer::ClipVertex c{{0, 0.5f, 0, 1}, {0, 0, 1, 1}};
     const std::uint8_t codes = glrenderer::clipOutcode(a.position) | glrenderer::clipOutcode(b.position) |
                                glrenderer::clipOutcode(c.position);
     EXPECT_EQ(codes, 1u << 4);  // the near plane

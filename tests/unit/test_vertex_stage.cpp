@@ -22,15 +22,15 @@ bool sameFloat(float a, float b) {
     return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b) || (std::isnan(a) && std::isnan(b));
 }
 
-std::vector<Vertex> testVertices() {
+std::vector<ClipVertex> testVertices() {
     const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
     const float special[] = {0.0f, -0.0f, 1.0f, -1.0f, 1e-30f, -1e-30f, 1e30f, -1e30f, inf, -inf, nan, 0.5f, 3.0f};
-    std::vector<Vertex> vertices;
+    std::vector<ClipVertex> vertices;
     std::mt19937 random(11);
     std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f), w(-1.0f, 4.0f);
     std::uniform_int_distribution<std::size_t> pick(0, std::size(special) - 1);
     for (int i = 0; i < 4000; ++i) {
-        Vertex v;
+        ClipVertex v;
         v.position = {coordinate(random), coordinate(random), coordinate(random), w(random)};
         if (i % 4 == 0) v.position[i / 4 % 4] = special[pick(random)];  // one special coordinate
         if (i % 16 == 1) v.position = {special[pick(random)], special[pick(random)], special[pick(random)], special[pick(random)]};
@@ -44,7 +44,7 @@ std::vector<Vertex> testVertices() {
 
 TEST(VertexStage, FmaVersionMatchesTheScalarOperationsBitForBit) {
     if (!cpuHasFma()) GTEST_SKIP() << "this CPU has no FMA";
-    const std::vector<Vertex> vertices = testVertices();
+    const std::vector<ClipVertex> vertices = testVertices();
     DrawState state;
     state.viewport = {13, -7, 641, 479};
     state.depthNear = 0.25f;

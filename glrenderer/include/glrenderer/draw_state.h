@@ -38,12 +38,18 @@ struct DrawState {
     PolygonMode polygonFront = PolygonMode::Fill;
     PolygonMode polygonBack = PolygonMode::Fill;
     Viewport viewport;
+    // Kept in float, as the reference keeps them; its depth scale and offset are formed from
+    // them in double (depthScale(), depthTranslate()) and only then rounded to float.
     float depthNear = 0.0f, depthFar = 1.0f;
     float lineWidth = 1.0f;
     float pointSize = 1.0f;
+    bool selection = false;  // GL_SELECT: primitives make hits (Pipeline::takeHits), not pixels
     // Two-sided lighting: filled triangles facing back take their vertices' back colours.
     bool twoSidedColors = false;
     bool operator==(const DrawState&) const = default;
+
+    float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }
+    float depthTranslate() const { return static_cast<float>(0.5 * (double(depthNear) + double(depthFar))); }
 };
 
 }  // namespace glrenderer

@@ -8,6 +8,7 @@
 #include "glrenderer/bitmap.h"
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/hit_range.h"
 #include "glrenderer/immediate_buffer.h"
 #include "glrenderer/methods.h"
 #include "glrenderer/stats.h"
@@ -20,7 +21,7 @@ class BatchThread;
 struct BatchChunk;
 struct BatchEntry;
 
-// Turns primitives in clip space into pixels of a Framebuffer.
+// Turns primitives into pixels of a Framebuffer.
 //
 // Consecutive submissions of the same mergeable mode (points, lines, triangles, quads) form one
 // batch until endBatch(), as the reference's vertex buffer merges glBegin/glEnd blocks: whether
@@ -62,6 +63,10 @@ public:
         if (buffer_.widens(attribute, size)) widen(attribute, size);
     }
 
+    // The matrices of the vertices submitted after the call, outside primitives. A batch is
+    // transformed with one set: a change ends it.
+    void setTransform(const VertexTransform& transform);
+
     // A state change, glFlush: the batch ends, as the reference draws what it holds.
     void endBatch();
     void finish();
@@ -79,6 +84,9 @@ public:
         methods_ = methods;
     }
     const Methods& methods() const { return methods_; }
+
+    // The hits of what was submitted with DrawState::selection since the last call, drawn first.
+    HitRange takeHits();
 
     // Complete after finish().
     Stats stats() const;

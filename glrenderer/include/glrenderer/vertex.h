@@ -2,19 +2,27 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "glrenderer/matrix.h"
+
 namespace glrenderer {
 
-// A vertex after the modelview-projection transform: clip-space position and its RGBA color
-// (floats, not yet clamped); with two-sided lighting also the colour lit for the back face,
-// which triangles facing back take. The edge flag hides polygon edges in line and point mode. Eye-space
-// position and normal are filled only when a culling method asks for them (Methods::needsEyeSpace).
+// A vertex as the program gives it: object-space position, RGBA colour (already clamped to
+// [0, 1], as GL clamps a vertex's colour), normal and edge flag (which hides polygon edges in
+// line and point mode). The pipeline's vertex stage transforms it with its batch's
+// VertexTransform, on the pipeline's side.
 struct Vertex {
     glm::vec4 position;
     glm::vec4 color;
-    glm::vec4 backColor{0.0f};  // only with DrawState::twoSidedColors
-    bool edgeFlag = true;
-    glm::vec3 eye{0.0f};
+    glm::vec4 backColor{0.0f};  // lit for the back face: only with DrawState::twoSidedColors
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    bool edgeFlag = true;
+};
+
+// The matrices a batch's vertices are transformed with.
+struct VertexTransform {
+    Matrix modelviewProjection = kIdentity;  // object to clip space
+    Matrix modelview = kIdentity;            // object to eye space (for the seeds' culling methods)
+    bool operator==(const VertexTransform&) const = default;
 };
 
 }  // namespace glrenderer

@@ -14,6 +14,9 @@ using ProcAddress = void (*)();
 // Our implementation of the GL entry point `name` ("glBegin", ...), or nullptr if MyGL has none.
 // Pass it to the GL loader: gladLoadGL(reinterpret_cast<GLADloadfunc>(mygl::getProcAddress)).
 ProcAddress getProcAddress(const char* name);
+// Whether MyGL implements `name`; getProcAddress also answers for the GL 1.1 functions it does
+// not implement yet, with an entry point that reports itself (GL_INVALID_OPERATION).
+bool implements(const char* name);
 
 // A software GL context rendering into its own RGBA8 + 24-bit depth buffer.
 class Context {

@@ -37,4 +37,5 @@
     X(glad_glDepthFunc, 0) X(glad_glDepthMask, 0) X(glad_glShadeModel, 0) X(glad_glPolygonMode, 0) \
     X(glad_glLineWidth, 0) X(glad_glPointSize, 0) X(glad_glHint, 0) X(glad_glPixelStorei, 0)     \
     X(glad_glClearColor, 0) X(glad_glClearDepth, 0) X(glad_glClear, 0)                           \
-    X(glad_glFlush, 0) X(glad_glFinish, 0)
+    X(glad_glFlush, 0) X(glad_glFinish, 0)                                                       \
+    X(glad_glPushAttrib, 0) X(glad_glPopAttrib, 0) X(glad_glPushClientAttrib, 0) X(glad_glPopClientAttrib, 0)

@@ -1,0 +1,18 @@
+#pragma once
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace glrenderer {
+
+// A vertex after the vertex stage: clip-space position and its RGBA colour. Eye-space position
+// and normal are filled only when a culling method asks for them (Methods::needsEyeSpace).
+struct ClipVertex {
+    glm::vec4 position;
+    glm::vec4 color;
+    glm::vec4 backColor{0.0f};  // only with DrawState::twoSidedColors
+    bool edgeFlag = true;
+    glm::vec3 eye{0.0f};
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};
+};
+
+}  // namespace glrenderer

@@ -1,0 +1,81 @@
+// What glPushAttrib and glPushClientAttrib save of each attribute group (GL 1.1's state tables),
+// over the state MyGL has. Groups MyGL has no state of yet (GL_ACCUM_BUFFER_BIT, GL_EVAL_BIT,
+// GL_PIXEL_MODE_BIT) save nothing.
+#include <tuple>
+
+#include "attrib_stack.h"
+#include "context_state.h"
+
+namespace mygl {
+namespace {
+
+using State = Context::State;
+
+// Saves the fields `Select(state)` ties together; the restore assigns them back.
+template <auto Select>
+RestoreGroup saveFields(const State& state) {
+    auto saved = std::apply([](const auto&... field) { return std::make_tuple(field...); }, Select(state));
+    return [saved](State& s) { Select(s) = saved; };
+}
+
+constexpr GLenum kEnableCapabilities[] = {
+    GL_ALPHA_TEST, GL_BLEND, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_LIGHTING,
+    GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH,
+    GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH,
+    GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
+};
+constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER};
+constexpr GLenum kDepthBufferCapabilities[] = {GL_DEPTH_TEST};
+constexpr GLenum kFogCapabilities[] = {GL_FOG};
+constexpr GLenum kLightingCapabilities[] = {GL_COLOR_MATERIAL, GL_LIGHTING, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2,
+                                            GL_LIGHT3,         GL_LIGHT4,   GL_LIGHT5, GL_LIGHT6, GL_LIGHT7};
+constexpr GLenum kLineCapabilities[] = {GL_LINE_SMOOTH, GL_LINE_STIPPLE};
+constexpr GLenum kPointCapabilities[] = {GL_POINT_SMOOTH};
+constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE};
+constexpr GLenum kScissorCapabilities[] = {GL_SCISSOR_TEST};
+constexpr GLenum kStencilCapabilities[] = {GL_STENCIL_TEST};
+constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D, GL_TEXTURE_2D};
+constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE};
+
+const AttribGroup kServerGroups[] = {
+    {GL_CURRENT_BIT, {}, saveFields<[](auto& s) {
+         return std::tie(s.color, s.vertexColor, s.normal, s.texCoord, s.edgeFlag, s.rasterPosition, s.rasterColor,
+                         s.rasterTexCoord, s.rasterDistance, s.rasterValid);
+     }>},
+    {GL_ENABLE_BIT, kEnableCapabilities, nullptr},
+    {GL_COLOR_BUFFER_BIT, kColorBufferCapabilities, saveFields<[](auto& s) { return std::tie(s.clearColor); }>},
+    {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities, saveFields<[](auto& s) {
+         return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth);
+     }>},
+    {GL_FOG_BIT, kFogCapabilities, nullptr},
+    {GL_LIGHTING_BIT, kLightingCapabilities, saveFields<[](auto& s) {
+         return std::tie(s.shadeModel, s.draw.shadeModel, s.lighting, s.colorMaterialFace, s.colorMaterialMode);
+     }>},
+    {GL_LINE_BIT, kLineCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.lineWidth); }>},
+    {GL_POINT_BIT, kPointCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.pointSize); }>},
+    {GL_POLYGON_BIT, kPolygonCapabilities, saveFields<[](auto& s) {
+         return std::tie(s.cullFaceMode, s.draw.cullFace, s.frontFace, s.draw.frontFaceCCW, s.polygonModeFront,
+                         s.draw.polygonFront, s.polygonModeBack, s.draw.polygonBack);
+     }>},
+    {GL_SCISSOR_BIT, kScissorCapabilities, nullptr},
+    {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, nullptr},
+    {GL_TEXTURE_BIT, kTextureCapabilities, nullptr},
+    {GL_TRANSFORM_BIT, kTransformCapabilities, saveFields<[](auto& s) { return std::tie(s.matrixMode); }>},
+    {GL_VIEWPORT_BIT, {}, saveFields<[](auto& s) {
+         return std::tie(s.draw.viewport, s.draw.depthNear, s.draw.depthFar);
+     }>},
+    {GL_HINT_BIT, {}, saveFields<[](auto& s) { return std::tie(s.hints); }>},
+    {GL_LIST_BIT, {}, saveFields<[](auto& s) { return std::tie(s.lists.base); }>},
+};
+
+const AttribGroup kClientGroups[] = {
+    {GL_CLIENT_PIXEL_STORE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.packAlignment, s.unpackAlignment); }>},
+    {GL_CLIENT_VERTEX_ARRAY_BIT, {}, saveFields<[](auto& s) { return std::tie(s.arrays); }>},
+};
+
+}  // namespace
+
+std::span<const AttribGroup> serverAttribGroups() { return kServerGroups; }
+std::span<const AttribGroup> clientAttribGroups() { return kClientGroups; }
+
+}  // namespace mygl
