@@ -26,8 +26,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny",
-                               "bench-gears", "bench-gears-lists", "bench-mesh"};
+const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears",
+                               "bench-gears-lists", "bench-mesh", "bench-lit-torus"};
 
 struct Variant {
     std::string name;

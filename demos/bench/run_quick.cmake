@@ -11,6 +11,6 @@ foreach(file bench.csv bench.md bench.png)
 endforeach()
 file(STRINGS ${OUT}/bench.csv lines)
 list(LENGTH lines count)
-if(count LESS 46)  # header + 5 scenes x 9 variants
-  message(FATAL_ERROR "bench.csv has ${count} lines, expected 46")
+if(count LESS 73)  # header + 8 scenes x 9 variants
+  message(FATAL_ERROR "bench.csv has ${count} lines, expected 73")
 endif()

@@ -21,8 +21,9 @@ void perspectiveView(int width, int height, float distance) {
     glTranslatef(0.0f, 0.0f, -distance);
 }
 
-// A torus of (rings x sides) quads as triangle strips, colored by its normal.
-void torus(float major, float minor, int rings, int sides) {
+// A torus of (rings x sides) quads as triangle strips, colored by its normal, or given the
+// normal itself for lighting (`lit`).
+void torus(float major, float minor, int rings, int sides, bool lit = false) {
     for (int r = 0; r < rings; ++r) {
         glBegin(GL_TRIANGLE_STRIP);
         for (int s = 0; s <= sides; ++s) {
@@ -30,7 +31,8 @@ void torus(float major, float minor, int rings, int sides) {
                 const float u = static_cast<float>(r + k) * kTwoPi / static_cast<float>(rings);
                 const float v = static_cast<float>(s) * kTwoPi / static_cast<float>(sides);
                 const float nx = std::cos(u) * std::cos(v), ny = std::sin(u) * std::cos(v), nz = std::sin(v);
-                glColor3f(0.5f + 0.5f * nx, 0.5f + 0.5f * ny, 0.5f + 0.5f * nz);
+                if (lit) glNormal3f(nx, ny, nz);
+                else glColor3f(0.5f + 0.5f * nx, 0.5f + 0.5f * ny, 0.5f + 0.5f * nz);
                 glVertex3f((major + minor * std::cos(v)) * std::cos(u), (major + minor * std::cos(v)) * std::sin(u),
                            minor * nz);
             }
@@ -84,6 +86,32 @@ void drawBenchTorus(int width, int height, int frame) {
     perspectiveView(width, height, 7.0f);
     glRotatef(30.0f + static_cast<float>(frame) * 5.0f, 1.0f, 0.4f, 0.0f);
     torus(1.8f, 0.7f, 256, 128);  // 256 * 128 * 2 = 65536 triangles
+}
+
+void drawBenchLitTorus(int width, int height, int frame) {
+    beginFrame(width, height, true, true);
+    perspectiveView(width, height, 7.0f);
+    const GLfloat white[] = {1, 1, 1, 1}, warm[] = {1.0f, 0.8f, 0.5f, 1};
+    const GLfloat spotPosition[] = {0.0f, 0.0f, 2.0f, 1.0f}, spotDirection[] = {0.0f, 0.0f, -1.0f};
+    const GLfloat sun[] = {-0.5f, 0.7f, 0.6f, 0.0f};
+    const GLfloat diffuse[] = {0.7f, 0.35f, 0.25f, 1}, specular[] = {0.8f, 0.8f, 0.8f, 1};
+    glLightfv(GL_LIGHT0, GL_POSITION, spotPosition);  // a spot from the viewer's side
+    glLightfv(GL_LIGHT0, GL_SPOT_DIRECTION, spotDirection);
+    glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 35.0f);
+    glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 8.0f);
+    glLightfv(GL_LIGHT0, GL_SPECULAR, white);
+    glLightfv(GL_LIGHT1, GL_POSITION, sun);
+    glLightfv(GL_LIGHT1, GL_DIFFUSE, warm);
+    glLightfv(GL_LIGHT1, GL_SPECULAR, warm);
+    glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+    glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
+    glMaterialf(GL_FRONT, GL_SHININESS, 40.0f);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    glEnable(GL_LIGHT1);
+    glRotatef(30.0f + static_cast<float>(frame) * 5.0f, 1.0f, 0.4f, 0.0f);
+    torus(1.8f, 0.7f, 128, 64, true);  // 128 * 64 * 2 = 16384 triangles
+    glDisable(GL_LIGHTING);
 }
 
 void drawBenchFill(int width, int height, int) {

@@ -10,5 +10,6 @@ void drawBenchTiny(int width, int height, int frame);   // 100k tiny triangles
 void drawBenchGears(int width, int height, int frame);  // three gears: flat-shaded strips and quads
 void drawBenchGearsLists(int width, int height, int frame);  // the same gears from display lists
 void drawBenchMesh(int width, int height, int frame);   // a 100k-triangle mesh through glDrawElements
+void drawBenchLitTorus(int width, int height, int frame);  // 16k triangles lit by a spot and a directional light
 
 }  // namespace scenes

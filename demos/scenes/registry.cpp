@@ -35,6 +35,8 @@ std::span<const Scene> allScenes() {
         {"bench-gears", "benchmark: three flat-shaded gears", drawBenchGears},
         {"bench-gears-lists", "benchmark: the three gears from display lists", drawBenchGearsLists},
         {"bench-mesh", "benchmark: a 100k-triangle terrain through glDrawElements", drawBenchMesh},
+        {"bench-lit-torus", "benchmark: a 16k-triangle torus lit by a spot and a directional light, specular",
+         drawBenchLitTorus},
     };
     return scenes;
 }

@@ -101,7 +101,6 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     const Batch& batch = call.batch;
     const auto& vertices = batch.vertices;
     ++call.stats.triangles;
-    const glm::vec4& flatColor = vertices[t.v[2]].color;
     if (batch.methods.culling != CullMethod::WindowArea && batch.state.cullEnabled) {
         const Facing facing = seedFacing(batch.methods.culling, vertices[t.v[0]], vertices[t.v[1]],
                                          vertices[t.v[2]], batch.state.frontFaceCCW);
@@ -112,7 +111,8 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     }
     const std::uint8_t outsideAny = outcodes_[t.v[0]] | outcodes_[t.v[1]] | outcodes_[t.v[2]];
     if (outsideAny == 0) {
-        setUpTriangle(call, windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]], flatColor);
+        setUpSidedTriangle(call, {windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]]},
+                           {&vertices[t.v[0]], &vertices[t.v[1]], &vertices[t.v[2]]}, vertices[t.v[2]]);
         return;
     }
     if (outcodes_[t.v[0]] & outcodes_[t.v[1]] & outcodes_[t.v[2]]) {
@@ -133,11 +133,30 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     };
     const WindowVertex first = window(0);
     WindowVertex previous = window(1);
+    const auto& clipped = polygon.vertices;
     for (int i = 2; i < polygon.count; ++i) {
         const WindowVertex current = window(i);
-        setUpTriangle(call, previous, current, first, flatColor);
+        const auto k = static_cast<std::size_t>(i);
+        setUpSidedTriangle(call, {previous, current, first}, {&clipped[k - 1], &clipped[k], &clipped[0]},
+                           vertices[t.v[2]]);
         previous = current;
     }
+}
+
+// With two-sided lighting a triangle that setup finds facing back (its fixed-point area, after
+// clipping) takes the back colours: the reference picks them in the fragment shader by
+// gl_FrontFacing, both colours interpolated as usual.
+void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
+                                    const std::array<const ClipVertex*, 3>& source, const ClipVertex& provoking) {
+    const DrawState& state = call.batch.state;
+    if (state.twoSidedColors) {
+        const std::int64_t area = fixedArea(snap(window[0]), snap(window[1]), snap(window[2]));
+        if (facingOf(area, state.frontFaceCCW) == Facing::Back) {
+            for (std::size_t i = 0; i < 3; ++i) window[i].color = source[i]->backColor;
+            return setUpTriangle(call, window[0], window[1], window[2], provoking.backColor);
+        }
+    }
+    setUpTriangle(call, window[0], window[1], window[2], provoking.color);
 }
 
 void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1,

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -63,6 +64,8 @@ private:
         HitRange* hits = nullptr;  // GL_SELECT
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
+    void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
+                            const std::array<const ClipVertex*, 3>& source, const ClipVertex& provoking);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);
 

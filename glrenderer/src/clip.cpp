@@ -20,6 +20,7 @@ ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& 
     ClipVertex v;
     v.position = from.position + t * (to.position - from.position);
     v.color = from.color + t * (to.color - from.color);
+    v.backColor = from.backColor + t * (to.backColor - from.backColor);
     return v;
 }
 

@@ -9,6 +9,7 @@ namespace glrenderer {
 struct ClipVertex {
     glm::vec4 position;
     glm::vec4 color;
+    glm::vec4 backColor{0.0f};  // only with DrawState::twoSidedColors
     bool edgeFlag = true;
     glm::vec3 eye{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};

@@ -46,6 +46,9 @@ Batch VertexStage::toClipSpace(const SubmittedBatch& batch) {
         out.color = in.color;
         out.edgeFlag = in.edgeFlag;
     }
+    if (batch.state.twoSidedColors) {
+        for (std::size_t i = 0; i < count; ++i) clipVertices_[i].backColor = batch.vertices[i].backColor;
+    }
     if (batch.methods.needsEyeSpace()) {
         for (std::size_t i = 0; i < count; ++i) {
             clipVertices_[i].eye = glm::vec3(transform(t.modelview, batch.vertices[i].position));

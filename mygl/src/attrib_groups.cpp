@@ -48,8 +48,12 @@ const AttribGroup kServerGroups[] = {
          return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth);
      }>},
     {GL_FOG_BIT, kFogCapabilities, nullptr},
-    // The lighting state joins this tie when it exists.
-    {GL_LIGHTING_BIT, kLightingCapabilities, saveFields<[](auto& s) { return std::tie(s.shadeModel, s.draw.shadeModel); }>},
+    {GL_LIGHTING_BIT, kLightingCapabilities, saveFields<[](auto& s) {
+         // (GL_NORMALIZE and GL_RESCALE_NORMAL, kept in the lighting state, belong to other groups.)
+         auto& l = s.lighting;
+         return std::tie(s.shadeModel, s.draw.shadeModel, l.lights, l.modelAmbient, l.localViewer, l.twoSide,
+                         l.separateSpecular, l.materials, l.colorMaterial, s.colorMaterialFace, s.colorMaterialMode);
+     }>},
     {GL_LINE_BIT, kLineCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.lineWidth); }>},
     {GL_POINT_BIT, kPointCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.pointSize); }>},
     {GL_POLYGON_BIT, kPolygonCapabilities, saveFields<[](auto& s) {

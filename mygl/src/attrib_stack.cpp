@@ -42,6 +42,8 @@ void popAttrib(Context::State* s, AttribStack& stack) {
     if (!saved) return setError(*s, GL_STACK_UNDERFLOW);
     const glrenderer::DrawState before = s->draw;
     for (const RestoreGroup& restore : *saved) restore(*s);
+    s->draw.twoSidedColors = s->lightingEnabled && s->lighting.twoSide;
+    s->lightingStale = true;  // the lights may have been restored
     // The batch keeps its own copy of the draw state, so it can end after the change.
     if (!(s->draw == before)) endBatch(*s);
 }

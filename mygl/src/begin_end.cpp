@@ -16,6 +16,7 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     s->updateModelviewProjection();
     s->insideBeginEnd = true;
     s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
+    if (s->lightingEnabled) s->pipeline.colorPerVertex();  // lit colours vary per vertex
 }
 
 void end() {

@@ -5,6 +5,7 @@
 // inlined into the entry point and the check costs one branch.
 #include <array>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "entry_points.h"
@@ -27,9 +28,11 @@ struct KeptArgument<const T*> {
     const T* get() const { return null ? nullptr : data.data(); }
 };
 
-template <auto Implementation, std::size_t Count, class Pointer = decltype(Implementation)>
+// `Count`: a number, or a function of the call's arguments giving it (glLightfv's count
+// depends on its parameter name).
+template <auto Implementation, auto Count, class Pointer = decltype(Implementation)>
 struct Compiled;
-template <auto Implementation, std::size_t Count, class R, class... Args>
+template <auto Implementation, auto Count, class R, class... Args>
 struct Compiled<Implementation, Count, R (*)(Args...)> {
     [[gnu::flatten]] static R call(Args... args) {
         if (Context::State* s = currentState(); s && s->lists.compiling()) [[unlikely]] {
@@ -41,7 +44,10 @@ struct Compiled<Implementation, Count, R (*)(Args...)> {
 
     // Out of line, so that the usual path (not compiling) saves no registers for it.
     [[gnu::noinline, gnu::cold]] static void keep(Context::State& s, Args... args) {
-        s.lists.add([kept = std::make_tuple(KeptArgument<Args>(args, Count)...)] {
+        std::size_t count = 0;
+        if constexpr (std::is_invocable_v<decltype(Count), Args...>) count = Count(args...);
+        else count = Count;
+        s.lists.add([kept = std::make_tuple(KeptArgument<Args>(args, count)...)] {
             std::apply([](const auto&... k) { Implementation(k.get()...); }, kept);
         });
     }
@@ -49,7 +55,7 @@ struct Compiled<Implementation, Count, R (*)(Args...)> {
 
 // The entry point of a command that display lists compile; `Count`: the elements behind its
 // pointer arguments.
-template <auto Implementation, std::size_t Count = 0>
+template <auto Implementation, auto Count = std::size_t{0}>
 ProcAddress compiled() {
     return entry(&Compiled<Implementation, Count>::call);
 }

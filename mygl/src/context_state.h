@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <glrenderer/framebuffer.h>
+#include <glrenderer/lighting.h>
 #include <glrenderer/pipeline.h>
 #include <map>
 #include <vector>
@@ -42,6 +43,13 @@ private:
     std::size_t maxDepth_;
     std::vector<StackMatrix> stack_;
 };
+
+// GL's initial lighting state: light 0 alone has a white diffuse and specular colour.
+inline glrenderer::LightingState defaultLighting() {
+    glrenderer::LightingState l;
+    l.lights[0].diffuse = l.lights[0].specular = {1, 1, 1, 1};
+    return l;
+}
 
 struct Context::State {
     State(int width, int height) : framebuffer(width, height), pipeline(framebuffer) {
@@ -84,6 +92,15 @@ struct Context::State {
     DisplayLists lists;
     ClientArrays arrays;
     AttribStack attribStack, clientAttribStack;
+
+    // Lighting: the state as set, and as prepared for lighting vertices (again after any state
+    // change, which ends the batch: see endBatch).
+    glrenderer::LightingState lighting = defaultLighting();
+    bool lightingEnabled = false;
+    bool colorMaterialEnabled = false;
+    GLenum colorMaterialFace = GL_FRONT_AND_BACK, colorMaterialMode = GL_AMBIENT_AND_DIFFUSE;
+    glrenderer::VertexLighting vertexLighting;
+    bool lightingStale = true;
 
     // What the reference does when it validates state before a draw or a read: settle the
     // kinds of the current matrices and form their product.

@@ -17,7 +17,7 @@ const std::vector<EntryPoint>& implementedTable() {
         std::vector<EntryPoint> all;
         for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
-                          selectionEntryPoints(), attribStackEntryPoints()}) {
+                          selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

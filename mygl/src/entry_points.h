@@ -3,6 +3,7 @@
 // captureless lambdas with the exact parameter types of glad's PFNGL...PROC typedefs (the GL
 // calling convention is the C one on the platforms we build for).
 #include <array>
+#include <optional>
 #include <span>
 
 #include "context_state.h"
@@ -26,6 +27,7 @@ std::span<const EntryPoint> bufferEntryPoints();
 std::span<const EntryPoint> listEntryPoints();
 std::span<const EntryPoint> arrayEntryPoints();
 std::span<const EntryPoint> rasterPosEntryPoints();
+std::span<const EntryPoint> lightingEntryPoints();
 std::span<const EntryPoint> selectionEntryPoints();
 std::span<const EntryPoint> attribStackEntryPoints();
 
@@ -34,6 +36,15 @@ std::span<const EntryPoint> attribStackEntryPoints();
 Context::State* stateOutsideBeginEnd();
 
 // Called before a state change: the reference's vertex buffer flushes there, ending the batch.
-inline void endBatch(Context::State& state) { state.pipeline.endBatch(); }
+// glEnable/glDisable of GL_LIGHTING, GL_LIGHTi, GL_NORMALIZE, GL_RESCALE_NORMAL and
+// GL_COLOR_MATERIAL (false for other capabilities), and their glIsEnabled (nullopt for others).
+bool setLightingCapability(Context::State& state, GLenum cap, bool enabled);
+std::optional<bool> lightingCapability(const Context::State& state, GLenum cap);
+
+// Lighting is prepared again after any state change.
+inline void endBatch(Context::State& state) {
+    state.pipeline.endBatch();
+    state.lightingStale = true;
+}
 
 }  // namespace mygl

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "entry_points.h"
+#include "gl12_lighting_enums.h"
 
 namespace mygl {
 namespace {
@@ -102,7 +103,19 @@ Value query(const Context::State& s, GLenum name) {
     case GL_LIST_INDEX: return one(s.lists.compilingName());
     case GL_LIST_MODE: return one(s.lists.compilingMode());
     case GL_MAX_LIST_NESTING: return one(DisplayLists::kMaxNesting);
-    default: return {};
+    case GL_MAX_LIGHTS: return one(glrenderer::kMaxLights);
+    case GL_LIGHT_MODEL_AMBIENT: {
+        const glm::vec4& a = s.lighting.modelAmbient;
+        return Value{{a.r, a.g, a.b, a.a}, true};
+    }
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: return flag(s.lighting.localViewer);
+    case GL_LIGHT_MODEL_TWO_SIDE: return flag(s.lighting.twoSide);
+    case GL_LIGHT_MODEL_COLOR_CONTROL: return one(s.lighting.separateSpecular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR);
+    case GL_COLOR_MATERIAL_FACE: return one(s.colorMaterialFace);
+    case GL_COLOR_MATERIAL_PARAMETER: return one(s.colorMaterialMode);
+    default:
+        if (const std::optional<bool> enabled = lightingCapability(s, name)) return flag(*enabled);
+        return {};
     }
 }
 

@@ -1,5 +1,6 @@
 #include "stack_matrix.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace mygl {
@@ -16,6 +17,8 @@ bool StackMatrix::load(const Matrix& m) {
     m_ = m;
     projective_ = true;
     kindUnknown_ = true;
+    flags_ = kGeneralFlag;
+    typeKnown_ = false;
     return true;
 }
 
@@ -24,6 +27,7 @@ bool StackMatrix::multiply(const Matrix& m) {
     m_ = mygl::multiply(m_, m);
     projective_ = true;
     kindUnknown_ = true;
+    applied(kGeneralFlag);
     return true;
 }
 
@@ -31,12 +35,15 @@ void StackMatrix::loadIdentity() {
     // The reference keeps the kind it had: only the values and the pending analysis change.
     m_ = kIdentity;
     kindUnknown_ = false;
+    type_ = MatrixType::Identity;
+    typeKnown_ = true;
 }
 
 void StackMatrix::translate(float x, float y, float z) {
     for (int row = 0; row < 4; ++row) {
         at(m_, row, 3) = at(m_, row, 0) * x + at(m_, row, 1) * y + at(m_, row, 2) * z + at(m_, row, 3);
     }
+    applied(kTranslationFlag);
 }
 
 void StackMatrix::scale(float x, float y, float z) {
@@ -45,27 +52,37 @@ void StackMatrix::scale(float x, float y, float z) {
         at(m_, row, 1) *= y;
         at(m_, row, 2) *= z;
     }
+    applied(std::fabs(x - y) < 1e-8f && std::fabs(x - z) < 1e-8f ? kUniformScaleFlag : kGeneralScaleFlag);
 }
 
 void StackMatrix::rotate(float angleDegrees, float x, float y, float z) {
-    if (const std::optional<Matrix> r = rotation(angleDegrees, x, y, z)) multiplyKnown(*r, false);
+    if (const std::optional<Matrix> r = rotation(angleDegrees, x, y, z)) multiplyKnown(*r, false, kRotationFlag);
 }
 
 void StackMatrix::frustum(float left, float right, float bottom, float top, float nearVal, float farVal) {
-    multiplyKnown(mygl::frustum(left, right, bottom, top, nearVal, farVal), true);
+    multiplyKnown(mygl::frustum(left, right, bottom, top, nearVal, farVal), true, kPerspectiveFlag);
 }
 
 void StackMatrix::ortho(float left, float right, float bottom, float top, float nearVal, float farVal) {
-    multiplyKnown(mygl::ortho(left, right, bottom, top, nearVal, farVal), false);
+    multiplyKnown(mygl::ortho(left, right, bottom, top, nearVal, farVal), false, kGeneralScaleFlag | kTranslationFlag);
 }
 
 void StackMatrix::settleKind() {
     if (!kindUnknown_) return;
     projective_ = !hasAffineBottomRow(m_);
     kindUnknown_ = false;
+    const MatrixAnalysis analysis = analyseValues(m_);
+    flags_ = analysis.flags;
+    type_ = analysis.type;
+    typeKnown_ = true;
 }
 
-void StackMatrix::multiplyKnown(const Matrix& m, bool projective) {
+bool StackMatrix::lengthPreserving() const { return (flags_ & ~(kRotationFlag | kTranslationFlag)) == 0; }
+
+Matrix StackMatrix::inverse() const { return invert(m_, typeKnown_ ? type_ : typeFromFlags(m_, flags_), flags_); }
+
+void StackMatrix::multiplyKnown(const Matrix& m, bool projective, unsigned flags) {
+    applied(flags);
     projective_ = projective_ || projective;
     m_ = projective_ ? mygl::multiply(m_, m) : multiplyAffine(m_, m);
 }

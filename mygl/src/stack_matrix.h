@@ -6,6 +6,7 @@
 // the zeros of the bottom row: there the reference stays finite and so must we.
 #include <optional>
 
+#include "matrix_inverse.h"
 #include "matrix_math.h"
 
 namespace mygl {
@@ -31,12 +32,28 @@ public:
     // a glPushMatrix, a glReadPixels), if a load or a general product made it unknown.
     void settleKind();
 
+    // What lighting needs (after settleKind()): whether the reference knows the matrix to keep
+    // lengths (only rotations and translations were applied: its flags say so), and the inverse
+    // as the reference computes it, by a method chosen from the matrix type.
+    bool lengthPreserving() const;
+    Matrix inverse() const;
+
 private:
-    void multiplyKnown(const Matrix& m, bool projective);
+    void multiplyKnown(const Matrix& m, bool projective, unsigned flags);
+    // An operation that applied `flags`: the type is then derived from the flags.
+    void applied(unsigned flags) {
+        flags_ |= flags;
+        typeKnown_ = false;
+    }
 
     Matrix m_ = kIdentity;
     bool projective_ = false;
     bool kindUnknown_ = false;
+    unsigned flags_ = 0;
+    // The type (which inversion applies) when known apart from the flags: glLoadIdentity makes
+    // it the identity and keeps the flags; an analysis of the values sets both.
+    MatrixType type_ = MatrixType::Identity;
+    bool typeKnown_ = true;
 };
 
 // projection * modelview, as the reference forms the matrix its vertex stage uses.

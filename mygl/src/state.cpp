@@ -15,10 +15,8 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_ALPHA_TEST, GL_BLEND, GL_COLOR_MATERIAL, GL_DITHER, GL_FOG, GL_LIGHTING, GL_LIGHT0, GL_LIGHT1,
-    GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH, GL_LINE_STIPPLE,
-    GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE,
-    GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
+    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_FOG, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
+    GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
 };
 
 bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
@@ -186,6 +184,7 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         flag = enabled;
         return true;
     }
+    if (setLightingCapability(s, cap, enabled)) return true;
     if (!isInert(cap)) return false;
     auto& list = s.otherEnabled;
     const auto found = std::find(list.begin(), list.end(), cap);
@@ -197,6 +196,7 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
 std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (cap == GL_CULL_FACE) return s.draw.cullEnabled;
     if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
+    if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
     if (!isInert(cap)) return std::nullopt;
     return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
 }

@@ -17,6 +17,10 @@ inline glrenderer::QuadSplit quadSplitOf(const Context::State& s, bool indexed =
 }
 void end();
 
+// The colour (and with two-sided lighting the back colour) of a vertex at `object` lit with the
+// current normal and colour, clamped as the reference clamps vertex colours (lighting.cpp).
+void lightVertex(Context::State& s, const glm::vec4& object, glrenderer::Vertex& v);
+
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
 // The vertex goes to the pipeline as given; its vertex stage transforms it. `size`: glVertex2, 3 or 4.
@@ -26,7 +30,8 @@ void end();
     s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
     glrenderer::Vertex& v = s->pipeline.addVertex();
     v.position = object;
-    v.color = s->vertexColor;
+    if (s->lightingEnabled) lightVertex(*s, object, v);
+    else v.color = s->vertexColor;
     v.normal = s->normal;
     v.edgeFlag = s->edgeFlag;
 }

@@ -102,6 +102,18 @@ std::size_t bytesOf(GLenum type, GLsizei n) {
 std::size_t callListsBytes(GLsizei n, GLenum type, const void*) { return bytesOf(type, n); }
 std::size_t elementBytes(GLenum, GLsizei count, GLenum type, const void*) { return bytesOf(type, count); }
 
+// Values behind the pointer of glLight*v, glMaterial*v and glLightModel*v: 4 for colours and
+// positions, 3 for the spot direction and the colour indexes, 1 otherwise.
+std::size_t lightParameterCount(GLenum name) {
+    const bool four = name == GL_AMBIENT || name == GL_DIFFUSE || name == GL_SPECULAR || name == GL_POSITION ||
+                      name == GL_EMISSION || name == GL_AMBIENT_AND_DIFFUSE || name == GL_LIGHT_MODEL_AMBIENT;
+    return four ? 4 : name == GL_SPOT_DIRECTION || name == GL_COLOR_INDEXES ? 3 : 1;
+}
+template <class T>
+std::size_t lightCount(GLenum, GLenum name, const T*) { return lightParameterCount(name); }
+template <class T>
+std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(name); }
+
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
 // lists, selection (the program's hit buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
@@ -118,7 +130,12 @@ std::size_t elementBytes(GLenum, GLsizei count, GLenum type, const void*) { retu
     X(glad_glVertexPointer, 0) X(glad_glColorPointer, 0) X(glad_glNormalPointer, 0)              \
     X(glad_glTexCoordPointer, 0) X(glad_glEdgeFlagPointer, 0) X(glad_glIndexPointer, 0)          \
     X(glad_glInterleavedArrays, 0) X(glad_glEnableClientState, 0) X(glad_glDisableClientState, 0) \
-    X(glad_glArrayElement, 0) X(glad_glDrawArrays, 0) X(glad_glDrawElements, elementBytes) \
+    X(glad_glArrayElement, 0) X(glad_glDrawArrays, 0) X(glad_glDrawElements, elementBytes)         \
+    X(glad_glLightf, 0) X(glad_glLighti, 0) X(glad_glLightfv, lightCount<GLfloat>) X(glad_glLightiv, lightCount<GLint>) \
+    X(glad_glMaterialf, 0) X(glad_glMateriali, 0) X(glad_glMaterialfv, lightCount<GLfloat>)      \
+    X(glad_glMaterialiv, lightCount<GLint>) X(glad_glLightModelf, 0) X(glad_glLightModeli, 0)    \
+    X(glad_glLightModelfv, lightModelCount<GLfloat>) X(glad_glLightModeliv, lightModelCount<GLint>) \
+    X(glad_glColorMaterial, 0) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
     X(glad_glPushName, 0) X(glad_glPopName, 0)
 

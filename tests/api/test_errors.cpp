@@ -181,14 +181,14 @@ TEST(GlErrors, NotImplementedFunctionsReportThemselvesInsteadOfCrashing) {
     context.makeCurrent();
     const GLfloat position[4] = {0, 0, 1, 0};
     testing::internal::CaptureStderr();
-    glLightfv(GL_LIGHT0, GL_POSITION, position);
+    glAccum(GL_ACCUM, 0.5f);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
-    glLightfv(GL_LIGHT1, GL_POSITION, position);  // named once per process
+    glAccum(GL_LOAD, 1.0f);  // named once per process
     EXPECT_EQ(glIsTexture(1), GL_FALSE);  // a value-returning one returns zero
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, position);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
     const std::string said = testing::internal::GetCapturedStderr();
-    EXPECT_EQ(said, "MyGL: glLightfv is not implemented yet (GL_INVALID_OPERATION)\n"
+    EXPECT_EQ(said, "MyGL: glAccum is not implemented yet (GL_INVALID_OPERATION)\n"
                     "MyGL: glIsTexture is not implemented yet (GL_INVALID_OPERATION)\n"
                     "MyGL: glTexImage2D is not implemented yet (GL_INVALID_OPERATION)\n");
     // The program goes on drawing.

@@ -44,6 +44,8 @@ struct DrawState {
     float lineWidth = 1.0f;
     float pointSize = 1.0f;
     bool selection = false;  // GL_SELECT: primitives make hits (Pipeline::takeHits), not pixels
+    // Two-sided lighting: filled triangles facing back take their vertices' back colours.
+    bool twoSidedColors = false;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }
