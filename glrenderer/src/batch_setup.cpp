@@ -78,7 +78,7 @@ void BatchSetup::setUp(const SubmittedBatch& submitted, TriangleTarget& target, 
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
-    const Call call{batch, &target, stats, fragments,
+    const Call call{batch, &target, stats, &fragments,
                     path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
                         batch.methods.culling == CullMethod::WindowArea};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
@@ -91,8 +91,7 @@ void BatchSetup::select(const SubmittedBatch& submitted, HitRange& hits, Stats& 
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));  // (unused)
-    const Call call{batch, nullptr, stats, fragments, batch.state.cullEnabled, &hits};
+    const Call call{batch, nullptr, stats, nullptr, batch.state.cullEnabled, &hits};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), DecompositionPath::DrawModule,
                        v1v3Quads, [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
@@ -163,7 +162,7 @@ void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
-    setUpTriangle(Call{batch, &target, stats, fragments}, v0, v1, v2, flatColor);
+    setUpTriangle(Call{batch, &target, stats, &fragments}, v0, v1, v2, flatColor);
 }
 
 // Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.
@@ -202,7 +201,7 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     ++call.stats.rasterized;
-    if (prepareTriangle(triangle, call.fragments, methods.raster, framebuffer_.width(), framebuffer_.height(),
+    if (prepareTriangle(triangle, *call.fragments, methods.raster, framebuffer_.width(), framebuffer_.height(),
                         call.target->slot())) {
         call.target->keep();
     }

@@ -57,7 +57,7 @@ private:
         const Batch& batch;
         TriangleTarget* target;  // null in GL_SELECT
         Stats& stats;
-        const FragmentChoice& fragments;  // the batch's, chosen once
+        const FragmentChoice* fragments;  // the batch's, chosen once; null in GL_SELECT
         // The batch goes through the reference's draw module with culling on: its cull stage
         // decides first, by drawModuleFacing.
         bool drawModuleCulls = false;

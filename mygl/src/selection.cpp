@@ -5,10 +5,8 @@
 
 #include "compiled.h"
 #include "not_implemented.h"
-#include "selection_records.h"
 
 namespace mygl {
-
 namespace {
 
 // A window depth in [0, 1] as the reference stores it: multiplied by (float)0xFFFFFFFF, which is
@@ -19,8 +17,8 @@ GLuint hitDepth(float z) {
     return static_cast<GLuint>(static_cast<std::int64_t>(scaled));
 }
 
-}  // namespace
-
+// Writes a hit record of what was hit since the last one (draws and raster positions), if
+// anything was, under the current names.
 void writeHitRecord(Context::State& s) {
     glrenderer::HitRange range = s.pipeline.takeHits();
     range.add(s.selection.rasterHits);
@@ -33,8 +31,6 @@ void writeHitRecord(Context::State& s) {
     for (GLuint name : sel.names) sel.write(name);
     ++sel.hits;
 }
-
-namespace {
 
 // The name stack calls: ignored outside GL_SELECT; otherwise `change` runs after the record of
 // what was hit under the old names (unless it reports an error first: it returns false).
