@@ -29,7 +29,7 @@ struct SubmittedBatch : BatchHeader {
     std::span<const Vertex> vertices;
 };
 
-// One draw after the vertex stage (VertexStage::toClipSpace).
+// One draw after the vertex stage, its vertices assembled (VertexStage::assemble).
 struct Batch : BatchHeader {
     std::span<const ClipVertex> vertices;
 };

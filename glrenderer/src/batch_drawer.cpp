@@ -18,7 +18,7 @@ void BatchDrawer::draw(const SubmittedBatch& submitted) {
         setup_.setUp(submitted, tiles_, stats_);
         return;
     }
-    const Batch batch = setup_.toClipSpace(submitted);
+    const Batch batch = setup_.stage(submitted);
     if (isTriangleMode(batch.mode)) {
         drawUnfilled(batch);
     } else {
@@ -42,12 +42,11 @@ void BatchDrawer::draw(const BatchChunk& chunk) {
 // depth of what comes out; polygons count as filled whatever their polygon mode.
 void BatchDrawer::select(const SubmittedBatch& submitted) {
     if (isTriangleMode(submitted.mode)) return setup_.select(submitted, hits_, stats_);
-    selectPointsAndLines(submitted.mode, setup_.toClipSpace(submitted).vertices, submitted.state, framebuffer_.height(),
+    selectPointsAndLines(submitted.mode, setup_.stage(submitted).vertices, submitted.state, framebuffer_.height(),
                          hits_);
 }
 
 void BatchDrawer::drawUnfilled(const Batch& batch) {
-    setup_.transform(batch);
     const UnfilledTarget target{
         [&](const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const glm::vec4& flatColor) {
             setup_.setUpTriangle(batch, v0, v1, v2, flatColor, tiles_, stats_);

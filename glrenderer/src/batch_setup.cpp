@@ -62,63 +62,73 @@ bool BatchSetup::setUp(BatchChunk& chunk, ArenaWriter& writer) {
     return true;
 }
 
-std::uint8_t BatchSetup::transform(const Batch& batch) {
-    const ViewportTransform viewport(batch.state, framebuffer_.height());
-    const std::size_t count = batch.vertices.size();
-    outcodes_.resize(count);
-    windowVertices_.resize(count);
-    return transformVertices(batch.vertices, viewport, outcodes_.data(), windowVertices_.data());
+std::uint8_t BatchSetup::run(const SubmittedBatch& batch) {
+    return vertexStage_.run(batch, ViewportTransform(batch.state, framebuffer_.height()));
 }
 
-void BatchSetup::setUp(const SubmittedBatch& submitted, TriangleTarget& target, Stats& stats) {
-    const Batch batch = toClipSpace(submitted);
-    const std::uint8_t anyOutside = transform(batch);
+Batch BatchSetup::stage(const SubmittedBatch& batch) {
+    run(batch);
+    return vertexStage_.assemble(batch);
+}
+
+void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stats& stats) {
+    const std::uint8_t anyOutside = run(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
-    const Call call{batch, &target, stats, &fragments,
+    const std::span<const ClipVertex> assembled =
+        batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
+    const Call call{batch, batch.vertices, assembled, &target, stats, &fragments,
                     path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
                         batch.methods.culling == CullMethod::WindowArea};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
                        [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
 
-void BatchSetup::select(const SubmittedBatch& submitted, HitRange& hits, Stats& stats) {
-    const Batch batch = toClipSpace(submitted);
-    transform(batch);
+void BatchSetup::select(const SubmittedBatch& batch, HitRange& hits, Stats& stats) {
+    run(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const Call call{batch, nullptr, stats, nullptr, batch.state.cullEnabled, &hits};
+    const std::span<const ClipVertex> assembled =
+        batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
+    const Call call{batch, batch.vertices, assembled, nullptr, stats, nullptr, batch.state.cullEnabled, &hits};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), DecompositionPath::DrawModule,
                        v1v3Quads, [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
 
 void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const ViewportTransform& viewport) {
-    const Batch& batch = call.batch;
-    const auto& vertices = batch.vertices;
+    const BatchHeader& batch = call.batch;
+    const std::span<const std::uint8_t> outcodes = vertexStage_.outcodes();
+    const std::span<const WindowVertex> windowVertices = vertexStage_.windowVertices();
     ++call.stats.triangles;
     if (batch.methods.culling != CullMethod::WindowArea && batch.state.cullEnabled) {
-        const Facing facing = seedFacing(batch.methods.culling, vertices[t.v[0]], vertices[t.v[1]],
-                                         vertices[t.v[2]], batch.state.frontFaceCCW);
+        const auto& eye = call.assembled;
+        const Facing facing = seedFacing(batch.methods.culling, eye[t.v[0]], eye[t.v[1]], eye[t.v[2]],
+                                         batch.state.frontFaceCCW);
         if (facing != Facing::ZeroArea && isCulled(batch.state, facing)) {  // edge-on: the seeds keep it
             ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
             return;
         }
     }
-    const std::uint8_t outsideAny = outcodes_[t.v[0]] | outcodes_[t.v[1]] | outcodes_[t.v[2]];
+    const Vertex& provoking = call.vertices[t.v[2]];
+    const std::uint8_t outsideAny = outcodes[t.v[0]] | outcodes[t.v[1]] | outcodes[t.v[2]];
     if (outsideAny == 0) {
-        setUpSidedTriangle(call, {windowVertices_[t.v[0]], windowVertices_[t.v[1]], windowVertices_[t.v[2]]},
-                           {&vertices[t.v[0]], &vertices[t.v[1]], &vertices[t.v[2]]}, vertices[t.v[2]]);
+        const auto& v = call.vertices;
+        setUpSidedTriangle(call, {windowVertices[t.v[0]], windowVertices[t.v[1]], windowVertices[t.v[2]]},
+                           {{&v[t.v[0]].backColor, &v[t.v[1]].backColor, &v[t.v[2]].backColor},
+                            provoking.color, provoking.backColor});
         return;
     }
-    if (outcodes_[t.v[0]] & outcodes_[t.v[1]] & outcodes_[t.v[2]]) {
+    if (outcodes[t.v[0]] & outcodes[t.v[1]] & outcodes[t.v[2]]) {
         ++call.stats.clippedAway;
         return;
     }
-    const ClippedPolygon polygon = clipTriangle(vertices[t.v[0]], vertices[t.v[1]], vertices[t.v[2]], outsideAny);
+    const ClippedPolygon polygon =
+        clipTriangle(vertexStage_.clipVertex(call.vertices, t.v[0]), vertexStage_.clipVertex(call.vertices, t.v[1]),
+                     vertexStage_.clipVertex(call.vertices, t.v[2]), outsideAny);
     if (polygon.count < 3) {
         ++call.stats.clippedAway;
         return;
@@ -128,7 +138,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     const auto window = [&](int i) {
         const int source = polygon.source[static_cast<std::size_t>(i)];
         return source == kNewVertex ? viewport.applyToClipped(polygon.vertices[static_cast<std::size_t>(i)])
-                                    : windowVertices_[t.v[source]];
+                                    : windowVertices[t.v[source]];
     };
     const WindowVertex first = window(0);
     WindowVertex previous = window(1);
@@ -136,8 +146,9 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     for (int i = 2; i < polygon.count; ++i) {
         const WindowVertex current = window(i);
         const auto k = static_cast<std::size_t>(i);
-        setUpSidedTriangle(call, {previous, current, first}, {&clipped[k - 1], &clipped[k], &clipped[0]},
-                           vertices[t.v[2]]);
+        setUpSidedTriangle(call, {previous, current, first},
+                           {{&clipped[k - 1].backColor, &clipped[k].backColor, &clipped[0].backColor},
+                            provoking.color, provoking.backColor});
         previous = current;
     }
 }
@@ -145,24 +156,23 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
 // With two-sided lighting a triangle that setup finds facing back (its fixed-point area, after
 // clipping) takes the back colours: the reference picks them in the fragment shader by
 // gl_FrontFacing, both colours interpolated as usual.
-void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
-                                    const std::array<const ClipVertex*, 3>& source, const ClipVertex& provoking) {
+void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window, const SidedColors& colors) {
     const DrawState& state = call.batch.state;
     if (state.twoSidedColors) {
         const std::int64_t area = fixedArea(snap(window[0]), snap(window[1]), snap(window[2]));
         if (facingOf(area, state.frontFaceCCW) == Facing::Back) {
-            for (std::size_t i = 0; i < 3; ++i) window[i].color = source[i]->backColor;
-            return setUpTriangle(call, window[0], window[1], window[2], provoking.backColor);
+            for (std::size_t i = 0; i < 3; ++i) window[i].color = *colors.back[i];
+            return setUpTriangle(call, window[0], window[1], window[2], colors.flatBack);
         }
     }
-    setUpTriangle(call, window[0], window[1], window[2], provoking.color);
+    setUpTriangle(call, window[0], window[1], window[2], colors.flat);
 }
 
-void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1,
+void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
-    setUpTriangle(Call{batch, &target, stats, &fragments}, v0, v1, v2, flatColor);
+    setUpTriangle(Call{batch, {}, {}, &target, stats, &fragments}, v0, v1, v2, flatColor);
 }
 
 // Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.

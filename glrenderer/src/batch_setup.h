@@ -25,10 +25,7 @@ public:
     // Its scratch arrays are sized for `batchVertices`, so that a batch of up to that many
     // allocates nothing, however rarely this instance is used.
     BatchSetup(const Framebuffer& framebuffer, std::size_t batchVertices)
-        : framebuffer_(framebuffer), vertexStage_(batchVertices) {
-        outcodes_.reserve(batchVertices);
-        windowVertices_.reserve(batchVertices);
-    }
+        : framebuffer_(framebuffer), vertexStage_(batchVertices) {}
 
     // Whether setUp() takes the batch: filled triangles (the unfilled stage draws lines at once).
     static bool handles(const BatchHeader& batch);
@@ -41,20 +38,21 @@ public:
     // counts, if it handles them all; returns whether it did.
     bool setUp(BatchChunk& chunk, ArenaWriter& writer);
 
-    // The batch in clip space, for the stages that draw at once (kept until the next batch).
-    Batch toClipSpace(const SubmittedBatch& batch) { return vertexStage_.toClipSpace(batch); }
-    // The parts for the unfilled stage, which decomposes and clips the batch itself: window
-    // positions and outcodes of its vertices (kept until the next batch), and the setup of one
-    // triangle already clipped.
-    std::uint8_t transform(const Batch& batch);
-    std::span<const std::uint8_t> outcodes() const { return outcodes_; }
-    std::span<const WindowVertex> windowVertices() const { return windowVertices_; }
-    void setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+    // The batch through the vertex stage with every vertex assembled, for the stages that draw at
+    // once and the unfilled stage (which decomposes and clips the batch itself), with its
+    // vertices' outcodes and window positions; all kept until the next batch.
+    Batch stage(const SubmittedBatch& batch);
+    std::span<const std::uint8_t> outcodes() const { return vertexStage_.outcodes(); }
+    std::span<const WindowVertex> windowVertices() const { return vertexStage_.windowVertices(); }
+    // The setup of one triangle the unfilled stage has clipped.
+    void setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor, TriangleTarget& target, Stats& stats);
 
 private:
     struct Call {
-        const Batch& batch;
+        const BatchHeader& batch;
+        std::span<const Vertex> vertices;       // as the program gave them
+        std::span<const ClipVertex> assembled;  // only when the culling method needs eye space
         TriangleTarget* target;  // null in GL_SELECT
         Stats& stats;
         const FragmentChoice* fragments;  // the batch's, chosen once; null in GL_SELECT
@@ -64,16 +62,20 @@ private:
         HitRange* hits = nullptr;  // GL_SELECT
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
-    void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
-                            const std::array<const ClipVertex*, 3>& source, const ClipVertex& provoking);
+    // Two-sided colours: a triangle's window vertices with their back colours, and its provoking
+    // vertex's front and back colours.
+    struct SidedColors {
+        std::array<const glm::vec4*, 3> back;
+        const glm::vec4& flat;
+        const glm::vec4& flatBack;
+    };
+    void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window, const SidedColors& colors);
+    std::uint8_t run(const SubmittedBatch& batch);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);
 
     const Framebuffer& framebuffer_;  // for its size only
     VertexStage vertexStage_;
-    // Per batch vertex: which clip planes it is outside of, and its window position.
-    std::vector<std::uint8_t> outcodes_;
-    std::vector<WindowVertex> windowVertices_;
 };
 
 }  // namespace glrenderer

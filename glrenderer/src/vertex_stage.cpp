@@ -1,8 +1,7 @@
 #include "vertex_stage.h"
 
-#include <xmmintrin.h>
-
 #include "clip.h"
+#include "column_transform.h"
 #include "cpu_features.h"
 
 namespace glrenderer {
@@ -15,57 +14,60 @@ glm::vec3 eyeNormal(const Matrix& m, const glm::vec3& n) {
             at(m, 2, 0) * n.x + at(m, 2, 1) * n.y + at(m, 2, 2) * n.z};
 }
 
-// transform() on the four rows at once: a column times a coordinate, summed left to right, each
-// product and sum rounded, as there.
-class ColumnTransform {
-public:
-    explicit ColumnTransform(const Matrix& m)
-        : c0_(_mm_loadu_ps(&m[0])), c1_(_mm_loadu_ps(&m[4])), c2_(_mm_loadu_ps(&m[8])), c3_(_mm_loadu_ps(&m[12])) {}
-    void apply(const glm::vec4& v, glm::vec4& out) const {
-        __m128 r = _mm_add_ps(_mm_mul_ps(c0_, _mm_set1_ps(v.x)), _mm_mul_ps(c1_, _mm_set1_ps(v.y)));
-        r = _mm_add_ps(r, _mm_mul_ps(c2_, _mm_set1_ps(v.z)));
-        r = _mm_add_ps(r, _mm_mul_ps(c3_, _mm_set1_ps(v.w)));
-        _mm_storeu_ps(&out.x, r);
-    }
-
-private:
-    __m128 c0_, c1_, c2_, c3_;
-};
-
 }  // namespace
 
-Batch VertexStage::toClipSpace(const SubmittedBatch& batch) {
+VertexStage::VertexStage(std::size_t batchVertices) {
+    clipPositions_.reserve(batchVertices);
+    outcodes_.reserve(batchVertices);
+    windowVertices_.reserve(batchVertices);
+    clipVertices_.reserve(batchVertices);
+}
+
+std::uint8_t VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& viewport) {
+    const std::size_t count = batch.vertices.size();
+    clipPositions_.resize(count);
+    outcodes_.resize(count);
+    windowVertices_.resize(count);
+    const StagedVertices out{clipPositions_.data(), outcodes_.data(), windowVertices_.data()};
+    const Matrix& mvp = batch.transform.modelviewProjection;
+    return cpuHasFma() ? stageVerticesFma(batch.vertices, mvp, viewport, out)
+                       : stageVertices(batch.vertices, mvp, viewport, out);
+}
+
+ClipVertex VertexStage::clipVertex(std::span<const Vertex> vertices, std::size_t i) const {
+    const Vertex& in = vertices[i];
+    ClipVertex out;
+    out.position = clipPositions_[i];
+    out.color = in.color;
+    out.backColor = in.backColor;
+    out.edgeFlag = in.edgeFlag;
+    return out;
+}
+
+Batch VertexStage::assemble(const SubmittedBatch& batch) {
     const std::size_t count = batch.vertices.size();
     clipVertices_.resize(count);
-    const VertexTransform& t = batch.transform;
-    const ColumnTransform modelviewProjection(t.modelviewProjection);
-    for (std::size_t i = 0; i < count; ++i) {
-        const Vertex& in = batch.vertices[i];
-        ClipVertex& out = clipVertices_[i];
-        modelviewProjection.apply(in.position, out.position);
-        out.color = in.color;
-        out.edgeFlag = in.edgeFlag;
-    }
-    if (batch.state.twoSidedColors) {
-        for (std::size_t i = 0; i < count; ++i) clipVertices_[i].backColor = batch.vertices[i].backColor;
-    }
+    for (std::size_t i = 0; i < count; ++i) clipVertices_[i] = clipVertex(batch.vertices, i);
     if (batch.methods.needsEyeSpace()) {
+        const Matrix& modelview = batch.transform.modelview;
         for (std::size_t i = 0; i < count; ++i) {
-            clipVertices_[i].eye = glm::vec3(transform(t.modelview, batch.vertices[i].position));
-            clipVertices_[i].normal = eyeNormal(t.modelview, batch.vertices[i].normal);
+            clipVertices_[i].eye = glm::vec3(transform(modelview, batch.vertices[i].position));
+            clipVertices_[i].normal = eyeNormal(modelview, batch.vertices[i].normal);
         }
     }
     return Batch{batch, clipVertices_};
 }
 
-std::uint8_t transformVertices(std::span<const ClipVertex> vertices, const ViewportTransform& viewport,
-                               std::uint8_t* outcodes, WindowVertex* windowVertices) {
-    if (cpuHasFma()) return transformVerticesFma(vertices, viewport, outcodes, windowVertices);
+std::uint8_t stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+                           const ViewportTransform& viewport, const StagedVertices& out) {
+    const ColumnTransform toClip(modelviewProjection);
     std::uint8_t anyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
-        outcodes[i] = clipOutcode(vertices[i].position);
-        anyOutside |= outcodes[i];
-        windowVertices[i] = viewport.apply(vertices[i]);
+        glm::vec4& clip = out.clipPositions[i];
+        _mm_storeu_ps(&clip.x, toClip.apply(vertices[i].position));
+        out.outcodes[i] = clipOutcode(clip);
+        anyOutside |= out.outcodes[i];
+        out.windowVertices[i] = viewport.apply(clip, vertices[i].color);
     }
     return anyOutside;
 }

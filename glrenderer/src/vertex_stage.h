@@ -9,30 +9,48 @@
 
 namespace glrenderer {
 
-// The vertex stage's first half, per batch on the pipeline's side: the vertices from object to
-// clip space with the batch's matrices, and eye-space positions and normals when its culling
-// method looks at them.
+// The vertex stage, per batch on the pipeline's side, in one pass over the program's vertices:
+// each one to clip space with the batch's matrices, its clip outcode and its window position.
+// Whole ClipVertex records (what the clipper and the stages that draw at once take) are
+// assembled from these only when asked: most triangles never need one.
 class VertexStage {
 public:
-    // Its array is sized for `batchVertices`, so that a batch of up to that many allocates nothing.
-    explicit VertexStage(std::size_t batchVertices) { clipVertices_.reserve(batchVertices); }
+    // Its arrays are sized for `batchVertices`, so that a batch of up to that many allocates nothing.
+    explicit VertexStage(std::size_t batchVertices);
 
-    // The batch in clip space; its vertices stay valid until the next call.
-    Batch toClipSpace(const SubmittedBatch& batch);
+    // Stages the batch; returns the union of its vertices' outcodes. The arrays below hold the
+    // batch's vertices until the next call.
+    std::uint8_t run(const SubmittedBatch& batch, const ViewportTransform& viewport);
+    std::span<const std::uint8_t> outcodes() const { return outcodes_; }
+    std::span<const WindowVertex> windowVertices() const { return windowVertices_; }
+
+    // Vertex i of the batch last run (`vertices` its program's vertices), as the clipper takes it (without eye space).
+    ClipVertex clipVertex(std::span<const Vertex> vertices, std::size_t i) const;
+    // Every vertex of the batch last run, with eye-space positions and normals when its culling
+    // method looks at them (Methods::needsEyeSpace); valid until the next call.
+    Batch assemble(const SubmittedBatch& batch);
 
 private:
+    std::vector<glm::vec4> clipPositions_;
+    std::vector<std::uint8_t> outcodes_;
+    std::vector<WindowVertex> windowVertices_;
     std::vector<ClipVertex> clipVertices_;
 };
 
-// The second half: each vertex's clip outcode (clipOutcode) and window position
-// (ViewportTransform::apply), into arrays as long as `vertices`. Returns the union of the
-// outcodes. CPUs with FMA take a version that works on a vertex's four coordinates at once
-// (without FMA, apply()'s fused multiply-adds are library calls); the bits are the same.
-std::uint8_t transformVertices(std::span<const ClipVertex> vertices, const ViewportTransform& viewport,
-                               std::uint8_t* outcodes, WindowVertex* windowVertices);
+// The pass itself, into arrays as long as `vertices`: clip position (the MVP applied by
+// ColumnTransform), clipOutcode and ViewportTransform::apply. Returns the union of the outcodes.
+// CPUs with FMA take a version that works on a vertex's four coordinates at once (without FMA,
+// apply()'s fused multiply-adds are library calls); the bits are the same.
+struct StagedVertices {
+    glm::vec4* clipPositions;
+    std::uint8_t* outcodes;
+    WindowVertex* windowVertices;
+};
+std::uint8_t stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+                           const ViewportTransform& viewport, const StagedVertices& out);
 
 // The version for CPUs with FMA, compiled for them; only call it after cpuHasFma().
-std::uint8_t transformVerticesFma(std::span<const ClipVertex> vertices, const ViewportTransform& viewport,
-                                  std::uint8_t* outcodes, WindowVertex* windowVertices);
+std::uint8_t stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+                              const ViewportTransform& viewport, const StagedVertices& out);
 
 }  // namespace glrenderer

@@ -1,8 +1,9 @@
 // The vertex stage for CPUs with FMA, compiled with -mfma -msse4.1 and called only after
-// cpuHasFma(). Each lane performs clipOutcode's and ViewportTransform::apply's float operations
-// in the same order, so the bits match theirs.
+// cpuHasFma(). Each lane performs ColumnTransform's, clipOutcode's and ViewportTransform::apply's
+// float operations in the same order, so the bits match theirs.
 #include <immintrin.h>
 
+#include "column_transform.h"
 #include "vertex_stage.h"
 
 namespace glrenderer {
@@ -19,25 +20,27 @@ std::uint8_t outcodeFromLanes(int outsideMinus, int outsidePlus) {
 
 }  // namespace
 
-std::uint8_t transformVerticesFma(std::span<const ClipVertex> vertices, const ViewportTransform& viewport,
-                                  std::uint8_t* outcodes, WindowVertex* windowVertices) {
+std::uint8_t stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+                              const ViewportTransform& viewport, const StagedVertices& out) {
+    const ColumnTransform toClip(modelviewProjection);
     const __m128 scale = _mm_setr_ps(viewport.scaleX(), viewport.scaleY(), viewport.scaleZ(), 0.0f);
     const __m128 translate = _mm_setr_ps(viewport.translateX(), viewport.translateY(), viewport.translateZ(), 0.0f);
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
     std::uint8_t anyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
-        const __m128 p = _mm_loadu_ps(&vertices[i].position.x);
+        const __m128 p = toClip.apply(vertices[i].position);
+        _mm_storeu_ps(&out.clipPositions[i].x, p);
         const __m128 w = _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 3, 3, 3));
         const int outsideMinus = ~_mm_movemask_ps(_mm_cmpge_ps(_mm_sub_ps(w, p), zero)) & 7;
         const int outsidePlus = ~_mm_movemask_ps(_mm_cmpge_ps(_mm_add_ps(p, w), zero)) & 7;
-        outcodes[i] = outcodeFromLanes(outsideMinus, outsidePlus);
-        anyOutside |= outcodes[i];
+        out.outcodes[i] = outcodeFromLanes(outsideMinus, outsidePlus);
+        anyOutside |= out.outcodes[i];
 
         const __m128 invW = _mm_div_ps(one, w);
         const __m128 window = _mm_fmadd_ps(_mm_mul_ps(p, invW), scale, translate);
-        WindowVertex& out = windowVertices[i];
-        _mm_storeu_ps(&out.x, _mm_blend_ps(window, invW, 0b1000));  // x, y, z, invW
-        _mm_storeu_ps(&out.color.x, _mm_loadu_ps(&vertices[i].color.x));
+        WindowVertex& windowVertex = out.windowVertices[i];
+        _mm_storeu_ps(&windowVertex.x, _mm_blend_ps(window, invW, 0b1000));  // x, y, z, invW
+        _mm_storeu_ps(&windowVertex.color.x, _mm_loadu_ps(&vertices[i].color.x));
     }
     return anyOutside;
 }

@@ -17,14 +17,13 @@ ViewportTransform::ViewportTransform(const DrawState& state, int framebufferHeig
     translateZ_ = state.depthTranslate();
 }
 
-WindowVertex ViewportTransform::apply(const ClipVertex& vertex) const {
-    const glm::vec4& p = vertex.position;
+WindowVertex ViewportTransform::apply(const glm::vec4& p, const glm::vec4& color) const {
     WindowVertex out;
     out.invW = 1.0f / p.w;
     out.x = std::fma(p.x * out.invW, scaleX_, translateX_);
     out.y = std::fma(p.y * out.invW, scaleY_, translateY_);
     out.z = std::fma(p.z * out.invW, scaleZ_, translateZ_);
-    out.color = vertex.color;
+    out.color = color;
     return out;
 }
 

@@ -22,7 +22,8 @@ public:
 
     // A vertex from the program: x_window = fma(x_clip * (1 / w), scale, translate), as the
     // reference's vertex stage computes it (one rounding for the multiply-add).
-    WindowVertex apply(const ClipVertex& vertex) const;
+    WindowVertex apply(const glm::vec4& clipPosition, const glm::vec4& color) const;
+    WindowVertex apply(const ClipVertex& vertex) const { return apply(vertex.position, vertex.color); }
     // A vertex made by clipping: the same formula with a separate multiply and add, as the
     // reference's clipper computes it.
     WindowVertex applyToClipped(const ClipVertex& vertex) const;

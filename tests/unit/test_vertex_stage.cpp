@@ -1,5 +1,6 @@
-// The vertex stage's FMA version against the scalar operations it reproduces (clipOutcode and
-// ViewportTransform::apply): the same outcodes and window vertices bit for bit, on ordinary
+// The vertex stage's FMA version against the scalar operations it reproduces (ColumnTransform,
+// clipOutcode and ViewportTransform::apply): the same clip positions, outcodes and window
+// vertices bit for bit, on ordinary
 // vertices and on the ones that break things (w = 0, negative w, NaN, infinities, huge values).
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "clip.h"
+#include "column_transform.h"
 #include "cpu_features.h"
 #include "vertex_stage.h"
 
@@ -22,15 +24,15 @@ bool sameFloat(float a, float b) {
     return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b) || (std::isnan(a) && std::isnan(b));
 }
 
-std::vector<ClipVertex> testVertices() {
+std::vector<Vertex> testVertices() {
     const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
     const float special[] = {0.0f, -0.0f, 1.0f, -1.0f, 1e-30f, -1e-30f, 1e30f, -1e30f, inf, -inf, nan, 0.5f, 3.0f};
-    std::vector<ClipVertex> vertices;
+    std::vector<Vertex> vertices;
     std::mt19937 random(11);
     std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f), w(-1.0f, 4.0f);
     std::uniform_int_distribution<std::size_t> pick(0, std::size(special) - 1);
     for (int i = 0; i < 4000; ++i) {
-        ClipVertex v;
+        Vertex v;
         v.position = {coordinate(random), coordinate(random), coordinate(random), w(random)};
         if (i % 4 == 0) v.position[i / 4 % 4] = special[pick(random)];  // one special coordinate
         if (i % 16 == 1) v.position = {special[pick(random)], special[pick(random)], special[pick(random)], special[pick(random)]};
@@ -44,23 +46,32 @@ std::vector<ClipVertex> testVertices() {
 
 TEST(VertexStage, FmaVersionMatchesTheScalarOperationsBitForBit) {
     if (!cpuHasFma()) GTEST_SKIP() << "this CPU has no FMA";
-    const std::vector<ClipVertex> vertices = testVertices();
+    const std::vector<Vertex> vertices = testVertices();
     DrawState state;
     state.viewport = {13, -7, 641, 479};
     state.depthNear = 0.25f;
     state.depthFar = 0.75f;
     const ViewportTransform viewport(state, 500);
+    // A projection with a non-trivial w row, times a rotation and a translation.
+    const Matrix mvp = {0.8f, 0.1f, -0.3f, -0.3f, -0.2f, 1.3f, 0.05f, 0.05f,
+                        0.4f, -0.1f, -1.0f, -1.0f, 0.25f, -0.5f, 2.0f, 3.0f};
+    const ColumnTransform toClip(mvp);
+    std::vector<glm::vec4> clip(vertices.size());
     std::vector<std::uint8_t> outcodes(vertices.size());
     std::vector<WindowVertex> window(vertices.size());
-    const std::uint8_t anyOutside = transformVerticesFma(vertices, viewport, outcodes.data(), window.data());
+    const std::uint8_t anyOutside = stageVerticesFma(vertices, mvp, viewport, {clip.data(), outcodes.data(), window.data()});
     std::uint8_t expectedAnyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
-        const std::uint8_t outcode = clipOutcode(vertices[i].position);
-        const WindowVertex expected = viewport.apply(vertices[i]);
+        glm::vec4 expectedClip;
+        _mm_storeu_ps(&expectedClip.x, toClip.apply(vertices[i].position));
+        const std::uint8_t outcode = clipOutcode(expectedClip);
+        const WindowVertex expected = viewport.apply(expectedClip, vertices[i].color);
         expectedAnyOutside |= outcode;
         ASSERT_EQ(outcodes[i], outcode) << "vertex " << i;
-        const float got[] = {window[i].x, window[i].y, window[i].z, window[i].invW, window[i].color.r, window[i].color.b};
-        const float want[] = {expected.x, expected.y, expected.z, expected.invW, expected.color.r, expected.color.b};
+        const float got[] = {clip[i].x, clip[i].y, clip[i].z, clip[i].w, window[i].x, window[i].y, window[i].z,
+                             window[i].invW, window[i].color.r, window[i].color.b};
+        const float want[] = {expectedClip.x, expectedClip.y, expectedClip.z, expectedClip.w, expected.x, expected.y,
+                              expected.z, expected.invW, expected.color.r, expected.color.b};
         for (std::size_t k = 0; k < std::size(got); ++k) {
             ASSERT_TRUE(sameFloat(got[k], want[k])) << "vertex " << i << " component " << k << ": " << got[k] << " vs " << want[k];
         }
