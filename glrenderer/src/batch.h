@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "glrenderer/draw_state.h"
+#include "glrenderer/lighting.h"
 #include "glrenderer/methods.h"
 #include "glrenderer/pipeline.h"
 #include "glrenderer/stats.h"
@@ -22,6 +23,9 @@ struct BatchHeader {
     PrimitiveMode mode = PrimitiveMode::Points;
     QuadSplit quadSplit = QuadSplit::ByPath;
     bool colorsPerVertex = false;  // glColor was called inside its glBegin/glEnd blocks
+    // Lights the batch's vertices in the vertex stage (lightChunk); null when they are unlit or
+    // were lit by the program's thread. Owned by the pipeline until the batch is drawn.
+    const VertexLighting* lighting = nullptr;
 };
 
 // One draw with its vertices as the program gave them.
@@ -55,6 +59,7 @@ struct BatchChunk {
 
     std::vector<Vertex> vertices;
     std::vector<BatchEntry> batches;
+    bool lit = false;  // lightChunk has lit its batches' vertices
     // Set when the chunk's poster has set its triangles up (BatchSetup, into slots of the
     // tiles' TriangleArena), as it does when the batch thread is behind: drawing the chunk then
     // only queues `setUpTriangles` and adds `setupStats`.
@@ -73,6 +78,7 @@ struct BatchChunk {
     void clear() {
         vertices.clear();
         batches.clear();
+        lit = false;
         setUp = false;
         setUpTriangles.clear();
         setupStats = {};

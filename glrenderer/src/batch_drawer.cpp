@@ -1,6 +1,7 @@
 #include "batch_drawer.h"
 
 #include "decompose.h"
+#include "vertex_stage.h"
 #include "points_lines.h"
 #include "unfilled.h"
 
@@ -28,8 +29,9 @@ void BatchDrawer::draw(const SubmittedBatch& submitted) {
     }
 }
 
-void BatchDrawer::draw(const BatchChunk& chunk) {
+void BatchDrawer::draw(BatchChunk& chunk) {
     if (!chunk.setUp) {
+        lightChunk(chunk);
         for (const BatchEntry& entry : chunk.batches) draw(chunk.batch(entry));
         return;
     }

@@ -28,7 +28,7 @@ public:
     HitRange takeHits() { return std::exchange(hits_, {}); }
     // Every batch of the chunk, in order; triangles its poster has set up already are only
     // queued.
-    void draw(const BatchChunk& chunk);
+    void draw(BatchChunk& chunk);
     // Rasterizes the binned triangles (in parallel tiles) and any pending clear.
     void flush();
     // The same if triangles are queued; a pending clear alone stays pending.

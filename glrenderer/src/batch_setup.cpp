@@ -53,6 +53,7 @@ bool BatchSetup::handles(const BatchHeader& batch) {
 }
 
 bool BatchSetup::setUp(BatchChunk& chunk, ArenaWriter& writer) {
+    lightChunk(chunk);
     for (const BatchEntry& entry : chunk.batches) {
         if (!handles(entry)) return false;
     }

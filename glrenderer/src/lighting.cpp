@@ -5,6 +5,8 @@
 // the instruction it reproduces.
 #include "glrenderer/lighting.h"
 
+#include "glrenderer/saturate.h"
+
 #include "cpu_features.h"
 
 #include <algorithm>
@@ -248,6 +250,12 @@ glm::vec4 VertexLighting::light(const glm::vec4& object, const glm::vec3& normal
     }
     sum.w = alpha;
     return sum;
+}
+
+void VertexLighting::lightVertex(Vertex& vertex, bool twoSided) const {
+    const glm::vec4 color = vertex.color;
+    vertex.color = saturate(light(vertex.position, vertex.normal, color));
+    if (twoSided) vertex.backColor = saturate(light(vertex.position, vertex.normal, color, 1));
 }
 
 }  // namespace glrenderer

@@ -6,6 +6,7 @@
 #include "decompose.h"
 #include "denormals_are_zero.h"
 #include "glrenderer/immediate_buffer.h"
+#include "lighting_pool.h"
 #include "thread_count.h"
 
 namespace glrenderer {
@@ -49,7 +50,7 @@ std::unique_ptr<BatchChunk> makeChunk() {
 }  // namespace
 
 Pipeline::Pipeline(Framebuffer& framebuffer)
-    : chunk_(makeChunk()), batch_(std::make_unique<BatchEntry>()),
+    : chunk_(makeChunk()), batch_(std::make_unique<BatchEntry>()), lightings_(std::make_unique<LightingPool>()),
       drawer_(std::make_unique<BatchDrawer>(framebuffer)) {
     if (workerThreadCount() > 1) {
         std::vector<std::unique_ptr<BatchChunk>> spare(kChunks - 1);
@@ -180,6 +181,28 @@ void Pipeline::setTransform(const VertexTransform& transform) {
     batch_->transform = transform;
 }
 
+void Pipeline::setLighting(const VertexLighting& lighting) {
+    if (lightings_->full()) drawSubmitted();
+    closeBatch();
+    batch_->lighting = lightings_->keep(lighting);
+}
+
+void Pipeline::setUnlit() {
+    if (!batch_->lighting) return;
+    closeBatch();
+    batch_->lighting = nullptr;
+}
+
+void Pipeline::lightOpenBatch() {
+    if (!batch_->lighting) return;
+    const bool twoSided = batch_->state.twoSidedColors;
+    for (std::size_t i = batch_->first; i < chunk_->vertices.size(); ++i) {
+        batch_->lighting->lightVertex(chunk_->vertices[i], twoSided);
+    }
+    for (Vertex& vertex : open_) batch_->lighting->lightVertex(vertex, twoSided);
+    batch_->lighting = nullptr;
+}
+
 void Pipeline::endBatch() {
     buffer_.flushAndReset();
     closeBatch();
@@ -215,6 +238,10 @@ void Pipeline::drawSubmitted() {
     // Nothing is queued now: the triangles' slots are free for what comes next.
     if (thread_) thread_->releaseTriangles();
     drawer_->releaseTriangles();
+    // Nothing points to the lightings now but the open batch's header, which keeps its own.
+    const VertexLighting* open = batch_->lighting;
+    lightings_->release();
+    if (open) batch_->lighting = lightings_->keep(*open);
 }
 
 void Pipeline::finish() {

@@ -58,6 +58,17 @@ Batch VertexStage::assemble(const SubmittedBatch& batch) {
     return Batch{batch, clipVertices_};
 }
 
+void lightChunk(BatchChunk& chunk) {
+    if (chunk.lit) return;
+    chunk.lit = true;
+    for (const BatchEntry& batch : chunk.batches) {
+        if (!batch.lighting) continue;
+        for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) {
+            batch.lighting->lightVertex(chunk.vertices[i], batch.state.twoSidedColors);
+        }
+    }
+}
+
 std::uint8_t stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
                            const ViewportTransform& viewport, const StagedVertices& out) {
     const ColumnTransform toClip(modelviewProjection);

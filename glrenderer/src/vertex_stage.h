@@ -37,6 +37,10 @@ private:
     std::vector<ClipVertex> clipVertices_;
 };
 
+// The vertex stage's lighting, on the pipeline's side: the vertices of the chunk's lit batches
+// (BatchHeader::lighting) lit in place, once (the first of the chunk's consumers to come calls it).
+void lightChunk(BatchChunk& chunk);
+
 // The pass itself, into arrays as long as `vertices`: clip position (the MVP applied by
 // ColumnTransform), clipOutcode and ViewportTransform::apply. Returns the union of the outcodes.
 // CPUs with FMA take a version that works on a vertex's four coordinates at once (without FMA,

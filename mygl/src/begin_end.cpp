@@ -1,5 +1,5 @@
-// glBegin/glEnd and the per-vertex calls: vertices are transformed to clip space as they arrive
-// and handed to the pipeline at glEnd.
+// glBegin/glEnd and the per-vertex calls: vertices go to the pipeline as given, whose vertex
+// stage transforms and lights them.
 #include <array>
 
 #include "compiled.h"
@@ -14,6 +14,7 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
     drawCachedBitmaps(*s);  // the reference draws its bitmap cache before any draw
     s->updateModelviewProjection();
+    prepareLighting(*s);
     s->insideBeginEnd = true;
     s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
     if (s->lightingEnabled) s->pipeline.colorPerVertex();  // lit colours vary per vertex
@@ -25,6 +26,10 @@ void end() {
     if (!s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);
     s->insideBeginEnd = false;
     s->pipeline.endPrimitive();
+    if (s->lightingOnProgramThread) {  // the pipeline's batches take the material as it is now
+        s->lightingOnProgramThread = false;
+        s->lightingStale = true;
+    }
 }
 
 namespace {

@@ -101,6 +101,8 @@ struct Context::State {
     GLenum colorMaterialFace = GL_FRONT_AND_BACK, colorMaterialMode = GL_AMBIENT_AND_DIFFUSE;
     glrenderer::VertexLighting vertexLighting;
     bool lightingStale = true;
+    // glMaterial came inside the open glBegin/glEnd: its vertices are lit as they come.
+    bool lightingOnProgramThread = false;
 
     // What the reference does when it validates state before a draw or a read: settle the
     // kinds of the current matrices and form their product.

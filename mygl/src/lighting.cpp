@@ -136,6 +136,10 @@ void material(GLenum face, GLenum name, const GLfloat* p) {
         return setError(*s, GL_INVALID_ENUM);
     }
     if (!s->insideBeginEnd) endBatch(*s);
+    if (s->insideBeginEnd && s->lightingEnabled && !s->lightingOnProgramThread) {
+        s->pipeline.lightOpenBatch();  // the vertices so far keep the material they had
+        s->lightingOnProgramThread = true;
+    }
     s->lightingStale = true;
     for (std::size_t i = 0; i < 2; ++i) {
         if ((i == 0 && face == GL_BACK) || (i == 1 && face == GL_FRONT)) continue;
@@ -343,14 +347,26 @@ std::optional<bool> lightingCapability(const Context::State& s, GLenum cap) {
     return std::nullopt;
 }
 
-void lightVertex(Context::State& s, const glm::vec4& object, glrenderer::Vertex& v) {
+namespace {
+
+const glrenderer::VertexLighting& preparedLighting(Context::State& s) {
     if (s.lightingStale) {
         const StackMatrix& m = s.modelview.top();
         s.vertexLighting = glrenderer::VertexLighting(s.lighting, {m.matrix(), m.inverse(), m.lengthPreserving()});
         s.lightingStale = false;
     }
-    v.color = saturate(s.vertexLighting.light(object, s.normal, s.color));
-    if (s.draw.twoSidedColors) v.backColor = saturate(s.vertexLighting.light(object, s.normal, s.color, 1));
+    return s.vertexLighting;
+}
+
+}  // namespace
+
+void prepareLighting(Context::State& s) {
+    if (!s.lightingEnabled) return s.pipeline.setUnlit();
+    if (s.lightingStale) s.pipeline.setLighting(preparedLighting(s));
+}
+
+void lightVertex(Context::State& s, glrenderer::Vertex& v) {
+    preparedLighting(s).lightVertex(v, s.draw.twoSidedColors);
 }
 
 }  // namespace mygl

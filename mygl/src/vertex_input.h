@@ -17,9 +17,12 @@ inline glrenderer::QuadSplit quadSplitOf(const Context::State& s, bool indexed =
 }
 void end();
 
-// The colour (and with two-sided lighting the back colour) of a vertex at `object` lit with the
-// current normal and colour, clamped as the reference clamps vertex colours (lighting.cpp).
-void lightVertex(Context::State& s, const glm::vec4& object, glrenderer::Vertex& v);
+// Lighting as glBegin prepares it: the pipeline's vertex stage lights the primitive's vertices
+// with the state of that moment (lighting.cpp).
+void prepareLighting(Context::State& s);
+// A vertex lit on the program's thread with the current state (after glMaterial inside
+// glBegin/glEnd): its colour, and with two-sided lighting its back colour.
+void lightVertex(Context::State& s, glrenderer::Vertex& v);
 
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
@@ -30,10 +33,14 @@ void lightVertex(Context::State& s, const glm::vec4& object, glrenderer::Vertex&
     s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
     glrenderer::Vertex& v = s->pipeline.addVertex();
     v.position = object;
-    if (s->lightingEnabled) lightVertex(*s, object, v);
-    else v.color = s->vertexColor;
     v.normal = s->normal;
     v.edgeFlag = s->edgeFlag;
+    if (!s->lightingEnabled) {
+        v.color = s->vertexColor;
+    } else {
+        v.color = s->color;  // lit by the pipeline's vertex stage, or here after glMaterial inside glBegin/glEnd
+        if (s->lightingOnProgramThread) lightVertex(*s, v);
+    }
 }
 
 template <class T>

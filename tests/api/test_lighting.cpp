@@ -226,6 +226,43 @@ TEST(Lighting, PerVertexMaterialsAndFlatShadingMatchTheReference) {
         strip);
 }
 
+// glMaterial after some vertices of a primitive, in a batch that merged earlier blocks: the
+// vertices before it keep the old material, the ones after take the new one, and the blocks
+// after glEnd light with the material as it was left.
+TEST(Lighting, MaterialChangedAfterVerticesMatchesTheReference) {
+    const auto triangles = [](float y, int count) {
+        for (int i = 0; i < count; ++i) {
+            const float x = -1.2f + 0.25f * static_cast<float>(i);
+            glNormal3f(0.2f * static_cast<float>(i) - 0.5f, 0.3f, 1.0f);
+            glVertex3f(x, y, -1.0f);
+            glVertex3f(x + 0.2f, y, -1.0f);
+            glVertex3f(x + 0.1f, y + 0.4f, -1.2f);
+        }
+    };
+    const auto draw = [&] {
+        const GLfloat red[] = {0.9f, 0.1f, 0.1f, 1}, blue[] = {0.1f, 0.2f, 0.9f, 1};
+        glBegin(GL_TRIANGLES);
+        triangles(-1.0f, 9);
+        glEnd();
+        glBegin(GL_TRIANGLES);
+        triangles(-0.5f, 4);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, red);
+        triangles(0.0f, 5);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, blue);
+        triangles(0.5f, 3);
+        glEnd();
+        glBegin(GL_TRIANGLES);
+        triangles(0.9f, 9);
+        glEnd();
+    };
+    expectSameFrames({{"one-sided", [] { whiteLight(GL_LIGHT0, kPositional); }},
+                      {"two-sided", [] {
+                           whiteLight(GL_LIGHT0, kPositional);
+                           glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+                       }}},
+                     draw);
+}
+
 // The lighting calls' errors and the state they leave, as glGet and glGetLight/glGetMaterial
 // report them.
 TEST(Lighting, StateAndErrorsMatchTheReference) {

@@ -7,6 +7,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "glrenderer/vertex.h"
+
 namespace glrenderer {
 
 struct LightSource {
@@ -67,6 +69,10 @@ public:
     // `normal`; `color`: the current colour, for the material colours that follow it. `face`
     // 1 lights the back face (back material, the normal reversed) for two-sided lighting.
     glm::vec4 light(const glm::vec4& object, const glm::vec3& normal, const glm::vec4& color, int face = 0) const;
+    // A vertex lit in place: its colour (the current colour as given, unclamped) becomes the
+    // lit colour and, with `twoSided`, its back colour the back face's, both clamped as the
+    // reference clamps vertex colours.
+    void lightVertex(Vertex& vertex, bool twoSided) const;
 
 private:
     struct Light {

@@ -10,6 +10,7 @@
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/hit_range.h"
 #include "glrenderer/immediate_buffer.h"
+#include "glrenderer/lighting.h"
 #include "glrenderer/methods.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
@@ -18,6 +19,7 @@ namespace glrenderer {
 
 class BatchDrawer;
 class BatchThread;
+class LightingPool;
 struct BatchChunk;
 struct BatchEntry;
 
@@ -66,6 +68,14 @@ public:
     // The matrices of the vertices submitted after the call, outside primitives. A batch is
     // transformed with one set: a change ends it.
     void setTransform(const VertexTransform& transform);
+
+    // The lighting of the vertices submitted after the call, outside primitives: the pipeline's
+    // vertex stage lights them (their colour is the current colour, unclamped). A change ends the batch.
+    void setLighting(const VertexLighting& lighting);
+    void setUnlit();
+    // glMaterial inside glBegin/glEnd: the open batch's vertices so far are lit now, on the
+    // caller's thread, with the batch's lighting; the caller lights the primitive's next ones.
+    void lightOpenBatch();
 
     // A state change, glFlush: the batch ends, as the reference draws what it holds.
     void endBatch();
@@ -127,6 +137,7 @@ private:
     bool insidePrimitive_ = false;
     bool loopContinued_ = false;  // the open GL_LINE_LOOP wrapped: open_[0] is its first vertex
     ImmediateBuffer buffer_;       // where the reference's buffer wraps and flushes
+    std::unique_ptr<LightingPool> lightings_;  // what batches' `lighting` points to
     std::unique_ptr<BatchDrawer> drawer_;
     std::unique_ptr<BatchThread> thread_;  // null when the pipeline runs on one thread
 };
