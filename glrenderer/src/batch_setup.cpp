@@ -63,7 +63,7 @@ bool BatchSetup::setUp(BatchChunk& chunk, ArenaWriter& writer) {
     return true;
 }
 
-std::uint8_t BatchSetup::run(const SubmittedBatch& batch) {
+Outcode BatchSetup::run(const SubmittedBatch& batch) {
     return vertexStage_.run(batch, ViewportTransform(batch.state, framebuffer_.height()));
 }
 
@@ -73,7 +73,7 @@ Batch BatchSetup::stage(const SubmittedBatch& batch) {
 }
 
 void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stats& stats) {
-    const std::uint8_t anyOutside = run(batch);
+    const Outcode anyOutside = run(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
@@ -102,7 +102,7 @@ void BatchSetup::select(const SubmittedBatch& batch, HitRange& hits, Stats& stat
 
 void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const ViewportTransform& viewport) {
     const BatchHeader& batch = call.batch;
-    const std::span<const std::uint8_t> outcodes = vertexStage_.outcodes();
+    const std::span<const Outcode> outcodes = vertexStage_.outcodes();
     const std::span<const WindowVertex> windowVertices = vertexStage_.windowVertices();
     ++call.stats.triangles;
     if (batch.methods.culling != CullMethod::WindowArea && batch.state.cullEnabled) {
@@ -115,7 +115,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
         }
     }
     const Vertex& provoking = call.vertices[t.v[2]];
-    const std::uint8_t outsideAny = outcodes[t.v[0]] | outcodes[t.v[1]] | outcodes[t.v[2]];
+    const Outcode outsideAny = outcodes[t.v[0]] | outcodes[t.v[1]] | outcodes[t.v[2]];
     if (outsideAny == 0) {
         const auto& v = call.vertices;
         setUpSidedTriangle(call, {windowVertices[t.v[0]], windowVertices[t.v[1]], windowVertices[t.v[2]]},
@@ -129,7 +129,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     }
     const ClippedPolygon polygon =
         clipTriangle(vertexStage_.clipVertex(call.vertices, t.v[0]), vertexStage_.clipVertex(call.vertices, t.v[1]),
-                     vertexStage_.clipVertex(call.vertices, t.v[2]), outsideAny);
+                     vertexStage_.clipVertex(call.vertices, t.v[2]), outsideAny, batch.state.clipPlanes);
     if (polygon.count < 3) {
         ++call.stats.clippedAway;
         return;

@@ -42,7 +42,7 @@ public:
     // once and the unfilled stage (which decomposes and clips the batch itself), with its
     // vertices' outcodes and window positions; all kept until the next batch.
     Batch stage(const SubmittedBatch& batch);
-    std::span<const std::uint8_t> outcodes() const { return vertexStage_.outcodes(); }
+    std::span<const Outcode> outcodes() const { return vertexStage_.outcodes(); }
     std::span<const WindowVertex> windowVertices() const { return vertexStage_.windowVertices(); }
     // The setup of one triangle the unfilled stage has clipped.
     void setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
@@ -70,7 +70,7 @@ private:
         const glm::vec4& flatBack;
     };
     void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window, const SidedColors& colors);
-    std::uint8_t run(const SubmittedBatch& batch);
+    Outcode run(const SubmittedBatch& batch);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);
 

@@ -24,17 +24,26 @@ ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& 
     return v;
 }
 
-std::uint8_t clipOutcode(const glm::vec4& p) {
-    std::uint8_t code = 0;
-    for (int plane = 0; plane < kClipPlaneCount; ++plane) {
+Outcode clipOutcode(const glm::vec4& p) {
+    Outcode code = 0;
+    for (int plane = 0; plane < kViewVolumePlanes; ++plane) {
         // Written so that NaN lands outside.
-        if (!(clipPlaneDistance(p, plane) >= 0.0f)) code |= static_cast<std::uint8_t>(1u << plane);
+        if (!(clipPlaneDistance(p, plane, {}) >= 0.0f)) code |= static_cast<Outcode>(1u << plane);
     }
     return code;
 }
 
-ClippedPolygon clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-                            std::uint8_t outcodeUnion) {
+Outcode userClipOutcode(const glm::vec4& p, const UserClipPlanes& user) {
+    Outcode code = 0;
+    for (int plane = kViewVolumePlanes; plane < kClipPlaneCount; ++plane) {
+        const bool enabled = (user.enabled >> (plane - kViewVolumePlanes) & 1u) != 0;
+        if (enabled && 0.0f > clipPlaneDistance(p, plane, user)) code |= static_cast<Outcode>(1u << plane);
+    }
+    return code;
+}
+
+ClippedPolygon clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, Outcode outcodeUnion,
+                            const UserClipPlanes& user) {
     ClippedPolygon polygons[2];
     polygons[0].vertices[0] = v0;
     polygons[0].vertices[1] = v1;
@@ -54,8 +63,8 @@ ClippedPolygon clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const Cl
             const ClipVertex& previous = in.vertices[static_cast<std::size_t>(i - 1)];
             const ClipVertex& vertex = in.vertices[static_cast<std::size_t>(i % in.count)];
             if (!isFinite(vertex.position)) return ClippedPolygon{};
-            const float previousDistance = clipPlaneDistance(previous.position, plane);
-            const float distance = clipPlaneDistance(vertex.position, plane);
+            const float previousDistance = clipPlaneDistance(previous.position, plane, user);
+            const float distance = clipPlaneDistance(vertex.position, plane, user);
             if (previousDistance >= 0.0f) {
                 out.source[static_cast<std::size_t>(out.count)] = in.source[static_cast<std::size_t>(i - 1)];
                 out.vertices[static_cast<std::size_t>(out.count++)] = previous;

@@ -4,15 +4,26 @@
 
 #include <glm/vec4.hpp>
 
+#include "glrenderer/draw_state.h"
 #include "clip_vertex.h"
 
 namespace glrenderer {
 
-inline constexpr int kClipPlaneCount = 6;
+// The planes a primitive is clipped by, in the reference's order: the view volume's six, then
+// the program's (glClipPlane).
+inline constexpr int kViewVolumePlanes = 6;
+inline constexpr int kClipPlaneCount = kViewVolumePlanes + 8;
+// Bit p set: the position is outside plane p.
+using Outcode = std::uint16_t;
 
-// Signed distance of a clip-space position to view-volume plane `plane` (>= 0 inside), in the
-// reference's order: x <= w, x >= -w, y <= w, y >= -w, z >= -w (near), z <= w (far).
-inline float clipPlaneDistance(const glm::vec4& p, int plane) {
+// Signed distance of a clip-space position to plane `plane` (>= 0 inside): the view volume's
+// x <= w, x >= -w, y <= w, y >= -w, z >= -w (near), z <= w (far), then the program's planes
+// (a dot product summed left to right, as the reference's clipper and cliptest compute it).
+inline float clipPlaneDistance(const glm::vec4& p, int plane, const UserClipPlanes& user) {
+    if (plane >= kViewVolumePlanes) {
+        const glm::vec4& c = user.planes[static_cast<std::size_t>(plane - kViewVolumePlanes)];
+        return p.x * c.x + p.y * c.y + p.z * c.z + p.w * c.w;
+    }
     switch (plane) {
     case 0: return p.w - p.x;
     case 1: return p.x + p.w;
@@ -23,14 +34,21 @@ inline float clipPlaneDistance(const glm::vec4& p, int plane) {
     }
 }
 
-// Bit `plane` set for each plane the position is outside of. A non-finite position is outside all.
-std::uint8_t clipOutcode(const glm::vec4& position);
+// Bit `plane` set for each view-volume plane the position is outside of. A non-finite position
+// is outside all.
+Outcode clipOutcode(const glm::vec4& position);
+// The bits of the program's enabled planes the position is outside of (by a negative distance:
+// NaN is inside, as in the reference's cliptest).
+Outcode userClipOutcode(const glm::vec4& position, const UserClipPlanes& user);
+inline Outcode clipOutcode(const glm::vec4& position, const UserClipPlanes& user) {
+    return user.enabled ? clipOutcode(position) | userClipOutcode(position, user) : clipOutcode(position);
+}
 
 // Where the edge a-b crosses a plane, given both ends' distances to it (of opposite signs):
 // interpolated in clip space from the end nearer the plane (the inside one on a tie), as the
 // reference does.
 ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& b, float distanceB);
-// A triangle clipped by six planes gains at most one vertex per plane.
+// A triangle gains at most one vertex per clip plane.
 inline constexpr int kMaxClippedVertices = 3 + kClipPlaneCount;
 
 struct ClippedPolygon {
@@ -42,10 +60,10 @@ struct ClippedPolygon {
 };
 inline constexpr int kNewVertex = -1;
 
-// Clips triangle (v0, v1, v2) in clip space against the view volume (Sutherland-Hodgman, plane
-// by plane in the reference's order). The polygon starts at v0 and is drawn as the fan
+// Clips triangle (v0, v1, v2) in clip space against the planes of `outcodeUnion`
+// (Sutherland-Hodgman, plane by plane in the reference's order). The polygon starts at v0 and is drawn as the fan
 // (p[i-1], p[i], p[0]), as the reference emits it. Fewer than three vertices: nothing is left.
-ClippedPolygon clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2,
-                            std::uint8_t outcodeUnion);
+ClippedPolygon clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const ClipVertex& v2, Outcode outcodeUnion,
+                            const UserClipPlanes& user);
 
 }  // namespace glrenderer

@@ -18,15 +18,15 @@ ClipVertex moveTowards(const ClipVertex& from, const ClipVertex& to, float t) {
 
 }  // namespace
 
-bool clipLine(ClipVertex& a, ClipVertex& b, std::uint8_t outcodeA, std::uint8_t outcodeB) {
-    const std::uint8_t planes = outcodeA | outcodeB;
+bool clipLine(ClipVertex& a, ClipVertex& b, Outcode outcodeA, Outcode outcodeB, const UserClipPlanes& user) {
+    const Outcode planes = outcodeA | outcodeB;
     if (planes == 0) return true;
     if (outcodeA & outcodeB) return false;
     float tA = 0.0f, tB = 0.0f;
     for (int plane = 0; plane < kClipPlaneCount; ++plane) {
         if (!(planes & (1u << plane))) continue;
-        const float da = clipPlaneDistance(a.position, plane);
-        const float db = clipPlaneDistance(b.position, plane);
+        const float da = clipPlaneDistance(a.position, plane, user);
+        const float db = clipPlaneDistance(b.position, plane, user);
         if (!std::isfinite(da) || !std::isfinite(db)) return false;
         if (db < 0.0f) tB = std::max(tB, db / (db - da));
         if (da < 0.0f) tA = std::max(tA, da / (da - db));

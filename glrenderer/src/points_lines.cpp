@@ -13,14 +13,15 @@ namespace {
 // inside the view volume, point(window vertex); each segment clipped, segment(window a, window b,
 // the colour of its second vertex, which flat lines take even when that end was clipped).
 template <class Point, class Segment>
-void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, const ViewportTransform& viewport,
-                      Point&& point, Segment&& segment) {
+void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
+                      const ViewportTransform& viewport, Point&& point, Segment&& segment) {
+    const UserClipPlanes& user = state.clipPlanes;
     const auto clipped = [&](const ClipVertex& start, const ClipVertex& end) {
         ClipVertex a = start, b = end;
-        const std::uint8_t outcodeA = clipOutcode(a.position), outcodeB = clipOutcode(b.position);
-        if (!clipLine(a, b, outcodeA, outcodeB)) return;
+        const Outcode outcodeA = clipOutcode(a.position, user), outcodeB = clipOutcode(b.position, user);
+        if (!clipLine(a, b, outcodeA, outcodeB, user)) return;
         // An end that was outside has been moved by the clipper, which maps it unfused.
-        const auto toWindow = [&](const ClipVertex& v, std::uint8_t outcode) {
+        const auto toWindow = [&](const ClipVertex& v, Outcode outcode) {
             return outcode == 0 ? viewport.apply(v) : viewport.applyToClipped(v);
         };
         segment(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color);
@@ -29,7 +30,7 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
     switch (mode) {
     case PrimitiveMode::Points:
         for (const ClipVertex& v : vertices) {
-            if (clipOutcode(v.position) == 0) point(viewport.apply(v));
+            if (clipOutcode(v.position, user) == 0) point(viewport.apply(v));
         }
         break;
     case PrimitiveMode::Lines:
@@ -53,7 +54,7 @@ void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices
     const FragmentChoice fragments(bestFragmentPaths(),
                                    mode == PrimitiveMode::Points ? flatFragmentKey(state) : fragmentKey(state));
     forEachPrimitive(
-        mode, vertices, ViewportTransform(state, framebuffer.height()),
+        mode, vertices, state, ViewportTransform(state, framebuffer.height()),
         [&](const WindowVertex& v) { rasterizePoint(v, state, fragments, framebuffer, stats); },
         [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4& flatColor) {
             rasterizeLine(a, b, flatColor, state.lineWidth, fragments, framebuffer, stats);
@@ -63,7 +64,7 @@ void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices
 void selectPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                           int framebufferHeight, HitRange& hits) {
     forEachPrimitive(
-        mode, vertices, ViewportTransform(state, framebufferHeight), [&](const WindowVertex& v) { hits.add(v.z); },
+        mode, vertices, state, ViewportTransform(state, framebufferHeight), [&](const WindowVertex& v) { hits.add(v.z); },
         [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4&) { hits.add(a.z), hits.add(b.z); });
 }
 

@@ -71,9 +71,10 @@ struct Polygon {
 };
 
 // Sutherland-Hodgman in the reference's plane order, carrying edge flags: an edge cut by a
-// view-volume plane keeps its flag up to the cut, the new edge along the plane is hidden.
+// plane keeps its flag up to the cut; the new edge along the plane is hidden for the view
+// volume's planes and drawn for the program's.
 // Returns false if the polygon vanished or a distance is not finite.
-bool clipPolygon(Polygon& polygon, std::uint8_t outcodeUnion, const ViewportTransform& viewport) {
+bool clipPolygon(Polygon& polygon, Outcode outcodeUnion, const ViewportTransform& viewport, const UserClipPlanes& user) {
     Polygon out;
     for (int plane = 0; plane < kClipPlaneCount; ++plane) {
         if (!(outcodeUnion & (1u << plane))) continue;
@@ -82,18 +83,23 @@ bool clipPolygon(Polygon& polygon, std::uint8_t outcodeUnion, const ViewportTran
         for (int i = 0; i < n; ++i) {
             const PolygonVertex& prev = polygon.v[static_cast<std::size_t>(i)];
             const PolygonVertex& next = polygon.v[static_cast<std::size_t>((i + 1) % n)];
-            const float dPrev = clipPlaneDistance(prev.clip.position, plane);
-            const float dNext = clipPlaneDistance(next.clip.position, plane);
+            const float dPrev = clipPlaneDistance(prev.clip.position, plane, user);
+            const float dNext = clipPlaneDistance(next.clip.position, plane, user);
             if (!std::isfinite(dPrev) || !std::isfinite(dNext)) return false;
             if (dPrev >= 0.0f) out.v[static_cast<std::size_t>(out.count++)] = prev;
             if ((dPrev >= 0.0f) == (dNext >= 0.0f)) continue;
             PolygonVertex cut;
             cut.clip = clipCrossing(prev.clip, dPrev, next.clip, dNext);
             cut.window = viewport.applyToClipped(cut.clip);
-            // Leaving, the edge from the cut runs along the plane: hidden by the cut's own flag.
+            // Leaving, the edge from the cut runs along the plane: hidden along the view
+            // volume's planes, drawn along the program's (the reference copies NVIDIA there).
             const bool leaving = dNext < 0.0f;
-            cut.edgeFlag = leaving ? false : prev.edgeFlag;
-            cut.edgeVisible = prev.edgeVisible;
+            if (leaving && plane >= kViewVolumePlanes) {
+                cut.edgeFlag = cut.edgeVisible = true;
+            } else {
+                cut.edgeFlag = leaving ? false : prev.edgeFlag;
+                cut.edgeVisible = prev.edgeVisible;
+            }
             out.v[static_cast<std::size_t>(out.count++)] = cut;
         }
         polygon = out;
@@ -170,7 +176,7 @@ private:
 }  // namespace
 
 void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
-                       std::span<const std::uint8_t> outcodes,
+                       std::span<const Outcode> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
                        const DrawState& state, Framebuffer& framebuffer, Stats& stats,
                        const UnfilledTarget& target) {
@@ -187,12 +193,12 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
             const ClipVertex& v = vertices[index[k]];
             polygon.v[k] = {v, windowVertices[index[k]], v.edgeFlag, (edges >> k & 1u) != 0};
         }
-        const std::uint8_t outside = outcodes[i0] | outcodes[i1] | outcodes[i2];
+        const Outcode outside = outcodes[i0] | outcodes[i1] | outcodes[i2];
         if (outside == 0) {
             drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, flatColor);
             return;
         }
-        if ((outcodes[i0] & outcodes[i1] & outcodes[i2]) || !clipPolygon(polygon, outside, viewport)) {
+        if ((outcodes[i0] & outcodes[i1] & outcodes[i2]) || !clipPolygon(polygon, outside, viewport, state.clipPlanes)) {
             ++stats.clippedAway;
             return;
         }

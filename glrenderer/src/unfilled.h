@@ -8,6 +8,7 @@
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
+#include "clip.h"
 #include "clip_vertex.h"
 #include "window_vertex.h"
 
@@ -29,7 +30,7 @@ struct UnfilledTarget {
 // the primitive and of the edge's first vertex (glEdgeFlag) are both set. Flat shading uses the
 // triangle's provoking vertex color for all of it.
 void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
-                       std::span<const std::uint8_t> outcodes,
+                       std::span<const Outcode> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
                        const DrawState& state, Framebuffer& framebuffer, Stats& stats,
                        const UnfilledTarget& target);

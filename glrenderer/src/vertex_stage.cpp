@@ -23,15 +23,23 @@ VertexStage::VertexStage(std::size_t batchVertices) {
     clipVertices_.reserve(batchVertices);
 }
 
-std::uint8_t VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& viewport) {
+Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& viewport) {
     const std::size_t count = batch.vertices.size();
     clipPositions_.resize(count);
     outcodes_.resize(count);
     windowVertices_.resize(count);
     const StagedVertices out{clipPositions_.data(), outcodes_.data(), windowVertices_.data()};
     const Matrix& mvp = batch.transform.modelviewProjection;
-    return cpuHasFma() ? stageVerticesFma(batch.vertices, mvp, viewport, out)
-                       : stageVertices(batch.vertices, mvp, viewport, out);
+    Outcode anyOutside = cpuHasFma() ? stageVerticesFma(batch.vertices, mvp, viewport, out)
+                                     : stageVertices(batch.vertices, mvp, viewport, out);
+    const UserClipPlanes& user = batch.state.clipPlanes;
+    if (user.enabled) {
+        for (std::size_t i = 0; i < count; ++i) {
+            outcodes_[i] |= userClipOutcode(clipPositions_[i], user);
+            anyOutside |= outcodes_[i];
+        }
+    }
+    return anyOutside;
 }
 
 ClipVertex VertexStage::clipVertex(std::span<const Vertex> vertices, std::size_t i) const {
@@ -69,10 +77,10 @@ void lightChunk(BatchChunk& chunk) {
     }
 }
 
-std::uint8_t stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+Outcode stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
                            const ViewportTransform& viewport, const StagedVertices& out) {
     const ColumnTransform toClip(modelviewProjection);
-    std::uint8_t anyOutside = 0;
+    Outcode anyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         glm::vec4& clip = out.clipPositions[i];
         _mm_storeu_ps(&clip.x, toClip.apply(vertices[i].position));

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "batch.h"
+#include "clip.h"
 #include "clip_vertex.h"
 #include "window_vertex.h"
 
@@ -18,10 +19,11 @@ public:
     // Its arrays are sized for `batchVertices`, so that a batch of up to that many allocates nothing.
     explicit VertexStage(std::size_t batchVertices);
 
-    // Stages the batch; returns the union of its vertices' outcodes. The arrays below hold the
+    // Stages the batch; returns the union of its vertices' outcodes (with the program's clip
+    // planes: the pass computes the view volume's, a second one adds those when enabled). The arrays below hold the
     // batch's vertices until the next call.
-    std::uint8_t run(const SubmittedBatch& batch, const ViewportTransform& viewport);
-    std::span<const std::uint8_t> outcodes() const { return outcodes_; }
+    Outcode run(const SubmittedBatch& batch, const ViewportTransform& viewport);
+    std::span<const Outcode> outcodes() const { return outcodes_; }
     std::span<const WindowVertex> windowVertices() const { return windowVertices_; }
 
     // Vertex i of the batch last run (`vertices` its program's vertices), as the clipper takes it (without eye space).
@@ -32,7 +34,7 @@ public:
 
 private:
     std::vector<glm::vec4> clipPositions_;
-    std::vector<std::uint8_t> outcodes_;
+    std::vector<Outcode> outcodes_;
     std::vector<WindowVertex> windowVertices_;
     std::vector<ClipVertex> clipVertices_;
 };
@@ -47,14 +49,14 @@ void lightChunk(BatchChunk& chunk);
 // apply()'s fused multiply-adds are library calls); the bits are the same.
 struct StagedVertices {
     glm::vec4* clipPositions;
-    std::uint8_t* outcodes;
+    Outcode* outcodes;
     WindowVertex* windowVertices;
 };
-std::uint8_t stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+Outcode stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
                            const ViewportTransform& viewport, const StagedVertices& out);
 
 // The version for CPUs with FMA, compiled for them; only call it after cpuHasFma().
-std::uint8_t stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
                               const ViewportTransform& viewport, const StagedVertices& out);
 
 }  // namespace glrenderer

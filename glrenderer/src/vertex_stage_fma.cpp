@@ -12,21 +12,21 @@ namespace {
 // clipOutcode's plane bits from the lanes (x, y, z) of w - p and of p + w that are outside
 // (not >= 0, so NaN is outside): planes 0, 2, 5 are w - x, w - y, w - z; 1, 3, 4 are x + w,
 // y + w, z + w.
-std::uint8_t outcodeFromLanes(int outsideMinus, int outsidePlus) {
+Outcode outcodeFromLanes(int outsideMinus, int outsidePlus) {
     const int minus = (outsideMinus & 1) | (outsideMinus & 2) << 1 | (outsideMinus & 4) << 3;
     const int plus = (outsidePlus & 1) << 1 | (outsidePlus & 2) << 2 | (outsidePlus & 4) << 2;
-    return static_cast<std::uint8_t>(minus | plus);
+    return static_cast<Outcode>(minus | plus);
 }
 
 }  // namespace
 
-std::uint8_t stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
                               const ViewportTransform& viewport, const StagedVertices& out) {
     const ColumnTransform toClip(modelviewProjection);
     const __m128 scale = _mm_setr_ps(viewport.scaleX(), viewport.scaleY(), viewport.scaleZ(), 0.0f);
     const __m128 translate = _mm_setr_ps(viewport.translateX(), viewport.translateY(), viewport.translateZ(), 0.0f);
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-    std::uint8_t anyOutside = 0;
+    Outcode anyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         const __m128 p = toClip.apply(vertices[i].position);
         _mm_storeu_ps(&out.clipPositions[i].x, p);

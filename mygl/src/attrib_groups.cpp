@@ -22,7 +22,8 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_ALPHA_TEST, GL_BLEND, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_LIGHTING,
     GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH,
     GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH,
-    GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
+    GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_CLIP_PLANE0,
+    GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5, GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
 };
 constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER};
 constexpr GLenum kDepthBufferCapabilities[] = {GL_DEPTH_TEST};
@@ -35,7 +36,9 @@ constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE, GL_POLYGON_OFFSET_FILL,
 constexpr GLenum kScissorCapabilities[] = {GL_SCISSOR_TEST};
 constexpr GLenum kStencilCapabilities[] = {GL_STENCIL_TEST};
 constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D, GL_TEXTURE_2D};
-constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE};
+constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE,   GL_CLIP_PLANE0,     GL_CLIP_PLANE1,     GL_CLIP_PLANE2,
+                                             GL_CLIP_PLANE3, GL_CLIP_PLANE4,     GL_CLIP_PLANE5,     GL_CLIP_PLANE0 + 6,
+                                             GL_CLIP_PLANE0 + 7};
 
 const AttribGroup kServerGroups[] = {
     {GL_CURRENT_BIT, {}, saveFields<[](auto& s) {
@@ -63,7 +66,7 @@ const AttribGroup kServerGroups[] = {
     {GL_SCISSOR_BIT, kScissorCapabilities, nullptr},
     {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, nullptr},
     {GL_TEXTURE_BIT, kTextureCapabilities, nullptr},
-    {GL_TRANSFORM_BIT, kTransformCapabilities, saveFields<[](auto& s) { return std::tie(s.matrixMode); }>},
+    {GL_TRANSFORM_BIT, kTransformCapabilities, saveFields<[](auto& s) { return std::tie(s.matrixMode, s.eyeClipPlanes); }>},
     {GL_VIEWPORT_BIT, {}, saveFields<[](auto& s) {
          return std::tie(s.draw.viewport, s.draw.depthNear, s.draw.depthFar);
      }>},

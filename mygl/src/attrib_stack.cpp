@@ -44,6 +44,7 @@ void popAttrib(Context::State* s, AttribStack& stack) {
     for (const RestoreGroup& restore : *saved) restore(*s);
     s->draw.twoSidedColors = s->lightingEnabled && s->lighting.twoSide;
     s->lightingStale = true;  // the lights may have been restored
+    updateClipPlanes(*s);     // so may the clip planes' equations
     // The batch keeps its own copy of the draw state, so it can end after the change.
     if (!(s->draw == before)) endBatch(*s);
 }

@@ -14,6 +14,10 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
     drawCachedBitmaps(*s);  // the reference draws its bitmap cache before any draw
     s->updateModelviewProjection();
+    if (s->clipPlanesStale) {
+        s->clipPlanesStale = false;
+        updateClipPlanes(*s);
+    }
     prepareLighting(*s);
     s->insideBeginEnd = true;
     s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);

@@ -74,6 +74,10 @@ struct Context::State {
     GLenum matrixMode = GL_MODELVIEW;
     Matrix modelviewProjection = kIdentity;
     bool modelviewProjectionStale = false;
+    // glClipPlane's equations in eye space; their clip-space planes (draw.clipPlanes) follow the
+    // projection, again at the next glBegin once it changed.
+    std::array<glm::vec4, 8> eyeClipPlanes{};
+    bool clipPlanesStale = false;
 
     // Fixed-function state, kept as GL values where glGet returns them.
     glrenderer::DrawState draw;

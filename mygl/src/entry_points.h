@@ -30,6 +30,7 @@ std::span<const EntryPoint> rasterPosEntryPoints();
 std::span<const EntryPoint> lightingEntryPoints();
 std::span<const EntryPoint> selectionEntryPoints();
 std::span<const EntryPoint> attribStackEntryPoints();
+std::span<const EntryPoint> clipPlaneEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.
@@ -39,6 +40,10 @@ Context::State* stateOutsideBeginEnd();
 // glEnable/glDisable of GL_LIGHTING, GL_LIGHTi, GL_NORMALIZE, GL_RESCALE_NORMAL and
 // GL_COLOR_MATERIAL (false for other capabilities), and their glIsEnabled (nullopt for others).
 bool setLightingCapability(Context::State& state, GLenum cap, bool enabled);
+// The same for GL_CLIP_PLANEi; and the clip-space planes again from the current projection.
+bool setClipPlaneCapability(Context::State& state, GLenum cap, bool enabled);
+std::optional<bool> clipPlaneCapability(const Context::State& state, GLenum cap);
+void updateClipPlanes(Context::State& state);
 std::optional<bool> lightingCapability(const Context::State& state, GLenum cap);
 
 // Lighting is prepared again after any state change.

@@ -104,6 +104,7 @@ Value query(const Context::State& s, GLenum name) {
     case GL_LIST_MODE: return one(s.lists.compilingMode());
     case GL_MAX_LIST_NESTING: return one(DisplayLists::kMaxNesting);
     case GL_MAX_LIGHTS: return one(glrenderer::kMaxLights);
+    case GL_MAX_CLIP_PLANES: return one(double(s.eyeClipPlanes.size()));
     case GL_LIGHT_MODEL_AMBIENT: {
         const glm::vec4& a = s.lighting.modelAmbient;
         return Value{{a.r, a.g, a.b, a.a}, true};
@@ -115,6 +116,7 @@ Value query(const Context::State& s, GLenum name) {
     case GL_COLOR_MATERIAL_PARAMETER: return one(s.colorMaterialMode);
     default:
         if (const std::optional<bool> enabled = lightingCapability(s, name)) return flag(*enabled);
+        if (const std::optional<bool> enabled = clipPlaneCapability(s, name)) return flag(*enabled);
         return {};
     }
 }

@@ -15,6 +15,7 @@ void changeMatrix(bool endsBatchAlways, Change&& change) {
     if (!change(s->currentStack().top())) return;
     if (!endsBatchAlways) endBatch(*s);
     s->modelviewProjectionStale = true;
+    if (s->matrixMode == GL_PROJECTION) s->clipPlanesStale = true;
 }
 
 // The in-place and known-kind operations, which always count as a change.
@@ -51,6 +52,7 @@ void popMatrix() {
     endBatch(*s);
     if (!s->currentStack().pop()) return setError(*s, GL_STACK_UNDERFLOW);
     s->modelviewProjectionStale = true;
+    if (s->matrixMode == GL_PROJECTION) s->clipPlanesStale = true;
 }
 
 template <class T>

@@ -137,7 +137,7 @@ std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(
     X(glad_glLightModelfv, lightModelCount<GLfloat>) X(glad_glLightModeliv, lightModelCount<GLint>) \
     X(glad_glColorMaterial, 0) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
-    X(glad_glPushName, 0) X(glad_glPopName, 0)
+    X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4)
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();

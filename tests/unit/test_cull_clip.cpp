@@ -86,10 +86,10 @@ TEST(Clipping, TriangleThroughTheNearPlaneBecomesAQuadrilateral) {
     const glrenderer::ClipVertex a{{0, 0, -2, 1}, {1, 0, 0, 1}};  // in front of the near plane
     const glrenderer::ClipVertex b{{0.5f, 0, 0, 1}, {0, 1, 0, 1}};
     const glrenderer::ClipVertex c{{0, 0.5f, 0, 1}, {0, 0, 1, 1}};
-    const std::uint8_t codes = glrenderer::clipOutcode(a.position) | glrenderer::clipOutcode(b.position) |
+    const glrenderer::Outcode codes = glrenderer::clipOutcode(a.position) | glrenderer::clipOutcode(b.position) |
                                glrenderer::clipOutcode(c.position);
     EXPECT_EQ(codes, 1u << 4);  // the near plane
-    const auto polygon = glrenderer::clipTriangle(a, b, c, codes);
+    const auto polygon = glrenderer::clipTriangle(a, b, c, codes, {});
     ASSERT_EQ(polygon.count, 4);
     // Walking from v0 (outside): the cut on a-b, then b, c, and the cut on c-a.
     EXPECT_FLOAT_EQ(polygon.vertices[0].position.z, -polygon.vertices[0].position.w);

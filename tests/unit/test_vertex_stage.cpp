@@ -57,14 +57,14 @@ TEST(VertexStage, FmaVersionMatchesTheScalarOperationsBitForBit) {
                         0.4f, -0.1f, -1.0f, -1.0f, 0.25f, -0.5f, 2.0f, 3.0f};
     const ColumnTransform toClip(mvp);
     std::vector<glm::vec4> clip(vertices.size());
-    std::vector<std::uint8_t> outcodes(vertices.size());
+    std::vector<Outcode> outcodes(vertices.size());
     std::vector<WindowVertex> window(vertices.size());
-    const std::uint8_t anyOutside = stageVerticesFma(vertices, mvp, viewport, {clip.data(), outcodes.data(), window.data()});
-    std::uint8_t expectedAnyOutside = 0;
+    const Outcode anyOutside = stageVerticesFma(vertices, mvp, viewport, {clip.data(), outcodes.data(), window.data()});
+    Outcode expectedAnyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         glm::vec4 expectedClip;
         _mm_storeu_ps(&expectedClip.x, toClip.apply(vertices[i].position));
-        const std::uint8_t outcode = clipOutcode(expectedClip);
+        const Outcode outcode = clipOutcode(expectedClip);
         const WindowVertex expected = viewport.apply(expectedClip, vertices[i].color);
         expectedAnyOutside |= outcode;
         ASSERT_EQ(outcodes[i], outcode) << "vertex " << i;

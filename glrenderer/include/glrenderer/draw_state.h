@@ -1,5 +1,8 @@
 #pragma once
+#include <array>
 #include <cstdint>
+
+#include <glm/vec4.hpp>
 
 namespace glrenderer {
 
@@ -26,6 +29,14 @@ struct Viewport {
     bool operator==(const Viewport&) const = default;
 };
 
+// glClipPlane's planes as the reference clips with them: in clip space (the eye-space plane
+// times the inverse of the projection), each used when its bit in `enabled` is set.
+struct UserClipPlanes {
+    std::array<glm::vec4, 8> planes{};
+    std::uint8_t enabled = 0;
+    bool operator==(const UserClipPlanes&) const = default;
+};
+
 // Everything the pipeline needs to know about GL state for one draw. Plain values, no GL enums.
 struct DrawState {
     bool cullEnabled = false;
@@ -46,6 +57,7 @@ struct DrawState {
     bool selection = false;  // GL_SELECT: primitives make hits (Pipeline::takeHits), not pixels
     // Two-sided lighting: filled triangles facing back take their vertices' back colours.
     bool twoSidedColors = false;
+    UserClipPlanes clipPlanes;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }
