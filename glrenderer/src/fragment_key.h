@@ -19,7 +19,10 @@ enum class Shading : std::uint8_t {
 // paths take their key as a template argument and the compiler removes every step it turns off.
 struct FragmentKey {
     Shading shading = Shading::Flat;
-    // Issue 16 adds here the texture environment and the texture's format, then the fog mode.
+    // Issue 16 adds here the texture environment and the texture's format.
+    // Fog (issue 16): with a mode, the colour is fogged per fragment by a fog coordinate
+    // interpolated with perspective, whatever the shading (FragmentInputs::fogCoord).
+    FogMode fog = FogMode::Off;
     // Then the per-fragment tests: scissor, alpha test (function), stencil (functions, ops).
     bool depthTest = false;
     CompareFunc depthFunc = CompareFunc::Always;
@@ -31,14 +34,16 @@ struct FragmentKey {
 
 // A key from its parts, normalized.
 constexpr FragmentKey makeFragmentKey(Shading shading, bool depthTest, CompareFunc depthFunc, bool depthWrite) {
-    if (!depthTest) return {shading, false, CompareFunc::Always, false};
-    return {shading, true, depthFunc, depthWrite};
+    if (!depthTest) return {shading, FogMode::Off, false, CompareFunc::Always, false};
+    return {shading, FogMode::Off, true, depthFunc, depthWrite};
 }
 
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).
 inline FragmentKey fragmentKey(const DrawState& state) {
     const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
-    return makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite);
+    FragmentKey key = makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite);
+    key.fog = state.fog.mode;
+    return key;
 }
 
 // The same key for primitives of one colour (points, bitmaps).

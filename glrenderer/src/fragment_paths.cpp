@@ -13,7 +13,7 @@ const FragmentRoutine& FragmentPaths::routine(FragmentKey key) const {
     return anyKey_;
 }
 
-FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {
+FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, const FogState& drawFog) : fog(drawFog) {
     varyingW = {key, &paths.routine(key)};
     if (key.shading == Shading::Perspective) key.shading = Shading::Linear;
     constantW = {key, &paths.routine(key)};

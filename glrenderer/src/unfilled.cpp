@@ -107,8 +107,8 @@ public:
     UnfilledDrawer(const DrawState& state, Framebuffer& framebuffer, Stats& stats,
                    const UnfilledTarget& target)
         : state_(state), framebuffer_(framebuffer), stats_(stats), target_(target),
-          lineFragments_(bestFragmentPaths(), fragmentKey(state)),
-          pointFragments_(bestFragmentPaths(), flatFragmentKey(state)) {}
+          lineFragments_(bestFragmentPaths(), fragmentKey(state), state.fog),
+          pointFragments_(bestFragmentPaths(), flatFragmentKey(state), state.fog) {}
 
     // One triangle out of the clipper (provoking vertex last) with its edge bits.
     void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c,

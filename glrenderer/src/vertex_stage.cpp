@@ -4,6 +4,7 @@
 
 #include "clip.h"
 #include "cpu_features.h"
+#include "fog.h"
 
 namespace glrenderer {
 namespace {
@@ -48,6 +49,9 @@ Batch VertexStage::toClipSpace(const SubmittedBatch& batch) {
     }
     if (batch.state.twoSidedColors) {
         for (std::size_t i = 0; i < count; ++i) clipVertices_[i].backColor = batch.vertices[i].backColor;
+    }
+    if (batch.state.fog.mode != FogMode::Off) {
+        setFogCoordinates(batch.vertices, t.modelview, batch.state.fog.distance, clipVertices_);
     }
     if (batch.methods.needsEyeSpace()) {
         for (std::size_t i = 0; i < count; ++i) {

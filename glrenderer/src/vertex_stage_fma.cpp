@@ -38,6 +38,7 @@ std::uint8_t transformVerticesFma(std::span<const ClipVertex> vertices, const Vi
         WindowVertex& out = windowVertices[i];
         _mm_storeu_ps(&out.x, _mm_blend_ps(window, invW, 0b1000));  // x, y, z, invW
         _mm_storeu_ps(&out.color.x, _mm_loadu_ps(&vertices[i].color.x));
+        out.fogCoord = vertices[i].fogCoord;
     }
     return anyOutside;
 }

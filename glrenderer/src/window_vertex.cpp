@@ -25,6 +25,7 @@ WindowVertex ViewportTransform::apply(const ClipVertex& vertex) const {
     out.y = std::fma(p.y * out.invW, scaleY_, translateY_);
     out.z = std::fma(p.z * out.invW, scaleZ_, translateZ_);
     out.color = vertex.color;
+    out.fogCoord = vertex.fogCoord;
     return out;
 }
 
@@ -36,6 +37,7 @@ WindowVertex ViewportTransform::applyToClipped(const ClipVertex& vertex) const {
     out.y = p.y * out.invW * scaleY_ + translateY_;
     out.z = p.z * out.invW * scaleZ_ + translateZ_;
     out.color = vertex.color;
+    out.fogCoord = vertex.fogCoord;
     return out;
 }
 

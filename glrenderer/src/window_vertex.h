@@ -12,6 +12,7 @@ struct WindowVertex {
     float x = 0, y = 0, z = 0;
     float invW = 1;  // 1 / w_clip, the perspective weight of the attributes
     glm::vec4 color;
+    float fogCoord = 0;  // only with fog
 };
 
 // glViewport and glDepthRange as a scale and an offset per axis, computed in float as the

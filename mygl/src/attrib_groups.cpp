@@ -47,7 +47,7 @@ const AttribGroup kServerGroups[] = {
     {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities, saveFields<[](auto& s) {
          return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth);
      }>},
-    {GL_FOG_BIT, kFogCapabilities, nullptr},
+    {GL_FOG_BIT, kFogCapabilities, saveFields<[](auto& s) { return std::tie(s.fog, s.draw.fog); }>},
     {GL_LIGHTING_BIT, kLightingCapabilities, saveFields<[](auto& s) {
          // (GL_NORMALIZE and GL_RESCALE_NORMAL, kept in the lighting state, belong to other groups.)
          auto& l = s.lighting;

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "compiled.h"
+#include "fog_state.h"
 #include "vertex_input.h"
 
 namespace mygl {
@@ -14,6 +15,7 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
     drawCachedBitmaps(*s);  // the reference draws its bitmap cache before any draw
     s->updateModelviewProjection();
+    if (s->fog.enabled) updateFogDistance(*s);
     s->insideBeginEnd = true;
     s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
     if (s->lightingEnabled) s->pipeline.colorPerVertex();  // lit colours vary per vertex

@@ -17,7 +17,8 @@ const std::vector<EntryPoint>& implementedTable() {
         std::vector<EntryPoint> all;
         for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
-                          selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints()}) {
+                          selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
+                          fogEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "entry_points.h"
+#include "fog_state.h"
 #include "gl12_lighting_enums.h"
 
 namespace mygl {
@@ -115,6 +116,8 @@ Value query(const Context::State& s, GLenum name) {
     case GL_COLOR_MATERIAL_PARAMETER: return one(s.colorMaterialMode);
     default:
         if (const std::optional<bool> enabled = lightingCapability(s, name)) return flag(*enabled);
+        if (name == GL_FOG) return flag(s.fog.enabled);
+        if (std::optional<std::vector<double>> fog = fogQuery(s, name)) return Value{*fog, name == GL_FOG_COLOR};
         return {};
     }
 }

@@ -4,6 +4,7 @@
 #include "capabilities.h"
 #include "clamp_to_unit.h"
 #include "compiled.h"
+#include "fog_state.h"
 
 namespace mygl {
 namespace {
@@ -15,7 +16,7 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_FOG, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
+    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
 };
 
@@ -185,6 +186,11 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         return true;
     }
     if (setLightingCapability(s, cap, enabled)) return true;
+    if (cap == GL_FOG) {
+        s.fog.enabled = enabled;
+        updateFog(s);
+        return true;
+    }
     if (!isInert(cap)) return false;
     auto& list = s.otherEnabled;
     const auto found = std::find(list.begin(), list.end(), cap);
@@ -197,6 +203,7 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (cap == GL_CULL_FACE) return s.draw.cullEnabled;
     if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
     if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
+    if (cap == GL_FOG) return s.fog.enabled;
     if (!isInert(cap)) return std::nullopt;
     return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
 }

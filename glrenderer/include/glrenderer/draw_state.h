@@ -1,6 +1,8 @@
 #pragma once
 #include <cstdint>
 
+#include "glrenderer/fog.h"
+
 namespace glrenderer {
 
 // The ten glBegin modes, in GL's enum order (GL_POINTS = 0 ... GL_POLYGON = 9).
@@ -46,6 +48,8 @@ struct DrawState {
     bool selection = false;  // GL_SELECT: primitives make hits (Pipeline::takeHits), not pixels
     // Two-sided lighting: filled triangles facing back take their vertices' back colours.
     bool twoSidedColors = false;
+    // Fog (issue 16): its mode (Off when disabled) and constants.
+    FogState fog;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }
