@@ -38,12 +38,16 @@ constexpr FragmentKey makeFragmentKey(Shading shading, bool depthTest, CompareFu
     return {shading, FogMode::Off, true, depthFunc, depthWrite};
 }
 
+// `key` with fog of `mode`.
+constexpr FragmentKey withFog(FragmentKey key, FogMode mode) {
+    key.fog = mode;
+    return key;
+}
+
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).
 inline FragmentKey fragmentKey(const DrawState& state) {
     const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
-    FragmentKey key = makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite);
-    key.fog = state.fog.mode;
-    return key;
+    return withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
 }
 
 // The same key for primitives of one colour (points, bitmaps).

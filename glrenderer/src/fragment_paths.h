@@ -8,7 +8,8 @@
 namespace glrenderer {
 
 // The keys with fast paths of their own at every vector width: what scenes draw with nearly
-// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading). Each is
+// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), and smooth
+// depth-tested LINEAR fog. Each is
 // compiled with its key as a constant, so that it holds only the steps the key turns on.
 inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false),
@@ -20,6 +21,8 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, true, CompareFunc::LessEqual, true),
     makeFragmentKey(Shading::Linear, true, CompareFunc::LessEqual, true),
     makeFragmentKey(Shading::Perspective, true, CompareFunc::LessEqual, true),
+    // A fogged landscape (bench-fog-terrain).
+    withFog(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), FogMode::Linear),
 };
 
 // The fragment routines of one vector width: a fast path per key of kFastFragmentKeys, and one

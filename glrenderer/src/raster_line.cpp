@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <utility>
 
-#include "glrenderer/color_convert.h"
 #include "round_half_away.h"
 #include "triangle_setup.h"
 

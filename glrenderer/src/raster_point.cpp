@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "glrenderer/color_convert.h"
 #include "round_half_away.h"
 #include "triangle_setup.h"
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "glrenderer/color_convert.h"
 
 namespace glrenderer {
 namespace {

@@ -275,3 +275,28 @@ TEST(Fog, StateQueriesAndErrorsMatchTheReference) {
     EXPECT_EQ(answers.mygl.values, answers.osmesa.values);
     EXPECT_EQ(answers.mygl.errors, answers.osmesa.errors);
 }
+
+// Bitmaps are fogged as at distance 0, whatever the raster position's distance: the reference
+// draws them as a quad without a fog coordinate.
+TEST(Fog, BitmapsMatchTheReference) {
+    const GLubyte bits[] = {0xF0, 0x3C, 0x0F, 0xFF, 0x81, 0x7E, 0x18, 0xA5};
+    for (const FogSetting& f : {FogSetting{GL_LINEAR, 1.0f, 10.0f, 2.0f}, FogSetting{GL_LINEAR, 1.0f, -4.0f, 6.0f},
+                                FogSetting{GL_EXP, 0.3f, 0.0f, 1.0f}, FogSetting{GL_EXP2, 0.3f, 0.0f, 1.0f}}) {
+        const auto frames = onBothBackends<Frame>([&] {
+            glClearColor(0, 0, 0, 0);
+            glClear(GL_COLOR_BUFFER_BIT);
+            applyFog(f);
+            glMatrixMode(GL_PROJECTION);
+            glLoadIdentity();
+            glOrtho(-1.0, 1.0, -1.0, 1.0, -20.0, 20.0);
+            glColor3f(0.9f, 0.3f, 0.1f);
+            for (int i = 0; i < 6; ++i) {
+                glRasterPos3f(-0.8f + 0.3f * static_cast<float>(i), 0.1f * static_cast<float>(i), -3.0f * static_cast<float>(i));
+                glBitmap(8, 8, 0.0f, 0.0f, 0.0f, 0.0f, bits);
+            }
+            return readFrame(kWidth, kHeight);
+        }, kWidth, kHeight);
+        const ColorDifference d = difference(frames.mygl, frames.osmesa);
+        EXPECT_EQ(d.pixels, 0) << describe(f) << ": max channel difference " << d.maxChannel;
+    }
+}
