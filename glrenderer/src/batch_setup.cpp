@@ -77,7 +77,7 @@ void BatchSetup::setUp(const SubmittedBatch& submitted, TriangleTarget& target, 
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state.fog);
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
     const Call call{batch, &target, stats, &fragments,
                     path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
                         batch.methods.culling == CullMethod::WindowArea};
@@ -161,7 +161,7 @@ void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3
 void BatchSetup::setUpTriangle(const Batch& batch, const WindowVertex& v0, const WindowVertex& v1,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state.fog);
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
     setUpTriangle(Call{batch, &target, stats, &fragments}, v0, v1, v2, flatColor);
 }
 

@@ -57,6 +57,7 @@ struct FragmentInputs {
     // shading), and the draw's constants.
     AttributePlane fogCoord;
     FogState fog;
+    float depthOffset = 0.0f;  // polygon offset, with a key that has it
     // The path's key and routine, as two fields so that the flat colour packs between them.
     FragmentKey key;
     std::uint32_t flatColor = 0;  // the fragment colour word under flat shading

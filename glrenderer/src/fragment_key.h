@@ -27,6 +27,9 @@ struct FragmentKey {
     bool depthTest = false;
     CompareFunc depthFunc = CompareFunc::Always;
     bool depthWrite = false;
+    // Polygon offset of filled triangles (issue 16): a depth offset per primitive added to each
+    // fragment's z (FragmentInputs::depthOffset), with the depth test only.
+    bool depthOffset = false;
     // Then blending (equation, factors), the logic op and the colour and depth masks.
 
     bool operator==(const FragmentKey&) const = default;
@@ -34,8 +37,8 @@ struct FragmentKey {
 
 // A key from its parts, normalized.
 constexpr FragmentKey makeFragmentKey(Shading shading, bool depthTest, CompareFunc depthFunc, bool depthWrite) {
-    if (!depthTest) return {shading, FogMode::Off, false, CompareFunc::Always, false};
-    return {shading, FogMode::Off, true, depthFunc, depthWrite};
+    if (!depthTest) return {shading, FogMode::Off, false, CompareFunc::Always, false, false};
+    return {shading, FogMode::Off, true, depthFunc, depthWrite, false};
 }
 
 // `key` with fog of `mode`.

@@ -67,7 +67,9 @@ inline const FragmentRoutine& generalFragmentRoutine() { return scalarFragmentPa
 // constant 1 (w = 1 at every vertex, as in orthographic scenes) takes `constantW`: the key with
 // linear shading, as dividing by one would change no bit.
 struct FragmentChoice {
-    FragmentChoice(const FragmentPaths& paths, FragmentKey key, const FogState& drawFog = {});
+    // With the draw's state when the key reads its constants (fog, polygon offset).
+    FragmentChoice(const FragmentPaths& paths, FragmentKey key);
+    FragmentChoice(const FragmentPaths& paths, FragmentKey key, const DrawState& state);
 
     // The path of a primitive of perspective shading with this plane of 1 / w. The plane
     // (1, 0, 0) is 1 at every pixel, and x * 1 is x for every float x.
@@ -78,6 +80,7 @@ struct FragmentChoice {
 
     FragmentPath varyingW, constantW;
     FogState fog;  // the draw's, for the primitives' inputs when the key has fog
+    PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
 };
 
 }  // namespace glrenderer

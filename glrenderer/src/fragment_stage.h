@@ -38,11 +38,15 @@ public:
 
     explicit FragmentLanes(const FragmentInputs& in)
         : depth_(in.depth), invW_(in.invW), red_(in.color[0]), green_(in.color[1]), blue_(in.color[2]),
-          alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog) {}
+          alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
+          depthOffset_(L::floats(in.depthOffset)) {}
 
     // 24-bit window depth: round(clamp(z) * (2^24 - 1)), ties to even.
-    Int depth24(Float x, Float y) const {
-        return L::roundToInt(L::mul(clampUnit<L>(depth_.at(x, y)), L::floats(16777215.0f)));
+    // Polygon offset adds the primitive's depth offset to z first.
+    Int depth24(const FragmentKey& key, Float x, Float y) const {
+        Float z = depth_.at(x, y);
+        if (key.depthOffset) z = L::add(z, depthOffset_);
+        return L::roundToInt(L::mul(clampUnit<L>(z), L::floats(16777215.0f)));
     }
 
     // The colour words, packed R, G, B, A from the low byte.
@@ -68,6 +72,7 @@ private:
     Int flat_;
     PlaneLanes<L> fogCoord_;
     FogLanes<L> fog_;
+    Float depthOffset_;
 };
 
 // Lanes on consecutive pixels of a row: lane i is pixel first + i of the buffers. A whole
@@ -121,7 +126,7 @@ template <class L, class Block>
     // Scissor (issue 16): a rectangle, cut from coverage before the stage where it can be.
     // Alpha test, then the stencil test (issue 16).
     if (key.depthTest) {
-        const typename L::Int z = in.depth24(x, y);
+        const typename L::Int z = in.depth24(key, x, y);
         live = L::compare(key.depthFunc, live, z, block.load(buffers.depth, live));
         if (key.depthWrite) block.store(buffers.depth, live, z);
     }

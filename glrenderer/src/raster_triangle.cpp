@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "polygon_offset.h"
+
 
 namespace glrenderer {
 namespace {
@@ -24,6 +26,7 @@ EdgeFunction::EdgeFunction(const FixedPoint& a, const FixedPoint& b) {
 FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods) {
     FragmentKey key = fragmentKey(state);
     if (methods.hiddenSurface == HiddenSurface::PaintersSort) key = makeFragmentKey(key.shading, false, {}, false);
+    key.depthOffset = key.depthTest && state.polygonOffset.fill;
     if (key.shading == Shading::Perspective && methods.interpolation == Interpolation::ScreenLinear) {
         key.shading = Shading::Linear;
     }
@@ -80,6 +83,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         in.setPath(fragments.path(in.invW));
     }
     if (key.depthTest) in.depth = planes.plane(v0.z, v1.z, v2.z);
+    if (key.depthOffset) in.depthOffset = setupDepthOffset(fragments.polygonOffset, v0, v1, v2);
     if (key.fog != FogMode::Off) {
         in.fog = fragments.fog;
         in.invW = planes.plane(v0.invW, v1.invW, v2.invW);

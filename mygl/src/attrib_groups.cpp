@@ -21,7 +21,8 @@ RestoreGroup saveFields(const State& state) {
 constexpr GLenum kEnableCapabilities[] = {
     GL_ALPHA_TEST, GL_BLEND, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_LIGHTING,
     GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH,
-    GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH,
+    GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
+    GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
 };
 constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER};
@@ -31,7 +32,8 @@ constexpr GLenum kLightingCapabilities[] = {GL_COLOR_MATERIAL, GL_LIGHTING, GL_L
                                             GL_LIGHT3,         GL_LIGHT4,   GL_LIGHT5, GL_LIGHT6, GL_LIGHT7};
 constexpr GLenum kLineCapabilities[] = {GL_LINE_SMOOTH, GL_LINE_STIPPLE};
 constexpr GLenum kPointCapabilities[] = {GL_POINT_SMOOTH};
-constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE};
+constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE,          GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
+                                           GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,      GL_POLYGON_STIPPLE};
 constexpr GLenum kScissorCapabilities[] = {GL_SCISSOR_TEST};
 constexpr GLenum kStencilCapabilities[] = {GL_STENCIL_TEST};
 constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D, GL_TEXTURE_2D};
@@ -58,7 +60,8 @@ const AttribGroup kServerGroups[] = {
     {GL_POINT_BIT, kPointCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.pointSize); }>},
     {GL_POLYGON_BIT, kPolygonCapabilities, saveFields<[](auto& s) {
          return std::tie(s.cullFaceMode, s.draw.cullFace, s.frontFace, s.draw.frontFaceCCW, s.polygonModeFront,
-                         s.draw.polygonFront, s.polygonModeBack, s.draw.polygonBack);
+                         s.draw.polygonFront, s.polygonModeBack, s.draw.polygonBack, s.draw.polygonOffset.factor,
+                         s.draw.polygonOffset.units);
      }>},
     {GL_SCISSOR_BIT, kScissorCapabilities, nullptr},
     {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, nullptr},

@@ -5,6 +5,7 @@
 #include "clamp_to_unit.h"
 #include "compiled.h"
 #include "fog_state.h"
+#include "polygon_offset_state.h"
 
 namespace mygl {
 namespace {
@@ -17,7 +18,7 @@ using glrenderer::PolygonMode;
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
     GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
-    GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
+    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
 };
 
 bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
@@ -186,6 +187,7 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         return true;
     }
     if (setLightingCapability(s, cap, enabled)) return true;
+    if (setPolygonOffsetCapability(s, cap, enabled)) return true;
     if (cap == GL_FOG) {
         s.fog.enabled = enabled;
         updateFog(s);
@@ -204,6 +206,7 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
     if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
     if (cap == GL_FOG) return s.fog.enabled;
+    if (const std::optional<bool> offset = polygonOffsetCapability(s, cap)) return *offset;
     if (!isInert(cap)) return std::nullopt;
     return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
 }

@@ -37,6 +37,7 @@ std::string describe(const FragmentKey& key) {
         text += " depth func " + std::to_string(static_cast<int>(key.depthFunc)) + (key.depthWrite ? " write" : "");
     }
     if (key.fog != FogMode::Off) text += " fog " + std::to_string(static_cast<int>(key.fog));
+    if (key.depthOffset) text += " offset";
     return text;
 }
 
@@ -64,6 +65,7 @@ FragmentKey randomKey(std::mt19937& random) {
     FragmentKey key = makeFragmentKey(static_cast<Shading>(shading(random)), coin(random),
                                       static_cast<CompareFunc>(depthFunc(random)), coin(random));
     key.fog = static_cast<FogMode>(fog(random));
+    key.depthOffset = key.depthTest && coin(random);
     return key;
 }
 
@@ -168,6 +170,7 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
             inputs.flatColor = word(random);
             inputs.fogCoord = randomPlane(random, -2.0f, 40.0f);
             inputs.fog = randomFog(random);
+            inputs.depthOffset = std::uniform_real_distribution<float>(-0.01f, 0.01f)(random);
             inputs.setPath({tested.anyKey ? randomKey(random) : tested.key, tested.routine});
             FragmentInputs general = inputs;
             general.routine = &generalFragmentRoutine();
@@ -217,6 +220,7 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         Methods methods;
         if (fourth(random) == 0) methods.interpolation = Interpolation::ScreenLinear;
         if (fourth(random) == 0) state.fog = randomFog(random);
+        if (fourth(random) == 0) state.polygonOffset = {1.5f, -3.0f, true, false, false};
         // Every other triangle is drawn within a random rectangle, as a tile draws its part.
         PixelRect rect{0, kWidth - 1, 0, kHeight - 1};
         if (i % 2) {
@@ -227,7 +231,7 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
         for (const FragmentPaths* paths : allPaths) {
             RasterTriangle triangle;
-            const FragmentChoice choice(*paths, triangleFragmentKey(state, methods), state.fog);
+            const FragmentChoice choice(*paths, triangleFragmentKey(state, methods), state);
             if (!prepareTriangle(setup, choice, RasterMethod::Exact, kWidth, kHeight, triangle)) break;
             if (paths == allPaths.front()) ++drawn;
             Target expected(color, depth);

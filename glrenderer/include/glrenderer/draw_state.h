@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "glrenderer/fog.h"
+#include "glrenderer/polygon_offset.h"
 
 namespace glrenderer {
 
@@ -50,6 +51,8 @@ struct DrawState {
     bool twoSidedColors = false;
     // Fog (issue 16): its mode (Off when disabled) and constants.
     FogState fog;
+    // Polygon offset (issue 16).
+    PolygonOffset polygonOffset;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }
