@@ -278,6 +278,7 @@ TEST(Fog, BitmapsMatchTheReference) {
             glLoadIdentity();
             glOrtho(-1.0, 1.0, -1.0, 1.0, -20.0, 20.0);
             glColor3f(0.9f, 0.3f, 0.1f);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows of one byte
             for (int i = 0; i < 6; ++i) {
                 glRasterPos3f(-0.8f + 0.3f * static_cast<float>(i), 0.1f * static_cast<float>(i), -3.0f * static_cast<float>(i));
                 glBitmap(8, 8, 0.0f, 0.0f, 0.0f, 0.0f, bits);
