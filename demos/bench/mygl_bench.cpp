@@ -27,7 +27,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears",
-                               "bench-gears-lists", "bench-mesh", "bench-lit-torus"};
+                               "bench-gears-lists", "bench-mesh", "bench-lit-torus", "bench-fog-terrain"};
 
 struct Variant {
     std::string name;

@@ -295,6 +295,38 @@ void addMergeBreakers(std::vector<Case>& out) {
     }
 }
 
+// Smooth points, lines and polygons and the two stipples (issue 16), each on a small drawing
+// with blending off, as course programs turn them on.
+void addSmoothAndStippleCases(std::vector<Case>& out) {
+    struct Feature {
+        const char* name;
+        GLenum capability;
+        GLenum mode;
+    };
+    static const Feature kFeatures[] = {{"point_smooth", GL_POINT_SMOOTH, GL_POINTS},
+                                        {"line_smooth", GL_LINE_SMOOTH, GL_LINE_STRIP},
+                                        {"polygon_smooth", GL_POLYGON_SMOOTH, GL_TRIANGLES},
+                                        {"line_stipple", GL_LINE_STIPPLE, GL_LINE_STRIP},
+                                        {"polygon_stipple", GL_POLYGON_STIPPLE, GL_TRIANGLES}};
+    for (const Feature& f : kFeatures) {
+        out.push_back({"smooth-stipple", f.name, true, [f](int, int) {
+                           GLubyte pattern[128];
+                           for (int i = 0; i < 128; ++i) pattern[i] = (i / 4) % 2 ? 0xAA : 0x55;
+                           glPolygonStipple(pattern);
+                           glLineStipple(2, 0x0F0F);
+                           glPointSize(4.0f);
+                           glEnable(f.capability);
+                           glColor3f(1.0f, 0.5f, 0.25f);
+                           glBegin(f.mode);
+                           glVertex2f(-0.8f, -0.7f);
+                           glVertex2f(0.7f, -0.5f);
+                           glVertex2f(0.1f, 0.8f);
+                           glEnd();
+                           glDisable(f.capability);
+                       }});
+    }
+}
+
 }  // namespace
 
 std::vector<Case> allCases() {
@@ -305,6 +337,7 @@ std::vector<Case> allCases() {
     addSharedEdgeMeshes(cases);
     addMergedBlocks(cases);
     addMergeBreakers(cases);
+    addSmoothAndStippleCases(cases);
     return cases;
 }
 

@@ -230,9 +230,13 @@ void drawBenchGears(int width, int height, int frame) { gears(width, height, fra
 
 void drawBenchGearsLists(int width, int height, int frame) { gears(width, height, frame, true); }
 
-void drawBenchMesh(int width, int height, int frame) {
+namespace {
+
+// The terrain mesh seen from above at an angle, turning with the frame, after `setup`.
+void terrainScene(int width, int height, int frame, void (*setup)()) {
     static const Terrain terrain;
     beginFrame(width, height, true, true);
+    setup();
     perspectiveView(width, height, 2.6f);
     glRotatef(-55.0f, 1.0f, 0.0f, 0.0f);
     glRotatef(static_cast<float>(frame) * 3.0f, 0.0f, 0.0f, 1.0f);
@@ -243,6 +247,23 @@ void drawBenchMesh(int width, int height, int frame) {
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(terrain.indices.size()), GL_UNSIGNED_INT, terrain.indices.data());
     glDisableClientState(GL_COLOR_ARRAY);
     glDisableClientState(GL_VERTEX_ARRAY);
+}
+
+}  // namespace
+
+void drawBenchMesh(int width, int height, int frame) {
+    terrainScene(width, height, frame, [] {});
+}
+
+void drawBenchFogTerrain(int width, int height, int frame) {
+    terrainScene(width, height, frame, [] {
+        const GLfloat haze[] = {0.7f, 0.75f, 0.8f, 1.0f};
+        glEnable(GL_FOG);
+        glFogi(GL_FOG_MODE, GL_LINEAR);
+        glFogf(GL_FOG_START, 1.8f);
+        glFogf(GL_FOG_END, 3.6f);
+        glFogfv(GL_FOG_COLOR, haze);
+    });
 }
 
 }  // namespace scenes

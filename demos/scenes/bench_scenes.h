@@ -11,5 +11,6 @@ void drawBenchGears(int width, int height, int frame);  // three gears: flat-sha
 void drawBenchGearsLists(int width, int height, int frame);  // the same gears from display lists
 void drawBenchMesh(int width, int height, int frame);   // a 100k-triangle mesh through glDrawElements
 void drawBenchLitTorus(int width, int height, int frame);  // 16k triangles lit by a spot and a directional light
+void drawBenchFogTerrain(int width, int height, int frame);  // the mesh's terrain under LINEAR fog
 
 }  // namespace scenes

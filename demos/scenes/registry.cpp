@@ -37,6 +37,7 @@ std::span<const Scene> allScenes() {
         {"bench-mesh", "benchmark: a 100k-triangle terrain through glDrawElements", drawBenchMesh},
         {"bench-lit-torus", "benchmark: a 16k-triangle torus lit by a spot and a directional light, specular",
          drawBenchLitTorus},
+        {"bench-fog-terrain", "benchmark: the 100k-triangle terrain under LINEAR fog, depth-tested", drawBenchFogTerrain},
     };
     return scenes;
 }

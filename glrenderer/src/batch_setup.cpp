@@ -78,7 +78,7 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
     const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
     const Call call{batch, batch.vertices, assembled, &target, stats, &fragments,
@@ -172,7 +172,7 @@ void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3
 void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods));
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
     setUpTriangle(Call{batch, {}, {}, &target, stats, &fragments}, v0, v1, v2, flatColor);
 }
 

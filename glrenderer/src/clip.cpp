@@ -21,6 +21,7 @@ ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& 
     v.position = from.position + t * (to.position - from.position);
     v.color = from.color + t * (to.color - from.color);
     v.backColor = from.backColor + t * (to.backColor - from.backColor);
+    v.fogCoord = from.fogCoord + t * (to.fogCoord - from.fogCoord);
     return v;
 }
 

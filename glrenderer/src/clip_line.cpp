@@ -13,6 +13,7 @@ ClipVertex moveTowards(const ClipVertex& from, const ClipVertex& to, float t) {
     ClipVertex v = from;
     v.position = from.position + t * (to.position - from.position);
     v.color = from.color + t * (to.color - from.color);
+    v.fogCoord = from.fogCoord + t * (to.fogCoord - from.fogCoord);
     return v;
 }
 

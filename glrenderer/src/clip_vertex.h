@@ -13,6 +13,7 @@ struct ClipVertex {
     bool edgeFlag = true;
     glm::vec3 eye{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    float fogCoord = 0.0f;  // only with fog: the eye-space distance (fog.h)
 };
 
 }  // namespace glrenderer

@@ -4,7 +4,6 @@
 
 #include "batch_drawer.h"
 #include "fragment_paths.h"
-#include "glrenderer/color_convert.h"
 #include "glrenderer/pipeline.h"
 
 namespace glrenderer {
@@ -19,8 +18,13 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     // Runs of set bits, in each row, are spans of one colour and depth for the fragment stage.
     FragmentInputs fragment;
     fragment.setPath(FragmentChoice(bestFragmentPaths(), flatFragmentKey(state)).varyingW);
-    fragment.flatColor = fragmentRgba8(bitmap.color);
+    fragment.setFlatColor(bitmap.color);
     fragment.depth = {bitmap.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
+    // Fog: the reference's bitmap quad carries no fog coordinate, so its fragments read 0 (not
+    // the raster distance): LINEAR fog gives the factor of distance 0, EXP and EXP2 none.
+    fragment.fog = state.fog;
+    fragment.invW = {1.0f, 0.0f, 0.0f};
+    fragment.fogCoord = {0.0f, 0.0f, 0.0f};
     FragmentCounts counts;
     for (std::int64_t y = y0; y < y1; ++y) {
         const std::uint8_t* row = bitmap.rows.data() + static_cast<std::size_t>(y - bottom) * bitmap.rowStride;

@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "fragment_key.h"
+#include "glrenderer/fog.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
 #include "triangle_setup.h"
@@ -51,10 +52,19 @@ struct FragmentInputs {
     AttributePlane color[4];  // colour, or colour / w under perspective shading
     AttributePlane invW;      // 1 / w, under perspective shading
     AttributePlane depth;     // window z, with the depth test
+    // Fog (issue 16), with a key that has it: the fog coordinate's plane, divided by w as a
+    // perspective colour's is (invW and the colour planes are set too, constant under flat
+    // shading), and the draw's constants.
+    AttributePlane fogCoord;
+    FogState fog;
+    float depthOffset = 0.0f;  // polygon offset, with a key that has it
     // The path's key and routine, as two fields so that the flat colour packs between them.
     FragmentKey key;
     std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
     const FragmentRoutine* routine = nullptr;
+
+    // The colour of a flat primitive: its word, and with fog its constant planes.
+    void setFlatColor(const glm::vec4& color);
 
     void setPath(const FragmentPath& path) {
         key = path.key;

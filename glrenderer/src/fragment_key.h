@@ -19,11 +19,17 @@ enum class Shading : std::uint8_t {
 // paths take their key as a template argument and the compiler removes every step it turns off.
 struct FragmentKey {
     Shading shading = Shading::Flat;
-    // Issue 16 adds here the texture environment and the texture's format, then the fog mode.
+    // Issue 16 adds here the texture environment and the texture's format.
+    // Fog (issue 16): with a mode, the colour is fogged per fragment by a fog coordinate
+    // interpolated with perspective, whatever the shading (FragmentInputs::fogCoord).
+    FogMode fog = FogMode::Off;
     // Then the per-fragment tests: scissor, alpha test (function), stencil (functions, ops).
     bool depthTest = false;
     CompareFunc depthFunc = CompareFunc::Always;
     bool depthWrite = false;
+    // Polygon offset of filled triangles (issue 16): a depth offset per primitive added to each
+    // fragment's z (FragmentInputs::depthOffset), with the depth test only.
+    bool depthOffset = false;
     // Then blending (equation, factors), the logic op and the colour and depth masks.
 
     bool operator==(const FragmentKey&) const = default;
@@ -31,14 +37,20 @@ struct FragmentKey {
 
 // A key from its parts, normalized.
 constexpr FragmentKey makeFragmentKey(Shading shading, bool depthTest, CompareFunc depthFunc, bool depthWrite) {
-    if (!depthTest) return {shading, false, CompareFunc::Always, false};
-    return {shading, true, depthFunc, depthWrite};
+    if (!depthTest) return {shading, FogMode::Off, false, CompareFunc::Always, false, false};
+    return {shading, FogMode::Off, true, depthFunc, depthWrite, false};
+}
+
+// `key` with fog of `mode`.
+constexpr FragmentKey withFog(FragmentKey key, FogMode mode) {
+    key.fog = mode;
+    return key;
 }
 
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).
 inline FragmentKey fragmentKey(const DrawState& state) {
     const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
-    return makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite);
+    return withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
 }
 
 // The same key for primitives of one colour (points, bitmaps).

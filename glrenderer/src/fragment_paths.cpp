@@ -13,6 +13,12 @@ const FragmentRoutine& FragmentPaths::routine(FragmentKey key) const {
     return anyKey_;
 }
 
+FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, const DrawState& state)
+    : FragmentChoice(paths, key) {
+    fog = state.fog;
+    polygonOffset = state.polygonOffset;
+}
+
 FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {
     varyingW = {key, &paths.routine(key)};
     if (key.shading == Shading::Perspective) key.shading = Shading::Linear;

@@ -8,7 +8,8 @@
 namespace glrenderer {
 
 // The keys with fast paths of their own at every vector width: what scenes draw with nearly
-// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading). Each is
+// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), and smooth
+// depth-tested LINEAR fog. Each is
 // compiled with its key as a constant, so that it holds only the steps the key turns on.
 inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false),
@@ -20,6 +21,8 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, true, CompareFunc::LessEqual, true),
     makeFragmentKey(Shading::Linear, true, CompareFunc::LessEqual, true),
     makeFragmentKey(Shading::Perspective, true, CompareFunc::LessEqual, true),
+    // A fogged landscape (bench-fog-terrain).
+    withFog(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), FogMode::Linear),
 };
 
 // The fragment routines of one vector width: a fast path per key of kFastFragmentKeys, and one
@@ -64,7 +67,9 @@ inline const FragmentRoutine& generalFragmentRoutine() { return scalarFragmentPa
 // constant 1 (w = 1 at every vertex, as in orthographic scenes) takes `constantW`: the key with
 // linear shading, as dividing by one would change no bit.
 struct FragmentChoice {
+    // With the draw's state when the key reads its constants (fog, polygon offset).
     FragmentChoice(const FragmentPaths& paths, FragmentKey key);
+    FragmentChoice(const FragmentPaths& paths, FragmentKey key, const DrawState& state);
 
     // The path of a primitive of perspective shading with this plane of 1 / w. The plane
     // (1, 0, 0) is 1 at every pixel, and x * 1 is x for every float x.
@@ -74,6 +79,8 @@ struct FragmentChoice {
     }
 
     FragmentPath varyingW, constantW;
+    FogState fog;  // the draw's, for the primitives' inputs when the key has fog
+    PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
 };
 
 }  // namespace glrenderer

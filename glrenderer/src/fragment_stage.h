@@ -7,7 +7,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fragment_fog.h"
 #include "fragment_inputs.h"
+#include "lane_clamp.h"
 
 namespace glrenderer {
 
@@ -18,11 +20,6 @@ struct PlaneLanes {
     explicit PlaneLanes(const AttributePlane& p) : a0(L::floats(p.a0)), dadx(L::floats(p.dadx)), dady(L::floats(p.dady)) {}
     typename L::Float at(typename L::Float x, typename L::Float y) const { return L::fma(dady, y, L::fma(dadx, x, a0)); }
 };
-
-template <class L>
-typename L::Float clampUnit(typename L::Float v) {  // NaN and negatives to 0
-    return L::min(L::max(v, L::floats(0.0f)), L::floats(1.0f));
-}
 
 // The reference's fragment colour conversion (color_convert.h, fragmentToUnorm8) in lanes.
 template <class L>
@@ -41,20 +38,29 @@ public:
 
     explicit FragmentLanes(const FragmentInputs& in)
         : depth_(in.depth), invW_(in.invW), red_(in.color[0]), green_(in.color[1]), blue_(in.color[2]),
-          alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))) {}
+          alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
+          depthOffset_(L::floats(in.depthOffset)) {}
 
     // 24-bit window depth: round(clamp(z) * (2^24 - 1)), ties to even.
-    Int depth24(Float x, Float y) const {
-        return L::roundToInt(L::mul(clampUnit<L>(depth_.at(x, y)), L::floats(16777215.0f)));
+    // Polygon offset adds the primitive's depth offset to z first.
+    Int depth24(const FragmentKey& key, Float x, Float y) const {
+        Float z = depth_.at(x, y);
+        if (key.depthOffset) z = L::add(z, depthOffset_);
+        return L::roundToInt(L::mul(clampUnit<L>(z), L::floats(16777215.0f)));
     }
 
     // The colour words, packed R, G, B, A from the low byte.
-    [[gnu::always_inline]] inline Int rgba(Shading shading, Float x, Float y) const {
-        if (shading == Shading::Flat) return flat_;
+    [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y) const {
+        if (key.shading == Shading::Flat && key.fog == FogMode::Off) return flat_;
         Float r = red_.at(x, y), g = green_.at(x, y), b = blue_.at(x, y), a = alpha_.at(x, y);
-        if (shading == Shading::Perspective) {
+        if (key.shading == Shading::Perspective || key.fog != FogMode::Off) {
             const Float w = L::div(L::floats(1.0f), invW_.at(x, y));
-            r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
+            if (key.shading == Shading::Perspective) r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
+            // Fog, after the texture environment: alpha keeps its value.
+            if (key.fog != FogMode::Off) {
+                const Float f = fog_.factor(key.fog, L::mul(fogCoord_.at(x, y), w));
+                r = fog_.apply(0, f, r), g = fog_.apply(1, f, g), b = fog_.apply(2, f, b);
+            }
         }
         return L::bitOr(L::bitOr(fragmentToUnorm8<L>(r), L::template shiftLeft<8>(fragmentToUnorm8<L>(g))),
                         L::bitOr(L::template shiftLeft<16>(fragmentToUnorm8<L>(b)),
@@ -64,6 +70,9 @@ public:
 private:
     PlaneLanes<L> depth_, invW_, red_, green_, blue_, alpha_;
     Int flat_;
+    PlaneLanes<L> fogCoord_;
+    FogLanes<L> fog_;
+    Float depthOffset_;
 };
 
 // Lanes on consecutive pixels of a row: lane i is pixel first + i of the buffers. A whole
@@ -112,18 +121,18 @@ template <class L, class Block>
                                                typename L::Float x, typename L::Float y, typename L::Mask covered,
                                                const Block& block, const PixelBuffers& buffers) {
     typename L::Mask live = covered;
-    // Texture environment, then fog (issue 16): they make the colour, computed below; the alpha
-    // test needs it here, before the tests.
+    // Texture environment (issue 16), then fog (FragmentLanes::rgba): they make the colour,
+    // computed below; the alpha test needs it here, before the tests.
     // Scissor (issue 16): a rectangle, cut from coverage before the stage where it can be.
     // Alpha test, then the stencil test (issue 16).
     if (key.depthTest) {
-        const typename L::Int z = in.depth24(x, y);
+        const typename L::Int z = in.depth24(key, x, y);
         live = L::compare(key.depthFunc, live, z, block.load(buffers.depth, live));
         if (key.depthWrite) block.store(buffers.depth, live, z);
     }
     // Stencil operations on depth pass and fail (issue 16).
     if (L::none(live)) return live;
-    const typename L::Int rgba = in.rgba(key.shading, x, y);
+    const typename L::Int rgba = in.rgba(key, x, y);
     // Blending, the logic op, the colour mask (issue 16): here, reading the stored colour.
     block.store(buffers.color, live, rgba);
     return live;

@@ -8,6 +8,8 @@
 #include "glrenderer/saturate.h"
 
 #include "cpu_features.h"
+#include "exp2_approximation.h"
+#include "simd_scalar.h"
 
 #include <algorithm>
 #include <bit>
@@ -53,13 +55,8 @@ glm::vec3 transformNormal(const Matrix& m, const glm::vec3& n) {
 glm::vec3 xyz(const glm::vec4& v) { return {v.x, v.y, v.z}; }
 
 // llvmpipe's POW: exp2(log2(x) * y), each an approximation of its own (gallivm's
-// lp_build_log2_safe and lp_build_exp2: minimax polynomials evaluated as even and odd halves,
-// with LLVM's fmuladd, which is fused on CPUs with FMA and not on others).
-float multiplyAdd(float a, float b, float c) {
-    static const bool fused = cpuHasFma();
-    return fused ? std::fma(a, b, c) : a * b + c;
-}
-
+// lp_build_log2_safe, and lp_build_exp2 in exp2_approximation.h): minimax polynomials evaluated
+// as even and odd halves, with LLVM's fmuladd, which is fused on CPUs with FMA and not on others.
 float polynomial(float x, const double* coefficients, int count) {
     const float x2 = x * x;
     float even = 0.0f, odd = 0.0f;
@@ -68,10 +65,10 @@ float polynomial(float x, const double* coefficients, int count) {
         const float c = static_cast<float>(coefficients[i]);
         float& term = i % 2 == 0 ? even : odd;
         bool& have = i % 2 == 0 ? haveEven : haveOdd;
-        term = have ? multiplyAdd(x2, term, c) : c;
+        term = have ? ScalarLanes::multiplyAdd(x2, term, c) : c;
         have = true;
     }
-    return haveOdd ? multiplyAdd(odd, x, even) : even;
+    return haveOdd ? ScalarLanes::multiplyAdd(odd, x, even) : even;
 }
 
 float log2Approximation(float x) {
@@ -85,24 +82,13 @@ float log2Approximation(float x) {
     const float mantissa = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);
     const float y = (mantissa - 1.0f) / (mantissa + 1.0f);
     const float z = y * y;
-    return multiplyAdd(y, polynomial(z, kCoefficients, 5), exponent);
-}
-
-float exp2Approximation(float x) {
-    static constexpr double kCoefficients[] = {1.0, 0.693153073200168932794, 0.240153617044375388211,
-                                               0.0558263180532956664775, 0.00898934009049466391101,
-                                               0.00187757667519147912699};
-    if (std::isnan(x)) return x;
-    x = std::max(std::min(x, 128.0f), -126.99999f);
-    const float whole = std::floor(x);
-    const float fraction = x - whole;
-    const float scale = std::bit_cast<float>(static_cast<std::uint32_t>(static_cast<int>(whole) + 127) << 23);
-    return scale * polynomial(fraction, kCoefficients, 6);
+    return ScalarLanes::multiplyAdd(y, polynomial(z, kCoefficients, 5), exponent);
 }
 
 float power(float base, float exponent) {
     if (base == 0.0f) return 0.0f;
-    return exp2Approximation(log2Approximation(base) * exponent);
+    const float x = log2Approximation(base) * exponent;
+    return std::isnan(x) ? x : exp2Approximation<ScalarLanes>(x);
 }
 
 // LIT: (1, max(x, 0), x > 0 ? pow(max(y, 0), clamp(w, -128, 128)) : 0, 1), as NIR lowers it.

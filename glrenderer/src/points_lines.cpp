@@ -52,7 +52,7 @@ void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices
                         Framebuffer& framebuffer, Stats& stats) {
     // Points are drawn flat; lines as the state says.
     const FragmentChoice fragments(bestFragmentPaths(),
-                                   mode == PrimitiveMode::Points ? flatFragmentKey(state) : fragmentKey(state));
+                                   mode == PrimitiveMode::Points ? flatFragmentKey(state) : fragmentKey(state), state);
     forEachPrimitive(
         mode, vertices, state, ViewportTransform(state, framebuffer.height()),
         [&](const WindowVertex& v) { rasterizePoint(v, state, fragments, framebuffer, stats); },

@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <utility>
 
-#include "glrenderer/color_convert.h"
 #include "round_half_away.h"
 #include "triangle_setup.h"
 
@@ -253,7 +252,7 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
     fragment.setPath(fragments.varyingW);
     const FragmentKey& key = fragments.varyingW.key;
     if (key.shading == Shading::Flat) {
-        fragment.flatColor = fragmentRgba8(flatColor);
+        fragment.setFlatColor(flatColor);
     } else {
         for (int c = 0; c < 4; ++c) {
             fragment.color[c] = builder.plane(start.color[c] * start.invW, end.color[c] * end.invW);
@@ -262,6 +261,11 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
         fragment.setPath(fragments.path(fragment.invW));
     }
     if (key.depthTest) fragment.depth = builder.plane(start.z, end.z);
+    if (key.fog != FogMode::Off) {
+        fragment.fog = fragments.fog;
+        fragment.invW = builder.plane(start.invW, end.invW);
+        fragment.fogCoord = builder.plane(start.fogCoord * start.invW, end.fogCoord * end.invW);
+    }
     fillQuad(quad, fragment, framebuffer, stats);
 }
 

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "glrenderer/color_convert.h"
 #include "round_half_away.h"
 #include "triangle_setup.h"
 
@@ -61,8 +60,13 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
     if (state.shadeModel == ShadeModel::Smooth) c = c * point.invW * (1.0f / point.invW);
     FragmentInputs fragment;
     fragment.setPath(fragments.varyingW);
-    fragment.flatColor = fragmentRgba8(c);
+    fragment.setFlatColor(c);
     fragment.depth = {point.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
+    if (fragment.key.fog != FogMode::Off) {  // the fog coordinate as a perspective attribute, as the colour
+        fragment.fog = fragments.fog;
+        fragment.invW = {point.invW, 0.0f, 0.0f};
+        fragment.fogCoord = {point.fogCoord * point.invW, 0.0f, 0.0f};
+    }
     FragmentCounts counts;
     for (std::int64_t row = box.y0; row <= box.y1; ++row) {
         fragment.shadeSpan(static_cast<int>(row), static_cast<int>(box.x0), static_cast<int>(box.x1), framebuffer, counts);

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 
-#include "glrenderer/color_convert.h"
+#include "polygon_offset.h"
+
 
 namespace glrenderer {
 namespace {
@@ -25,6 +26,7 @@ EdgeFunction::EdgeFunction(const FixedPoint& a, const FixedPoint& b) {
 FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods) {
     FragmentKey key = fragmentKey(state);
     if (methods.hiddenSurface == HiddenSurface::PaintersSort) key = makeFragmentKey(key.shading, false, {}, false);
+    key.depthOffset = key.depthTest && state.polygonOffset.fill;
     if (key.shading == Shading::Perspective && methods.interpolation == Interpolation::ScreenLinear) {
         key.shading = Shading::Linear;
     }
@@ -60,8 +62,8 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     in.setPath(fragments.varyingW);
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
-        in.flatColor = fragmentRgba8(t.flatColor);
-        if (!key.depthTest) return true;
+        in.setFlatColor(t.flatColor);
+        if (!key.depthTest && key.fog == FogMode::Off) return true;
     }
     // The reference sets up planes only for triangles counter-clockwise in its y-down view; one
     // clockwise in GL's window (area > 0 here) is set up as (v1, v0, v2), keeping the provoking
@@ -81,6 +83,12 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         in.setPath(fragments.path(in.invW));
     }
     if (key.depthTest) in.depth = planes.plane(v0.z, v1.z, v2.z);
+    if (key.depthOffset) in.depthOffset = setupDepthOffset(fragments.polygonOffset, v0, v1, v2);
+    if (key.fog != FogMode::Off) {
+        in.fog = fragments.fog;
+        in.invW = planes.plane(v0.invW, v1.invW, v2.invW);
+        in.fogCoord = planes.plane(v0.fogCoord * v0.invW, v1.fogCoord * v1.invW, v2.fogCoord * v2.invW);
+    }
     return true;
 }
 

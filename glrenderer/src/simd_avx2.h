@@ -32,12 +32,16 @@ struct Avx2Lanes {
     static Float fma(Float a, Float b, Float c) { return _mm256_fmadd_ps(a, b, c); }
     static Float mul(Float a, Float b) { return _mm256_mul_ps(a, b); }
     static Float add(Float a, Float b) { return _mm256_add_ps(a, b); }
+    static Float sub(Float a, Float b) { return _mm256_sub_ps(a, b); }
+    static Float multiplyAdd(Float a, Float b, Float c) { return _mm256_fmadd_ps(a, b, c); }  // FMA: fused
+    static Float floor(Float v) { return _mm256_floor_ps(v); }
     static Float div(Float a, Float b) { return _mm256_div_ps(a, b); }
     static Float min(Float a, Float b) { return _mm256_min_ps(a, b); }
     static Float max(Float a, Float b) { return _mm256_max_ps(a, b); }
     static Float toFloat(Int v) { return _mm256_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm256_cvtps_epi32(v); }
     static Int bitsOf(Float v) { return _mm256_castps_si256(v); }
+    static Float fromBits(Int v) { return _mm256_castsi256_ps(v); }
 
     static Int add(Int a, Int b) { return _mm256_add_epi32(a, b); }
     static Int sub(Int a, Int b) { return _mm256_sub_epi32(a, b); }

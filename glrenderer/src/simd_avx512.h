@@ -29,12 +29,16 @@ struct Avx512Lanes {
     static Float fma(Float a, Float b, Float c) { return _mm512_fmadd_ps(a, b, c); }
     static Float mul(Float a, Float b) { return _mm512_mul_ps(a, b); }
     static Float add(Float a, Float b) { return _mm512_add_ps(a, b); }
+    static Float sub(Float a, Float b) { return _mm512_sub_ps(a, b); }
+    static Float multiplyAdd(Float a, Float b, Float c) { return _mm512_fmadd_ps(a, b, c); }  // FMA: fused
+    static Float floor(Float v) { return _mm512_roundscale_ps(v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC); }
     static Float div(Float a, Float b) { return _mm512_div_ps(a, b); }
     static Float min(Float a, Float b) { return _mm512_min_ps(a, b); }
     static Float max(Float a, Float b) { return _mm512_max_ps(a, b); }
     static Float toFloat(Int v) { return _mm512_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm512_cvtps_epi32(v); }
     static Int bitsOf(Float v) { return _mm512_castps_si512(v); }
+    static Float fromBits(Int v) { return _mm512_castsi512_ps(v); }
 
     static Int add(Int a, Int b) { return _mm512_add_epi32(a, b); }
     static Int sub(Int a, Int b) { return _mm512_sub_epi32(a, b); }

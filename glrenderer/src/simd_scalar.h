@@ -6,6 +6,7 @@
 
 #include "glrenderer/draw_state.h"
 #include "glrenderer/round_to_even.h"
+#include "cpu_features.h"
 
 namespace glrenderer {
 
@@ -28,12 +29,20 @@ struct ScalarLanes {
     static Float fma(Float a, Float b, Float c) { return std::fma(a, b, c); }
     static Float mul(Float a, Float b) { return a * b; }
     static Float add(Float a, Float b) { return a + b; }
+    static Float sub(Float a, Float b) { return a - b; }
+    // LLVM's fmuladd, as the reference's JIT emits it: fused only on CPUs with FMA.
+    static Float multiplyAdd(Float a, Float b, Float c) {
+        static const bool fused = cpuHasFma();
+        return fused ? std::fma(a, b, c) : a * b + c;
+    }
+    static Float floor(Float v) { return std::floor(v); }
     static Float div(Float a, Float b) { return a / b; }
     static Float min(Float a, Float b) { return a < b ? a : b; }
     static Float max(Float a, Float b) { return a > b ? a : b; }
     static Float toFloat(Int v) { return static_cast<Float>(static_cast<std::int32_t>(v)); }
     static Int roundToInt(Float v) { return static_cast<Int>(roundToEven(v)); }  // |v| < 2^31
     static Int bitsOf(Float v) { return std::bit_cast<Int>(v); }
+    static Float fromBits(Int v) { return std::bit_cast<Float>(v); }
 
     static Int add(Int a, Int b) { return a + b; }
     static Int bitAnd(Int a, Int b) { return a & b; }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "clip.h"
+#include "polygon_offset.h"
 #include "raster_line.h"
 #include "raster_point.h"
 #include "triangle_setup.h"
@@ -113,15 +114,13 @@ public:
     UnfilledDrawer(const DrawState& state, Framebuffer& framebuffer, Stats& stats,
                    const UnfilledTarget& target)
         : state_(state), framebuffer_(framebuffer), stats_(stats), target_(target),
-          lineFragments_(bestFragmentPaths(), fragmentKey(state)),
-          pointFragments_(bestFragmentPaths(), flatFragmentKey(state)) {}
+          lineFragments_(bestFragmentPaths(), fragmentKey(state), state),
+          pointFragments_(bestFragmentPaths(), flatFragmentKey(state), state) {}
 
     // One triangle out of the clipper (provoking vertex last) with its edge bits.
     void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c,
                   std::uint8_t edges, const glm::vec4& flatColor) {
-        const WindowVertex& w0 = a.window;
-        const WindowVertex& w1 = b.window;
-        const WindowVertex& w2 = c.window;
+        WindowVertex w0 = a.window, w1 = b.window, w2 = c.window;
         const float det = drawModuleDeterminant(w0, w1, w2);
         const bool front = drawModuleFacing(det, state_.frontFaceCCW) == Facing::Front;
         if (state_.cullEnabled &&
@@ -138,6 +137,9 @@ public:
             target_.fill(w0, w1, w2, flatColor);
             return;
         }
+        // Polygon offset of line and point modes: the draw module's, on the vertices.
+        const PolygonOffset& offset = state_.polygonOffset;
+        if (mode == PolygonMode::Line ? offset.line : offset.point) offsetInDrawModule(offset, w0, w1, w2);
         ++stats_.rasterized;
         target_.beforeLinesOrPoints();
         const bool flat = state_.shadeModel == ShadeModel::Flat;

@@ -3,6 +3,7 @@
 #include "clip.h"
 #include "column_transform.h"
 #include "cpu_features.h"
+#include "fog.h"
 
 namespace glrenderer {
 namespace {
@@ -18,6 +19,7 @@ glm::vec3 eyeNormal(const Matrix& m, const glm::vec3& n) {
 
 VertexStage::VertexStage(std::size_t batchVertices) {
     clipPositions_.reserve(batchVertices);
+    fogCoordinates_.reserve(batchVertices);
     outcodes_.reserve(batchVertices);
     windowVertices_.reserve(batchVertices);
     clipVertices_.reserve(batchVertices);
@@ -32,6 +34,12 @@ Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& v
     const Matrix& mvp = batch.transform.modelviewProjection;
     Outcode anyOutside = cpuHasFma() ? stageVerticesFma(batch.vertices, mvp, viewport, out)
                                      : stageVertices(batch.vertices, mvp, viewport, out);
+    fogCoordinates_.clear();
+    if (batch.state.fog.mode != FogMode::Off) {
+        fogCoordinates_.resize(count);
+        fogCoordinates(batch.vertices, batch.transform.modelview, batch.state.fog.distance, fogCoordinates_);
+        for (std::size_t i = 0; i < count; ++i) windowVertices_[i].fogCoord = fogCoordinates_[i];
+    }
     const UserClipPlanes& user = batch.state.clipPlanes;
     if (user.enabled) {
         for (std::size_t i = 0; i < count; ++i) {
@@ -49,6 +57,7 @@ ClipVertex VertexStage::clipVertex(std::span<const Vertex> vertices, std::size_t
     out.color = in.color;
     out.backColor = in.backColor;
     out.edgeFlag = in.edgeFlag;
+    if (!fogCoordinates_.empty()) out.fogCoord = fogCoordinates_[i];
     return out;
 }
 

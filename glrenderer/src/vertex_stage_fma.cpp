@@ -41,6 +41,7 @@ Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelvi
         WindowVertex& windowVertex = out.windowVertices[i];
         _mm_storeu_ps(&windowVertex.x, _mm_blend_ps(window, invW, 0b1000));  // x, y, z, invW
         _mm_storeu_ps(&windowVertex.color.x, _mm_loadu_ps(&vertices[i].color.x));
+        windowVertex.fogCoord = 0.0f;  // (the stage sets it after the pass when fog is on)
     }
     return anyOutside;
 }

@@ -35,6 +35,7 @@ WindowVertex ViewportTransform::applyToClipped(const ClipVertex& vertex) const {
     out.y = p.y * out.invW * scaleY_ + translateY_;
     out.z = p.z * out.invW * scaleZ_ + translateZ_;
     out.color = vertex.color;
+    out.fogCoord = vertex.fogCoord;
     return out;
 }
 

@@ -12,6 +12,7 @@ struct WindowVertex {
     float x = 0, y = 0, z = 0;
     float invW = 1;  // 1 / w_clip, the perspective weight of the attributes
     glm::vec4 color;
+    float fogCoord = 0;  // only with fog
 };
 
 // glViewport and glDepthRange as a scale and an offset per axis, computed in float as the
@@ -23,7 +24,11 @@ public:
     // A vertex from the program: x_window = fma(x_clip * (1 / w), scale, translate), as the
     // reference's vertex stage computes it (one rounding for the multiply-add).
     WindowVertex apply(const glm::vec4& clipPosition, const glm::vec4& color) const;
-    WindowVertex apply(const ClipVertex& vertex) const { return apply(vertex.position, vertex.color); }
+    WindowVertex apply(const ClipVertex& vertex) const {
+        WindowVertex out = apply(vertex.position, vertex.color);
+        out.fogCoord = vertex.fogCoord;
+        return out;
+    }
     // A vertex made by clipping: the same formula with a separate multiply and add, as the
     // reference's clipper computes it.
     WindowVertex applyToClipped(const ClipVertex& vertex) const;

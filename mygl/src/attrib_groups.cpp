@@ -21,9 +21,10 @@ RestoreGroup saveFields(const State& state) {
 constexpr GLenum kEnableCapabilities[] = {
     GL_ALPHA_TEST, GL_BLEND, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_LIGHTING,
     GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH,
-    GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH,
-    GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D, GL_CLIP_PLANE0,
-    GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5, GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
+    GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
+    GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
+    GL_TEXTURE_2D, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
+    GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
 };
 constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER};
 constexpr GLenum kDepthBufferCapabilities[] = {GL_DEPTH_TEST};
@@ -32,7 +33,8 @@ constexpr GLenum kLightingCapabilities[] = {GL_COLOR_MATERIAL, GL_LIGHTING, GL_L
                                             GL_LIGHT3,         GL_LIGHT4,   GL_LIGHT5, GL_LIGHT6, GL_LIGHT7};
 constexpr GLenum kLineCapabilities[] = {GL_LINE_SMOOTH, GL_LINE_STIPPLE};
 constexpr GLenum kPointCapabilities[] = {GL_POINT_SMOOTH};
-constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE, GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE};
+constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE,          GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
+                                           GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,      GL_POLYGON_STIPPLE};
 constexpr GLenum kScissorCapabilities[] = {GL_SCISSOR_TEST};
 constexpr GLenum kStencilCapabilities[] = {GL_STENCIL_TEST};
 constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D, GL_TEXTURE_2D};
@@ -50,7 +52,7 @@ const AttribGroup kServerGroups[] = {
     {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities, saveFields<[](auto& s) {
          return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth);
      }>},
-    {GL_FOG_BIT, kFogCapabilities, nullptr},
+    {GL_FOG_BIT, kFogCapabilities, saveFields<[](auto& s) { return std::tie(s.fog, s.draw.fog); }>},
     {GL_LIGHTING_BIT, kLightingCapabilities, saveFields<[](auto& s) {
          // (GL_NORMALIZE and GL_RESCALE_NORMAL, kept in the lighting state, belong to other groups.)
          auto& l = s.lighting;
@@ -61,7 +63,8 @@ const AttribGroup kServerGroups[] = {
     {GL_POINT_BIT, kPointCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.pointSize); }>},
     {GL_POLYGON_BIT, kPolygonCapabilities, saveFields<[](auto& s) {
          return std::tie(s.cullFaceMode, s.draw.cullFace, s.frontFace, s.draw.frontFaceCCW, s.polygonModeFront,
-                         s.draw.polygonFront, s.polygonModeBack, s.draw.polygonBack);
+                         s.draw.polygonFront, s.polygonModeBack, s.draw.polygonBack, s.draw.polygonOffset.factor,
+                         s.draw.polygonOffset.units);
      }>},
     {GL_SCISSOR_BIT, kScissorCapabilities, nullptr},
     {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, nullptr},

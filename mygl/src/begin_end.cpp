@@ -3,6 +3,7 @@
 #include <array>
 
 #include "compiled.h"
+#include "fog_state.h"
 #include "vertex_input.h"
 
 namespace mygl {
@@ -19,6 +20,7 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
         updateClipPlanes(*s);
     }
     prepareLighting(*s);
+    if (s->fog.enabled) updateFogDistance(*s);
     s->insideBeginEnd = true;
     s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
     if (s->lightingEnabled) s->pipeline.colorPerVertex();  // lit colours vary per vertex

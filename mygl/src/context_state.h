@@ -51,6 +51,15 @@ inline glrenderer::LightingState defaultLighting() {
     return l;
 }
 
+// Fog's parameters as GL keeps them (issue 16); the pipeline's DrawState::fog is formed from
+// them (fog_state.h).
+struct FogParameters {
+    bool enabled = false;
+    GLenum mode = GL_EXP;
+    float density = 1.0f, start = 0.0f, end = 1.0f, index = 0.0f;
+    glm::vec4 color{0.0f};  // clamped, as set
+};
+
 struct Context::State {
     State(int width, int height) : framebuffer(width, height), pipeline(framebuffer) {
         draw.viewport = {0, 0, width, height};
@@ -107,6 +116,8 @@ struct Context::State {
     bool lightingStale = true;
     // glMaterial came inside the open glBegin/glEnd: its vertices are lit as they come.
     bool lightingOnProgramThread = false;
+
+    FogParameters fog;  // (issue 16)
 
     // What the reference does when it validates state before a draw or a read: settle the
     // kinds of the current matrices and form their product.

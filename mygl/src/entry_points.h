@@ -31,6 +31,8 @@ std::span<const EntryPoint> lightingEntryPoints();
 std::span<const EntryPoint> selectionEntryPoints();
 std::span<const EntryPoint> attribStackEntryPoints();
 std::span<const EntryPoint> clipPlaneEntryPoints();
+std::span<const EntryPoint> fogEntryPoints();
+std::span<const EntryPoint> polygonOffsetEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.

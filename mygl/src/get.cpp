@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "entry_points.h"
+#include "fog_state.h"
+#include "polygon_offset_state.h"
 #include "gl12_lighting_enums.h"
 
 namespace mygl {
@@ -117,6 +119,11 @@ Value query(const Context::State& s, GLenum name) {
     default:
         if (const std::optional<bool> enabled = lightingCapability(s, name)) return flag(*enabled);
         if (const std::optional<bool> enabled = clipPlaneCapability(s, name)) return flag(*enabled);
+        if (name == GL_FOG) return flag(s.fog.enabled);
+        if (const std::optional<bool> offset = polygonOffsetCapability(s, name)) return flag(*offset);
+        if (name == GL_POLYGON_OFFSET_FACTOR) return one(d.polygonOffset.factor);
+        if (name == GL_POLYGON_OFFSET_UNITS) return one(d.polygonOffset.units);
+        if (std::optional<std::vector<double>> fog = fogQuery(s, name)) return Value{*fog, name == GL_FOG_COLOR};
         return {};
     }
 }

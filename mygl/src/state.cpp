@@ -4,6 +4,8 @@
 #include "capabilities.h"
 #include "clamp_to_unit.h"
 #include "compiled.h"
+#include "fog_state.h"
+#include "polygon_offset_state.h"
 
 namespace mygl {
 namespace {
@@ -15,8 +17,8 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_FOG, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
-    GL_POLYGON_OFFSET_FILL, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
+    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
+    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
 };
 
 bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
@@ -185,6 +187,12 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         return true;
     }
     if (setLightingCapability(s, cap, enabled) || setClipPlaneCapability(s, cap, enabled)) return true;
+    if (setPolygonOffsetCapability(s, cap, enabled)) return true;
+    if (cap == GL_FOG) {
+        s.fog.enabled = enabled;
+        updateFog(s);
+        return true;
+    }
     if (!isInert(cap)) return false;
     auto& list = s.otherEnabled;
     const auto found = std::find(list.begin(), list.end(), cap);
@@ -198,6 +206,8 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
     if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
     if (const std::optional<bool> plane = clipPlaneCapability(s, cap)) return *plane;
+    if (cap == GL_FOG) return s.fog.enabled;
+    if (const std::optional<bool> offset = polygonOffsetCapability(s, cap)) return *offset;
     if (!isInert(cap)) return std::nullopt;
     return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
 }

@@ -113,9 +113,12 @@ template <class T>
 std::size_t lightCount(GLenum, GLenum name, const T*) { return lightParameterCount(name); }
 template <class T>
 std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(name); }
+// Values behind the pointer of glFog*v: 4 for the colour, 1 otherwise.
+template <class T>
+std::size_t fogCount(GLenum name, const T*) { return name == GL_FOG_COLOR ? 4 : 1; }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, selection (the program's hit buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, lighting, fog, polygon offset, selection (the program's hit buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -136,6 +139,8 @@ std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(
     X(glad_glMaterialiv, lightCount<GLint>) X(glad_glLightModelf, 0) X(glad_glLightModeli, 0)    \
     X(glad_glLightModelfv, lightModelCount<GLfloat>) X(glad_glLightModeliv, lightModelCount<GLint>) \
     X(glad_glColorMaterial, 0) \
+    X(glad_glFogf, 0) X(glad_glFogi, 0) X(glad_glFogfv, fogCount<GLfloat>) X(glad_glFogiv, fogCount<GLint>) \
+    X(glad_glPolygonOffset, 0) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
     X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4)
 

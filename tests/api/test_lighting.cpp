@@ -14,7 +14,10 @@
 #include <vector>
 
 #include "backends.h"
+#include "color_difference.h"
 
+using testing_support::ColorDifference;
+using testing_support::difference;
 using testing_support::Frame;
 using testing_support::onBothBackends;
 using testing_support::readFrame;
@@ -23,22 +26,6 @@ namespace {
 
 constexpr int kWidth = 96, kHeight = 72;
 constexpr GLenum kRescaleNormal = 0x803A, kLightModelColorControl = 0x81F8, kSeparateSpecular = 0x81FA;
-
-// Pixels whose colour differs at all, and the largest channel difference.
-struct ColorDifference {
-    int pixels = 0;
-    int maxChannel = 0;
-};
-ColorDifference difference(const Frame& a, const Frame& b) {
-    ColorDifference d;
-    for (std::size_t p = 0; p < a.color.size(); p += 4) {
-        int most = 0;
-        for (std::size_t c = 0; c < 4; ++c) most = std::max(most, std::abs(a.color[p + c] - b.color[p + c]));
-        d.pixels += most > 0;
-        d.maxChannel = std::max(d.maxChannel, most);
-    }
-    return d;
-}
 
 void sphere(int slices = 24, int stacks = 16) {
     GLUquadric* q = gluNewQuadric();

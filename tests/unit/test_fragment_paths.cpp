@@ -36,6 +36,8 @@ std::string describe(const FragmentKey& key) {
     if (key.depthTest) {
         text += " depth func " + std::to_string(static_cast<int>(key.depthFunc)) + (key.depthWrite ? " write" : "");
     }
+    if (key.fog != FogMode::Off) text += " fog " + std::to_string(static_cast<int>(key.fog));
+    if (key.depthOffset) text += " offset";
     return text;
 }
 
@@ -59,9 +61,12 @@ std::vector<NamedRoutine> routinesOfThisCpu() {
 }
 
 FragmentKey randomKey(std::mt19937& random) {
-    std::uniform_int_distribution<int> shading(0, 2), depthFunc(0, 7), coin(0, 1);
-    return makeFragmentKey(static_cast<Shading>(shading(random)), coin(random),
-                           static_cast<CompareFunc>(depthFunc(random)), coin(random));
+    std::uniform_int_distribution<int> shading(0, 2), depthFunc(0, 7), coin(0, 1), fog(0, 3);
+    FragmentKey key = makeFragmentKey(static_cast<Shading>(shading(random)), coin(random),
+                                      static_cast<CompareFunc>(depthFunc(random)), coin(random));
+    key.fog = static_cast<FogMode>(fog(random));
+    key.depthOffset = key.depthTest && coin(random);
+    return key;
 }
 
 // A plane whose values over the framebuffer lie around [low, high], now and then a special one.
@@ -77,6 +82,14 @@ AttributePlane randomPlane(std::mt19937& random, float low, float high) {
     case 3: return {-0.0f, 0.0f, 0.0f};
     default: return plane;
     }
+}
+
+// Fog constants of a random mode, range, density and colour.
+FogState randomFog(std::mt19937& random) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f), distance(-5.0f, 40.0f);
+    std::uniform_int_distribution<int> mode(1, 3);
+    return makeFogState(static_cast<FogMode>(mode(random)), FogDistance::OwnDotProduct, unit(random),
+                        distance(random), distance(random), {unit(random), unit(random), unit(random), 1.0f});
 }
 
 struct Target {
@@ -120,6 +133,7 @@ WindowVertex randomVertex(std::mt19937& random, float spread) {
     v.z = unit(random) * 1.2f - 0.1f;  // slightly outside [0, 1] to exercise the clamp
     v.invW = 1.0f / w(random);
     v.color = {unit(random) * 1.2f - 0.1f, unit(random), unit(random), unit(random)};
+    v.fogCoord = unit(random) * 30.0f;
     return v;
 }
 
@@ -154,6 +168,9 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
             inputs.invW = randomPlane(random, 0.25f, 4.0f);
             inputs.depth = randomPlane(random, -0.1f, 1.1f);
             inputs.flatColor = word(random);
+            inputs.fogCoord = randomPlane(random, -2.0f, 40.0f);
+            inputs.fog = randomFog(random);
+            inputs.depthOffset = std::uniform_real_distribution<float>(-0.01f, 0.01f)(random);
             inputs.setPath({tested.anyKey ? randomKey(random) : tested.key, tested.routine});
             FragmentInputs general = inputs;
             general.routine = &generalFragmentRoutine();
@@ -202,6 +219,8 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         state.shadeModel = coin(random) ? ShadeModel::Smooth : ShadeModel::Flat;
         Methods methods;
         if (fourth(random) == 0) methods.interpolation = Interpolation::ScreenLinear;
+        if (fourth(random) == 0) state.fog = randomFog(random);
+        if (fourth(random) == 0) state.polygonOffset = {1.5f, -3.0f, true, false, false};
         // Every other triangle is drawn within a random rectangle, as a tile draws its part.
         PixelRect rect{0, kWidth - 1, 0, kHeight - 1};
         if (i % 2) {
@@ -212,7 +231,7 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
         for (const FragmentPaths* paths : allPaths) {
             RasterTriangle triangle;
-            const FragmentChoice choice(*paths, triangleFragmentKey(state, methods));
+            const FragmentChoice choice(*paths, triangleFragmentKey(state, methods), state);
             if (!prepareTriangle(setup, choice, RasterMethod::Exact, kWidth, kHeight, triangle)) break;
             if (paths == allPaths.front()) ++drawn;
             Target expected(color, depth);

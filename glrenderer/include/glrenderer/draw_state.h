@@ -4,6 +4,9 @@
 
 #include <glm/vec4.hpp>
 
+#include "glrenderer/fog.h"
+#include "glrenderer/polygon_offset.h"
+
 namespace glrenderer {
 
 // The ten glBegin modes, in GL's enum order (GL_POINTS = 0 ... GL_POLYGON = 9).
@@ -58,6 +61,10 @@ struct DrawState {
     // Two-sided lighting: filled triangles facing back take their vertices' back colours.
     bool twoSidedColors = false;
     UserClipPlanes clipPlanes;
+    // Fog (issue 16): its mode (Off when disabled) and constants.
+    FogState fog;
+    // Polygon offset (issue 16).
+    PolygonOffset polygonOffset;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }
