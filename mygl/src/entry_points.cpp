@@ -18,7 +18,7 @@ const std::vector<EntryPoint>& implementedTable() {
         for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
-                          clipPlaneEntryPoints()}) {
+                          clipPlaneEntryPoints(), evaluatorEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

@@ -184,7 +184,10 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         flag = enabled;
         return true;
     }
-    if (setLightingCapability(s, cap, enabled) || setClipPlaneCapability(s, cap, enabled)) return true;
+    if (setLightingCapability(s, cap, enabled) || setClipPlaneCapability(s, cap, enabled) ||
+        setEvaluatorCapability(s, cap, enabled)) {
+        return true;
+    }
     if (!isInert(cap)) return false;
     auto& list = s.otherEnabled;
     const auto found = std::find(list.begin(), list.end(), cap);
@@ -198,6 +201,7 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
     if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
     if (const std::optional<bool> plane = clipPlaneCapability(s, cap)) return *plane;
+    if (const std::optional<bool> map = evaluatorCapability(s, cap)) return *map;
     if (!isInert(cap)) return std::nullopt;
     return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
 }
