@@ -1,5 +1,5 @@
 // What glPushAttrib and glPushClientAttrib save of each attribute group (GL 1.1's state tables),
-// over the state MyGL has. Groups MyGL has no state of yet (GL_ACCUM_BUFFER_BIT, GL_EVAL_BIT,
+// over the state MyGL has. Groups MyGL has no state of yet (GL_ACCUM_BUFFER_BIT,
 // GL_PIXEL_MODE_BIT) save nothing.
 #include <tuple>
 
@@ -25,6 +25,10 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
     GL_TEXTURE_2D, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
     GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
+    GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
+    GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
+    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
+    GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL,
 };
 constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER};
 constexpr GLenum kDepthBufferCapabilities[] = {GL_DEPTH_TEST};
@@ -38,6 +42,12 @@ constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE,          GL_POLYGON_OFF
 constexpr GLenum kScissorCapabilities[] = {GL_SCISSOR_TEST};
 constexpr GLenum kStencilCapabilities[] = {GL_STENCIL_TEST};
 constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D, GL_TEXTURE_2D};
+constexpr GLenum kEvalCapabilities[] = {
+    GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
+    GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
+    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
+    GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL,
+};
 constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE,   GL_CLIP_PLANE0,     GL_CLIP_PLANE1,     GL_CLIP_PLANE2,
                                              GL_CLIP_PLANE3, GL_CLIP_PLANE4,     GL_CLIP_PLANE5,     GL_CLIP_PLANE0 + 6,
                                              GL_CLIP_PLANE0 + 7};
@@ -53,6 +63,11 @@ const AttribGroup kServerGroups[] = {
          return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth);
      }>},
     {GL_FOG_BIT, kFogCapabilities, saveFields<[](auto& s) { return std::tie(s.fog, s.draw.fog); }>},
+    {GL_EVAL_BIT, kEvalCapabilities, saveFields<[](auto& s) {
+         auto& e = s.evaluators;
+         return std::tie(e.grid1un, e.grid1u1, e.grid1u2, e.grid1du, e.grid2un, e.grid2u1, e.grid2u2, e.grid2du,
+                         e.grid2vn, e.grid2v1, e.grid2v2, e.grid2dv);
+     }>},
     {GL_LIGHTING_BIT, kLightingCapabilities, saveFields<[](auto& s) {
          // (GL_NORMALIZE and GL_RESCALE_NORMAL, kept in the lighting state, belong to other groups.)
          auto& l = s.lighting;

@@ -13,6 +13,7 @@
 #include "attrib_stack.h"
 #include "bitmap_cache.h"
 #include "client_arrays.h"
+#include "evaluators.h"
 #include "display_lists.h"
 #include "selection.h"
 #include "stack_matrix.h"
@@ -87,6 +88,7 @@ struct Context::State {
     // projection, again at the next glBegin once it changed.
     std::array<glm::vec4, 8> eyeClipPlanes{};
     bool clipPlanesStale = false;
+    Evaluators evaluators;
 
     // Fixed-function state, kept as GL values where glGet returns them.
     glrenderer::DrawState draw;

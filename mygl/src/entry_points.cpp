@@ -18,7 +18,8 @@ const std::vector<EntryPoint>& implementedTable() {
         for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
-                          clipPlaneEntryPoints(), fogEntryPoints(), polygonOffsetEntryPoints()}) {
+                          clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
+                          polygonOffsetEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

@@ -33,6 +33,7 @@ std::span<const EntryPoint> attribStackEntryPoints();
 std::span<const EntryPoint> clipPlaneEntryPoints();
 std::span<const EntryPoint> fogEntryPoints();
 std::span<const EntryPoint> polygonOffsetEntryPoints();
+std::span<const EntryPoint> evaluatorEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.
@@ -46,6 +47,9 @@ bool setLightingCapability(Context::State& state, GLenum cap, bool enabled);
 bool setClipPlaneCapability(Context::State& state, GLenum cap, bool enabled);
 std::optional<bool> clipPlaneCapability(const Context::State& state, GLenum cap);
 void updateClipPlanes(Context::State& state);
+// The same for GL_MAPn_* and GL_AUTO_NORMAL.
+bool setEvaluatorCapability(Context::State& state, GLenum cap, bool enabled);
+std::optional<bool> evaluatorCapability(const Context::State& state, GLenum cap);
 std::optional<bool> lightingCapability(const Context::State& state, GLenum cap);
 
 // Lighting is prepared again after any state change.

@@ -107,6 +107,14 @@ Value query(const Context::State& s, GLenum name) {
     case GL_MAX_LIST_NESTING: return one(DisplayLists::kMaxNesting);
     case GL_MAX_LIGHTS: return one(glrenderer::kMaxLights);
     case GL_MAX_CLIP_PLANES: return one(double(s.eyeClipPlanes.size()));
+    case GL_MAX_EVAL_ORDER: return one(kMaxEvalOrder);
+    case GL_MAP1_GRID_DOMAIN: return Value{{s.evaluators.grid1u1, s.evaluators.grid1u2}};
+    case GL_MAP1_GRID_SEGMENTS: return one(s.evaluators.grid1un);
+    case GL_MAP2_GRID_DOMAIN: {
+        const Evaluators& e = s.evaluators;
+        return Value{{e.grid2u1, e.grid2u2, e.grid2v1, e.grid2v2}};
+    }
+    case GL_MAP2_GRID_SEGMENTS: return Value{{double(s.evaluators.grid2un), double(s.evaluators.grid2vn)}};
     case GL_LIGHT_MODEL_AMBIENT: {
         const glm::vec4& a = s.lighting.modelAmbient;
         return Value{{a.r, a.g, a.b, a.a}, true};
@@ -124,6 +132,7 @@ Value query(const Context::State& s, GLenum name) {
         if (name == GL_POLYGON_OFFSET_FACTOR) return one(d.polygonOffset.factor);
         if (name == GL_POLYGON_OFFSET_UNITS) return one(d.polygonOffset.units);
         if (std::optional<std::vector<double>> fog = fogQuery(s, name)) return Value{*fog, name == GL_FOG_COLOR};
+        if (const std::optional<bool> enabled = evaluatorCapability(s, name)) return flag(*enabled);
         return {};
     }
 }

@@ -186,8 +186,10 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         flag = enabled;
         return true;
     }
-    if (setLightingCapability(s, cap, enabled) || setClipPlaneCapability(s, cap, enabled)) return true;
-    if (setPolygonOffsetCapability(s, cap, enabled)) return true;
+    if (setLightingCapability(s, cap, enabled) || setClipPlaneCapability(s, cap, enabled) ||
+        setEvaluatorCapability(s, cap, enabled) || setPolygonOffsetCapability(s, cap, enabled)) {
+        return true;
+    }
     if (cap == GL_FOG) {
         s.fog.enabled = enabled;
         updateFog(s);
@@ -208,6 +210,7 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (const std::optional<bool> plane = clipPlaneCapability(s, cap)) return *plane;
     if (cap == GL_FOG) return s.fog.enabled;
     if (const std::optional<bool> offset = polygonOffsetCapability(s, cap)) return *offset;
+    if (const std::optional<bool> map = evaluatorCapability(s, cap)) return *map;
     if (!isInert(cap)) return std::nullopt;
     return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
 }

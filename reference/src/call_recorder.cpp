@@ -117,6 +117,30 @@ std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(
 template <class T>
 std::size_t fogCount(GLenum name, const T*) { return name == GL_FOG_COLOR ? 4 : 1; }
 
+// Values behind glMap1's and glMap2's pointers: the last point's offset plus its components
+// (1 for arguments the call rejects).
+std::size_t mapComponents(GLenum target) {
+    const GLenum first = target >= GL_MAP2_COLOR_4 ? GL_MAP2_COLOR_4 : GL_MAP1_COLOR_4;
+    if (target < first || target > first + 8) return 0;
+    constexpr std::size_t kComponents[] = {4, 1, 3, 1, 2, 3, 4, 3, 4};
+    return kComponents[target - first];
+}
+std::size_t mapPoints(GLenum target, GLint ustride, GLint uorder, GLint vstride, GLint vorder) {
+    const std::size_t size = mapComponents(target);
+    if (size == 0 || uorder < 1 || uorder > 30 || vorder < 1 || vorder > 30 || ustride < GLint(size) || vstride < GLint(size)) {
+        return 1;
+    }
+    return std::size_t(uorder - 1) * std::size_t(ustride) + std::size_t(vorder - 1) * std::size_t(vstride) + size;
+}
+template <class T>
+std::size_t map1Count(GLenum target, T, T, GLint stride, GLint order, const T*) {
+    return mapPoints(target, stride, order, stride, 1);
+}
+template <class T>
+std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GLint vstride, GLint vorder, const T*) {
+    return mapPoints(target, ustride, uorder, vstride, vorder);
+}
+
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
 // lists, lighting, fog, polygon offset, selection (the program's hit buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
@@ -142,7 +166,13 @@ std::size_t fogCount(GLenum name, const T*) { return name == GL_FOG_COLOR ? 4 : 
     X(glad_glFogf, 0) X(glad_glFogi, 0) X(glad_glFogfv, fogCount<GLfloat>) X(glad_glFogiv, fogCount<GLint>) \
     X(glad_glPolygonOffset, 0) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
-    X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4)
+    X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4) \
+    X(glad_glMap1f, map1Count<GLfloat>) X(glad_glMap1d, map1Count<GLdouble>) X(glad_glMap2f, map2Count<GLfloat>) \
+    X(glad_glMap2d, map2Count<GLdouble>) X(glad_glMapGrid1f, 0) X(glad_glMapGrid1d, 0) X(glad_glMapGrid2f, 0)    \
+    X(glad_glMapGrid2d, 0) X(glad_glEvalCoord1f, 0) X(glad_glEvalCoord1d, 0) X(glad_glEvalCoord1fv, 1)          \
+    X(glad_glEvalCoord1dv, 1) X(glad_glEvalCoord2f, 0) X(glad_glEvalCoord2d, 0) X(glad_glEvalCoord2fv, 2)      \
+    X(glad_glEvalCoord2dv, 2) X(glad_glEvalPoint1, 0) X(glad_glEvalPoint2, 0) X(glad_glEvalMesh1, 0)           \
+    X(glad_glEvalMesh2, 0)
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();
