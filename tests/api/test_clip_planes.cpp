@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "backends.h"
+#include "color_difference.h"
 
 using testing_support::Frame;
 using testing_support::onBothBackends;
@@ -64,9 +65,8 @@ Frame clippedScene(const Case& c) {
 void expectSameFrames(const std::vector<Case>& cases) {
     for (const Case& c : cases) {
         const auto frames = onBothBackends<Frame>([&] { return clippedScene(c); }, kWidth, kHeight);
-        int differing = 0;
-        for (std::size_t p = 0; p < frames.mygl.color.size(); ++p) differing += frames.mygl.color[p] != frames.osmesa.color[p];
-        EXPECT_EQ(differing, 0) << c.name;
+        const testing_support::ColorDifference d = testing_support::difference(frames.mygl, frames.osmesa);
+        EXPECT_EQ(d.pixels, 0) << c.name << ": max channel difference " << d.maxChannel;
         EXPECT_EQ(frames.mygl.depth, frames.osmesa.depth) << c.name;
     }
 }
