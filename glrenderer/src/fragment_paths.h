@@ -57,8 +57,7 @@ const FragmentPaths& scalarFragmentPaths();
 const FragmentPaths& avx2FragmentPaths();
 // 16 lanes of AVX-512F; only after cpuHasAvx512().
 const FragmentPaths& avx512FragmentPaths();
-// The widest this CPU runs, chosen once. MYGL_KERNELS=avx2 or scalar caps the choice, to see
-// how a CPU without AVX-512 (or AVX2) would run: the pixels are the same.
+// The widest this CPU runs (widestLanes()).
 const FragmentPaths& bestFragmentPaths();
 // The general path: the scalar routine for any key.
 inline const FragmentRoutine& generalFragmentRoutine() { return scalarFragmentPaths().anyKey(); }

@@ -196,10 +196,8 @@ void Pipeline::setUnlit() {
 void Pipeline::lightOpenBatch() {
     if (!batch_->lighting) return;
     const bool twoSided = batch_->state.twoSidedColors;
-    for (std::size_t i = batch_->first; i < chunk_->vertices.size(); ++i) {
-        batch_->lighting->lightVertex(chunk_->vertices[i], twoSided);
-    }
-    for (Vertex& vertex : open_) batch_->lighting->lightVertex(vertex, twoSided);
+    batch_->lighting->lightVertices(std::span(chunk_->vertices).subspan(batch_->first), twoSided);
+    batch_->lighting->lightVertices(open_, twoSided);
     batch_->lighting = nullptr;
 }
 

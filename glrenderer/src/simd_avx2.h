@@ -38,6 +38,14 @@ struct Avx2Lanes {
     static Float div(Float a, Float b) { return _mm256_div_ps(a, b); }
     static Float min(Float a, Float b) { return _mm256_min_ps(a, b); }
     static Float max(Float a, Float b) { return _mm256_max_ps(a, b); }
+    static Float sqrt(Float v) { return _mm256_sqrt_ps(v); }
+    static Float abs(Float v) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), v); }
+    // Ordered comparisons of floats: false where either is NaN.
+    static Mask lessThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_LT_OQ)); }
+    static Mask lessEqual(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_LE_OQ)); }
+    static Mask equal(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_EQ_OQ)); }
+    static Mask isNan(Float v) { return _mm256_castps_si256(_mm256_cmp_ps(v, v, _CMP_UNORD_Q)); }
+    static Float select(Mask m, Float ifSet, Float ifClear) { return _mm256_blendv_ps(ifClear, ifSet, _mm256_castsi256_ps(m)); }
     static Float toFloat(Int v) { return _mm256_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm256_cvtps_epi32(v); }
     static Int bitsOf(Float v) { return _mm256_castps_si256(v); }
@@ -48,6 +56,10 @@ struct Avx2Lanes {
     static Int mul(Int a, Int b) { return _mm256_mullo_epi32(a, b); }
     static Int bitAnd(Int a, Int b) { return _mm256_and_si256(a, b); }
     static Int bitOr(Int a, Int b) { return _mm256_or_si256(a, b); }
+    static Int bitXor(Int a, Int b) { return _mm256_xor_si256(a, b); }
+    static Mask either(Mask a, Mask b) { return _mm256_or_si256(a, b); }
+    static Float loadFloats(const float* lanes) { return _mm256_loadu_ps(lanes); }
+    static void storeFloats(float* lanes, Float v) { _mm256_storeu_ps(lanes, v); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }
     static Int shiftRight(Int v, int n) { return _mm256_srl_epi32(v, _mm_cvtsi32_si128(n)); }

@@ -35,6 +35,14 @@ struct Avx512Lanes {
     static Float div(Float a, Float b) { return _mm512_div_ps(a, b); }
     static Float min(Float a, Float b) { return _mm512_min_ps(a, b); }
     static Float max(Float a, Float b) { return _mm512_max_ps(a, b); }
+    static Float sqrt(Float v) { return _mm512_sqrt_ps(v); }
+    static Float abs(Float v) { return _mm512_abs_ps(v); }
+    // Ordered comparisons of floats: false where either is NaN.
+    static Mask lessThan(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ); }
+    static Mask lessEqual(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ); }
+    static Mask equal(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_EQ_OQ); }
+    static Mask isNan(Float v) { return _mm512_cmp_ps_mask(v, v, _CMP_UNORD_Q); }
+    static Float select(Mask m, Float ifSet, Float ifClear) { return _mm512_mask_blend_ps(m, ifClear, ifSet); }
     static Float toFloat(Int v) { return _mm512_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm512_cvtps_epi32(v); }
     static Int bitsOf(Float v) { return _mm512_castps_si512(v); }
@@ -45,6 +53,10 @@ struct Avx512Lanes {
     static Int mul(Int a, Int b) { return _mm512_mullo_epi32(a, b); }
     static Int bitAnd(Int a, Int b) { return _mm512_and_epi32(a, b); }
     static Int bitOr(Int a, Int b) { return _mm512_or_epi32(a, b); }
+    static Int bitXor(Int a, Int b) { return _mm512_xor_epi32(a, b); }
+    static Mask either(Mask a, Mask b) { return a | b; }
+    static Float loadFloats(const float* lanes) { return _mm512_loadu_ps(lanes); }
+    static void storeFloats(float* lanes, Float v) { _mm512_storeu_ps(lanes, v); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm512_slli_epi32(v, N); }
     static Int shiftRight(Int v, int n) { return _mm512_srl_epi32(v, _mm_cvtsi32_si128(n)); }

@@ -39,6 +39,14 @@ struct ScalarLanes {
     static Float div(Float a, Float b) { return a / b; }
     static Float min(Float a, Float b) { return a < b ? a : b; }
     static Float max(Float a, Float b) { return a > b ? a : b; }
+    static Float sqrt(Float v) { return std::sqrt(v); }
+    static Float abs(Float v) { return std::fabs(v); }
+    // Ordered comparisons of floats: false where either is NaN.
+    static Mask lessThan(Float a, Float b) { return a < b; }
+    static Mask lessEqual(Float a, Float b) { return a <= b; }
+    static Mask equal(Float a, Float b) { return a == b; }
+    static Mask isNan(Float v) { return v != v; }
+    static Float select(Mask m, Float ifSet, Float ifClear) { return m ? ifSet : ifClear; }
     static Float toFloat(Int v) { return static_cast<Float>(static_cast<std::int32_t>(v)); }
     static Int roundToInt(Float v) { return static_cast<Int>(roundToEven(v)); }  // |v| < 2^31
     static Int bitsOf(Float v) { return std::bit_cast<Int>(v); }
@@ -47,6 +55,12 @@ struct ScalarLanes {
     static Int add(Int a, Int b) { return a + b; }
     static Int bitAnd(Int a, Int b) { return a & b; }
     static Int bitOr(Int a, Int b) { return a | b; }
+    static Int sub(Int a, Int b) { return a - b; }
+    static Int bitXor(Int a, Int b) { return a ^ b; }
+    static Int shiftRight(Int v, int n) { return v >> n; }
+    static Mask either(Mask a, Mask b) { return a || b; }
+    static Float loadFloats(const float* lanes) { return *lanes; }
+    static void storeFloats(float* lanes, Float v) { *lanes = v; }
     template <int N>
     static Int shiftLeft(Int v) { return v << N; }
 
