@@ -100,4 +100,8 @@ void VertexLighting::lightVertices(std::span<Vertex> vertices, bool twoSided) co
     lightVerticesScalar(prepared_, vertices, twoSided);
 }
 
+void VertexLighting::lightVertex(Vertex& vertex, bool twoSided) const {
+    lightVerticesScalar(prepared_, {&vertex, 1}, twoSided);
+}
+
 }  // namespace glrenderer

@@ -96,7 +96,8 @@ public:
     // the lit colour and, with `twoSided`, its back colour the back face's (the back material,
     // the normal reversed), both clamped as the reference clamps vertex colours.
     void lightVertices(std::span<Vertex> vertices, bool twoSided) const;
-    void lightVertex(Vertex& vertex, bool twoSided) const { lightVertices({&vertex, 1}, twoSided); }
+    // One vertex, in one lane: the same bits without a block's work.
+    void lightVertex(Vertex& vertex, bool twoSided) const;
     const PreparedLighting& prepared() const { return prepared_; }
 
 private:
