@@ -55,8 +55,9 @@ void BatchDrawer::drawUnfilled(const Batch& batch) {
         },
         [&] { flush(); }};
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
-                      ViewportTransform(batch.state, framebuffer_.height()), batch.state, framebuffer_, stats_,
-                      target);
+                      ViewportTransform(batch.state, framebuffer_.height()), batch.state,
+                      batch.edgeFlagsPerVertex || batch.vertices.empty() || batch.vertices.front().edgeFlag,
+                      framebuffer_, stats_, target);
     tiles_.forgetClearedTiles();  // its lines and points were drawn at once
 }
 

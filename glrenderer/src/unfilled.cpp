@@ -111,20 +111,30 @@ bool clipPolygon(Polygon& polygon, Outcode outcodeUnion, const ViewportTransform
 
 class UnfilledDrawer {
 public:
-    UnfilledDrawer(const DrawState& state, Framebuffer& framebuffer, Stats& stats,
+    UnfilledDrawer(const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                    const UnfilledTarget& target)
-        : state_(state), framebuffer_(framebuffer), stats_(stats), target_(target),
+        : state_(state), anyEdgeShown_(anyEdgeShown), framebuffer_(framebuffer), stats_(stats), target_(target),
           lineFragments_(bestFragmentPaths(), fragmentKey(state), state),
           pointFragments_(bestFragmentPaths(), flatFragmentKey(state), state) {}
 
-    // One triangle out of the clipper (provoking vertex last) with its edge bits.
+    // One triangle out of the clipper (provoking vertex last) with its edge bits and the
+    // provoking vertex's colours (front, back).
     void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c,
-                  std::uint8_t edges, const glm::vec4& flatColor) {
+                  std::uint8_t edges, glm::vec4 flatColor, const glm::vec4& flatBackColor) {
         WindowVertex w0 = a.window, w1 = b.window, w2 = c.window;
         const float det = drawModuleDeterminant(w0, w1, w2);
         const bool front = drawModuleFacing(det, state_.frontFaceCCW) == Facing::Front;
-        if (state_.cullEnabled &&
-            (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front)) {
+        // The draw module's two-sided stage: a triangle facing back by its determinant (not 0)
+        // takes the back colours, whatever the mode draws.
+        if (state_.twoSidedColors && !front && det != 0.0f) {
+            w0.color = a.clip.backColor, w1.color = b.clip.backColor, w2.color = c.clip.backColor;
+            flatColor = flatBackColor;
+        }
+        const bool culled = state_.cullEnabled &&
+                            (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front);
+        // With every edge hidden, the reference culls the faces drawn as lines or points.
+        const bool hidden = !anyEdgeShown_ && (front ? state_.polygonFront : state_.polygonBack) != PolygonMode::Fill;
+        if (culled || hidden) {
             ++(front ? stats_.culledFront : stats_.culledBack);
             return;
         }
@@ -133,13 +143,13 @@ public:
         // front mode under GL_CW).
         const bool useFront = det == 0.0f ? !state_.cullEnabled && !state_.frontFaceCCW : front;
         const PolygonMode mode = useFront ? state_.polygonFront : state_.polygonBack;
+        const PolygonOffset& offset = offsetFor(mode);
         if (mode == PolygonMode::Fill) {
             target_.fill(w0, w1, w2, flatColor);
             return;
         }
         // Polygon offset of line and point modes: the draw module's, on the vertices.
-        const PolygonOffset& offset = state_.polygonOffset;
-        if (mode == PolygonMode::Line ? offset.line : offset.point) offsetInDrawModule(offset, w0, w1, w2);
+        if (offsetStage_) offsetInDrawModule(offset, w0, w1, w2);
         ++stats_.rasterized;
         target_.beforeLinesOrPoints();
         const bool flat = state_.shadeModel == ShadeModel::Flat;
@@ -155,6 +165,20 @@ public:
     }
 
 private:
+    // The draw module's offset stage, there when any offset mode is on, decides at the draw's
+    // first triangle, by its mode, whether to offset, and then offsets every triangle of the draw
+    // alike: by the state's offset, or by none (0 times a slope: NaN, so depth 0, where the
+    // slope is not finite).
+    const PolygonOffset& offsetFor(PolygonMode firstMode) {
+        static constexpr PolygonOffset kNone{};
+        if (!offsetChosen_) {
+            offsetChosen_ = true;
+            const PolygonOffset& o = state_.polygonOffset;
+            offsetOn_ = firstMode == PolygonMode::Fill ? o.fill : firstMode == PolygonMode::Line ? o.line : o.point;
+        }
+        return offsetOn_ ? state_.polygonOffset : kNone;
+    }
+
     void line(const WindowVertex& from, const WindowVertex& to, const glm::vec4& flatColor) {
         rasterizeLine(from, to, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
     }
@@ -169,6 +193,9 @@ private:
     }
 
     const DrawState& state_;
+    const bool anyEdgeShown_;  // false: the batch's edges are all hidden by the current edge flag
+    const bool offsetStage_ = state_.polygonOffset.fill || state_.polygonOffset.line || state_.polygonOffset.point;
+    bool offsetChosen_ = false, offsetOn_ = false;
     Framebuffer& framebuffer_;
     Stats& stats_;
     const UnfilledTarget& target_;
@@ -180,15 +207,16 @@ private:
 void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
                        std::span<const Outcode> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
-                       const DrawState& state, Framebuffer& framebuffer, Stats& stats,
+                       const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                        const UnfilledTarget& target) {
-    UnfilledDrawer drawer(state, framebuffer, stats, target);
+    UnfilledDrawer drawer(state, anyEdgeShown, framebuffer, stats, target);
     const auto count = static_cast<std::uint32_t>(vertices.size());
     decomposeWithEdges(mode, count, [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2,
                                         std::uint8_t edges) {
         ++stats.triangles;
         const std::uint32_t index[3] = {i0, i1, i2};
-        const glm::vec4 flatColor = vertices[i2].color;
+        const glm::vec4& flatColor = vertices[i2].color;
+        const glm::vec4& flatBackColor = vertices[i2].backColor;
         Polygon polygon;
         polygon.count = 3;
         for (std::size_t k = 0; k < 3; ++k) {
@@ -197,7 +225,7 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
         }
         const Outcode outside = outcodes[i0] | outcodes[i1] | outcodes[i2];
         if (outside == 0) {
-            drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, flatColor);
+            drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, flatColor, flatBackColor);
             return;
         }
         if ((outcodes[i0] & outcodes[i1] & outcodes[i2]) || !clipPolygon(polygon, outside, viewport, state.clipPlanes)) {
@@ -213,7 +241,7 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
             std::uint8_t fanEdges = a.edgeVisible ? kEdge0 : 0;
             if (i == 2 && first.edgeVisible) fanEdges |= kEdge2;
             if (i == polygon.count - 1 && b.edgeVisible) fanEdges |= kEdge1;
-            drawer.triangle(a, b, first, fanEdges, flatColor);
+            drawer.triangle(a, b, first, fanEdges, flatColor, flatBackColor);
         }
     });
 }
