@@ -12,6 +12,7 @@
 
 #include "attrib_stack.h"
 #include "bitmap_cache.h"
+#include "buffer_state.h"
 #include "client_arrays.h"
 #include "evaluators.h"
 #include "display_lists.h"
@@ -103,6 +104,7 @@ struct Context::State {
                                    {GL_FOG_HINT, GL_DONT_CARE}};
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
+    BufferState buffers;
     int packAlignment = 4, unpackAlignment = 4;
     DisplayLists lists;
     ClientArrays arrays;

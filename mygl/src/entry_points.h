@@ -34,6 +34,12 @@ std::span<const EntryPoint> clipPlaneEntryPoints();
 std::span<const EntryPoint> fogEntryPoints();
 std::span<const EntryPoint> polygonOffsetEntryPoints();
 std::span<const EntryPoint> evaluatorEntryPoints();
+std::span<const EntryPoint> accumulationEntryPoints();
+std::span<const EntryPoint> colorIndexEntryPoints();
+std::span<const EntryPoint> drawBufferEntryPoints();
+
+// glClear's GL_ACCUM_BUFFER_BIT: the accumulation buffer filled with glClearAccum's value.
+void clearAccumBuffer(Context::State& state);
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.

@@ -97,6 +97,20 @@ Value query(const Context::State& s, GLenum name) {
     case GL_EDGE_FLAG_ARRAY_STRIDE: return one(s.arrays.edgeFlag.stride);
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT: return one(s.hints.at(name));
+    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS: return one(16);
+    case GL_ACCUM_CLEAR_VALUE: {
+        const auto& c = s.buffers.accumClear;
+        return Value{{c[0], c[1], c[2], c[3]}, true};
+    }
+    case GL_DRAW_BUFFER: return one(s.buffers.drawBuffer);
+    case GL_READ_BUFFER: return one(s.buffers.readBuffer);
+    case GL_AUX_BUFFERS: case GL_INDEX_BITS: return one(0);
+    case GL_STEREO: case GL_INDEX_MODE: return flag(false);
+    case GL_RGBA_MODE: return flag(true);
+    case GL_CURRENT_INDEX: return one(s.buffers.currentIndex);
+    // Kept unsigned, answered as signed integers, as the reference does.
+    case GL_INDEX_CLEAR_VALUE: return one(static_cast<GLint>(s.buffers.clearIndex));
+    case GL_INDEX_WRITEMASK: return one(static_cast<GLint>(s.buffers.indexMask));
     case GL_LIST_BASE: return one(s.lists.base);
     case GL_RENDER_MODE: return one(s.renderMode);
     case GL_NAME_STACK_DEPTH: return one(double(s.selection.names.size()));
