@@ -15,6 +15,7 @@
 #include "buffer_state.h"
 #include "client_arrays.h"
 #include "evaluators.h"
+#include "feedback.h"
 #include "display_lists.h"
 #include "selection.h"
 #include "stack_matrix.h"
@@ -141,9 +142,11 @@ struct Context::State {
     glm::vec4 rasterTexCoord{0, 0, 0, 1};
     float rasterDistance = 0;
 
-    // glRenderMode; in GL_SELECT, draws make hit records in the program's buffer instead of pixels.
+    // glRenderMode; in GL_SELECT, draws make hit records in the program's buffer instead of pixels,
+    // in GL_FEEDBACK feedback tokens.
     GLenum renderMode = GL_RENDER;
     Selection selection;
+    Feedback feedback;  // GL_FEEDBACK
     bool rasterValid = true;
     BitmapCache bitmapCache;
 

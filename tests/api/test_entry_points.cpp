@@ -18,8 +18,6 @@ namespace {
 
 // The GL 1.1 functions still to do, by area.
 const std::vector<std::string> kStillToDo = {
-    // Feedback (this branch, next step)
-    "glFeedbackBuffer", "glPassThrough",
     // Per-fragment operations (branch perfrag)
     "glAlphaFunc", "glBlendFunc", "glClearStencil", "glColorMask", "glLogicOp", "glScissor", "glStencilFunc",
     "glStencilMask", "glStencilOp",
