@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
+#include <mygl/context.h>
 #include <mygl/glu.h>
 
 #include <cstring>
@@ -260,6 +261,28 @@ TEST(Feedback, OverflowFillsTheBufferAndAnswersMinusOne) {
         EXPECT_TRUE(results.mygl == results.osmesa) << size << "\n MyGL:   " << describe(results.mygl)
                                                      << "\n OSMesa: " << describe(results.osmesa);
     }
+}
+
+// A departure from the reference (docs/reference-rules.md): with glEdgeFlag calls, its feedback
+// of an unfilled polygon is empty; GL writes the edges whose flags are set, as MyGL does.
+TEST(Feedback, EdgeFlagsHideOnlyTheirEdgesOfAnUnfilledPolygon) {
+    mygl::Context context(kWidth, kHeight);
+    context.makeCurrent();
+    const Result r = feedback(GL_2D, [] {
+        glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        glBegin(GL_QUADS);
+        glVertex2f(-1, -1);
+        glVertex2f(1, -1);
+        glEdgeFlag(GL_FALSE);
+        glVertex2f(1, 1);  // its edge, to the next vertex, is hidden
+        glEdgeFlag(GL_TRUE);
+        glVertex2f(-1, 1);
+        glEnd();
+    });
+    const std::vector<GLfloat> expected = {GL_LINE_RESET_TOKEN, 10, 25, 10, 5, GL_LINE_TOKEN, 10, 5, 30, 5,
+                                           GL_LINE_TOKEN,       30, 5,  30, 25};
+    ASSERT_EQ(r.count, static_cast<GLint>(expected.size()));
+    EXPECT_EQ(std::vector<GLfloat>(r.buffer.begin(), r.buffer.begin() + r.count), expected);
 }
 
 // Errors and queries, each value or error in call order.
