@@ -1,6 +1,7 @@
 // Selection (GL_SELECT, for picking): glRenderMode, glSelectBuffer and the name stack. What a
 // draw hits comes from the pipeline (DrawState::selection); a hit record is written whenever
-// the name stack changes or selection ends, as the reference writes it.
+// the name stack changes or selection ends, as the reference writes it. (glRenderMode also
+// enters and leaves GL_FEEDBACK: feedback.cpp writes its tokens.)
 #include <cstdint>
 
 #include "compiled.h"

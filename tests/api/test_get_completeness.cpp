@@ -189,3 +189,53 @@ TEST(GetCompleteness, ChangedValuesMatchTheReference) {
 }
 
 }  // namespace
+
+namespace {
+
+// glHint for every GL 1.1 target and mode, bad targets and modes, inside glBegin/glEnd and in a
+// display list: the value of each target and the error after each call.
+std::vector<double> hintWalk() {
+    const GLenum targets[] = {GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT, GL_LINE_SMOOTH_HINT,
+                              GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT};
+    std::vector<double> out;
+    const auto all = [&] {
+        for (GLenum t : targets) {
+            GLint v = -1;
+            glGetIntegerv(t, &v);
+            out.push_back(v);
+        }
+        out.push_back(glGetError());
+    };
+    all();
+    for (GLenum t : targets) {
+        for (GLenum mode : {GL_FASTEST, GL_NICEST, GL_DONT_CARE, GL_NICEST}) {
+            glHint(t, mode);
+            all();
+        }
+        glHint(t, GL_FOG);
+        all();
+    }
+    glHint(GL_FOG, GL_NICEST);
+    all();
+    glHint(GL_LINE_SMOOTH, GL_NICEST);
+    all();
+    glBegin(GL_POINTS);
+    glHint(GL_FOG_HINT, GL_FASTEST);
+    glEnd();
+    all();
+    glNewList(1, GL_COMPILE);
+    glHint(GL_POINT_SMOOTH_HINT, GL_FASTEST);
+    glHint(GL_POINT_SMOOTH_HINT, 0);
+    glEndList();
+    all();
+    glCallList(1);
+    all();
+    return out;
+}
+
+TEST(Hints, EveryTargetModeAndErrorMatchesTheReference) {
+    const auto walks = onBothBackends<std::vector<double>>(hintWalk);
+    EXPECT_EQ(testing_support::firstDifference(walks.mygl, walks.osmesa), "");
+}
+
+}  // namespace
