@@ -26,6 +26,7 @@ public:
     void draw(const SubmittedBatch& batch);
     // What GL_SELECT batches hit since the last call.
     HitRange takeHits() { return std::exchange(hits_, {}); }
+    FeedbackPrimitives takeFeedback() { return std::exchange(feedback_, {}); }
     // Every batch of the chunk, in order; triangles its poster has set up already are only
     // queued.
     void draw(BatchChunk& chunk);
@@ -58,6 +59,7 @@ private:
 
     void drawUnfilled(const Batch& batch);
     void select(const SubmittedBatch& batch);
+    void feedbackUnfilled(const SubmittedBatch& batch, FeedbackOutput& feedback);
 
     Framebuffer& framebuffer_;
     // Written for every triangle on the batch thread: a line of its own, not shared with
@@ -67,6 +69,8 @@ private:
     BatchSetup setup_;
     bool paintersSort_ = false;  // of the last batch drawn: how its tiles order triangles
     HitRange hits_;
+    FeedbackPrimitives feedback_;
+    bool feedbackLineReset_ = false;
 };
 
 }  // namespace glrenderer

@@ -259,6 +259,12 @@ HitRange Pipeline::takeHits() {
     return drawer_->takeHits();
 }
 
+FeedbackPrimitives Pipeline::takeFeedback() {
+    buffer_.flushAndReset();
+    drawSubmitted();
+    return drawer_->takeFeedback();
+}
+
 Stats Pipeline::stats() const { return submitted_ + drawer_->stats(); }
 
 void Pipeline::resetStats() {

@@ -14,32 +14,35 @@ namespace {
 
 // Which edges of a decomposed triangle are polygon edges: bit k is the edge v[k] -> v[k+1].
 constexpr std::uint8_t kEdge0 = 1, kEdge1 = 2, kEdge2 = 4, kAllEdges = 7;
+// The triangle starts a primitive of its own (each triangle of a list, strip or fan, the first
+// of a quad or polygon): the line stipple restarts at its edges (GL_LINE_RESET_TOKEN in feedback).
+constexpr std::uint8_t kResetStipple = 8;
 
 // The draw module's decomposition (provoking vertex last) with edge flags.
 template <class Emit>
 void decomposeWithEdges(PrimitiveMode mode, std::uint32_t n, Emit&& emit) {
     switch (mode) {
     case PrimitiveMode::Triangles:
-        for (std::uint32_t i = 0; i + 2 < n; i += 3) emit(i, i + 1, i + 2, kAllEdges);
+        for (std::uint32_t i = 0; i + 2 < n; i += 3) emit(i, i + 1, i + 2, kAllEdges | kResetStipple);
         break;
     case PrimitiveMode::TriangleStrip:
         for (std::uint32_t i = 0; i + 2 < n; ++i) {
-            if (i % 2 == 0) emit(i, i + 1, i + 2, kAllEdges);
-            else emit(i + 1, i, i + 2, kAllEdges);
+            if (i % 2 == 0) emit(i, i + 1, i + 2, kAllEdges | kResetStipple);
+            else emit(i + 1, i, i + 2, kAllEdges | kResetStipple);
         }
         break;
     case PrimitiveMode::TriangleFan:
-        for (std::uint32_t i = 1; i + 1 < n; ++i) emit(0, i, i + 1, kAllEdges);
+        for (std::uint32_t i = 1; i + 1 < n; ++i) emit(0, i, i + 1, kAllEdges | kResetStipple);
         break;
     case PrimitiveMode::Quads:
         for (std::uint32_t i = 0; i + 3 < n; i += 4) {
-            emit(i, i + 1, i + 3, kEdge0 | kEdge2);
+            emit(i, i + 1, i + 3, kEdge0 | kEdge2 | kResetStipple);
             emit(i + 1, i + 2, i + 3, kEdge0 | kEdge1);
         }
         break;
     case PrimitiveMode::QuadStrip:
         for (std::uint32_t i = 0; i + 3 < n; i += 2) {
-            emit(i + 2, i, i + 3, kEdge0 | kEdge2);
+            emit(i + 2, i, i + 3, kEdge0 | kEdge2 | kResetStipple);
             emit(i, i + 1, i + 3, kEdge0 | kEdge1);
         }
         break;
@@ -47,7 +50,7 @@ void decomposeWithEdges(PrimitiveMode mode, std::uint32_t n, Emit&& emit) {
         // Fan (i+1, i+2, 0): the outer edge i+1 -> i+2, plus 0 -> 1 first and n-1 -> 0 last.
         for (std::uint32_t i = 0; i + 2 < n; ++i) {
             std::uint8_t edges = kEdge0;
-            if (i == 0) edges |= kEdge2;
+            if (i == 0) edges |= kEdge2 | kResetStipple;
             if (i + 3 == n) edges |= kEdge1;
             emit(i + 1, i + 2, 0, edges);
         }
@@ -153,6 +156,7 @@ public:
         ++stats_.rasterized;
         target_.beforeLinesOrPoints();
         const bool flat = state_.shadeModel == ShadeModel::Flat;
+        if (mode == PolygonMode::Line && (edges & kResetStipple) && target_.feedback) target_.feedback->resetLineStipple();
         if (mode == PolygonMode::Line) {
             if ((edges & kEdge2) && c.edgeFlag) line(w2, w0, flatColor);
             if ((edges & kEdge0) && a.edgeFlag) line(w0, w1, flatColor);
@@ -180,9 +184,11 @@ private:
     }
 
     void line(const WindowVertex& from, const WindowVertex& to, const glm::vec4& flatColor) {
+        if (target_.feedback) return target_.feedback->line(flatColored(from, flatColor), flatColored(to, flatColor));
         rasterizeLine(from, to, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
     }
     void point(const WindowVertex& p, bool flat, const glm::vec4& flatColor) {
+        if (target_.feedback) return target_.feedback->point(flatColored(p, flatColor));
         if (!flat) {
             rasterizePoint(p, state_, pointFragments_, framebuffer_, stats_);
             return;
@@ -190,6 +196,14 @@ private:
         WindowVertex colored = p;
         colored.color = flatColor;
         rasterizePoint(colored, state_, pointFragments_, framebuffer_, stats_);
+    }
+
+    // Feedback's vertex: with flat shading the draw module's flatshade stage has given it the
+    // provoking vertex's colour.
+    WindowVertex flatColored(const WindowVertex& v, const glm::vec4& flatColor) const {
+        WindowVertex out = v;
+        if (state_.shadeModel == ShadeModel::Flat) out.color = flatColor;
+        return out;
     }
 
     const DrawState& state_;
@@ -240,6 +254,7 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
             const PolygonVertex& first = polygon.v[0];
             std::uint8_t fanEdges = a.edgeVisible ? kEdge0 : 0;
             if (i == 2 && first.edgeVisible) fanEdges |= kEdge2;
+            if (i == 2) fanEdges |= kResetStipple;  // the clipper's first triangle, whatever the original's
             if (i == polygon.count - 1 && b.edgeVisible) fanEdges |= kEdge1;
             drawer.triangle(a, b, first, fanEdges, flatColor, flatBackColor);
         }

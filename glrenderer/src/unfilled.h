@@ -10,6 +10,7 @@
 #include "glrenderer/stats.h"
 #include "clip.h"
 #include "clip_vertex.h"
+#include "feedback_output.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -20,6 +21,8 @@ struct UnfilledTarget {
     std::function<void(const WindowVertex&, const WindowVertex&, const WindowVertex&, const glm::vec4&)> fill;
     // Called before lines or points are drawn, so that filled triangles queued earlier land first.
     std::function<void()> beforeLinesOrPoints;
+    // GL_FEEDBACK: lines and points go there instead of being drawn.
+    FeedbackOutput* feedback = nullptr;
 };
 
 // Draws a batch of a triangle mode under glPolygonMode LINE/POINT for at least one face, as the

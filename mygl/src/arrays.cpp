@@ -287,8 +287,8 @@ const EntryPoint kEntryPoints[] = {
     {"glGetPointerv", entry(+[](GLenum name, void** out) {
          Context::State* s = stateOutsideBeginEnd();
          if (!s || !out) return;
-         if (name == GL_SELECTION_BUFFER_POINTER) {
-             *out = s->selection.buffer;
+         if (name == GL_SELECTION_BUFFER_POINTER || name == GL_FEEDBACK_BUFFER_POINTER) {
+             *out = name == GL_SELECTION_BUFFER_POINTER ? static_cast<void*>(s->selection.buffer) : s->feedback.buffer;
              return;
          }
          const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;

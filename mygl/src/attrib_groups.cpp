@@ -1,6 +1,6 @@
 // What glPushAttrib and glPushClientAttrib save of each attribute group (GL 1.1's state tables),
-// over the state MyGL has. Groups MyGL has no state of yet (GL_ACCUM_BUFFER_BIT,
-// GL_PIXEL_MODE_BIT) save nothing.
+// over the state MyGL has. Groups MyGL has no state of yet (GL_PIXEL_MODE_BIT but its read
+// buffer) save nothing.
 #include <tuple>
 
 #include "attrib_stack.h"
@@ -55,10 +55,14 @@ constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE,   GL_CLIP_PLANE0,    
 const AttribGroup kServerGroups[] = {
     {GL_CURRENT_BIT, {}, saveFields<[](auto& s) {
          return std::tie(s.color, s.vertexColor, s.normal, s.texCoord, s.edgeFlag, s.rasterPosition, s.rasterColor,
-                         s.rasterTexCoord, s.rasterDistance, s.rasterValid);
+                         s.rasterTexCoord, s.rasterDistance, s.rasterValid, s.buffers.currentIndex);
      }>},
     {GL_ENABLE_BIT, kEnableCapabilities, nullptr},
-    {GL_COLOR_BUFFER_BIT, kColorBufferCapabilities, saveFields<[](auto& s) { return std::tie(s.clearColor); }>},
+    {GL_COLOR_BUFFER_BIT, kColorBufferCapabilities, saveFields<[](auto& s) {
+         return std::tie(s.clearColor, s.buffers.drawBuffer, s.buffers.clearIndex, s.buffers.indexMask);
+     }>},
+    {GL_ACCUM_BUFFER_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.accumClear); }>},
+    {GL_PIXEL_MODE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.readBuffer); }>},
     {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities, saveFields<[](auto& s) {
          return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth);
      }>},

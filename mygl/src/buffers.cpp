@@ -17,11 +17,15 @@ void clear(GLbitfield mask) {
     if (mask & ~kKnown) return setError(*s, GL_INVALID_VALUE);
     if (s->renderMode != GL_RENDER) return;  // as the reference: selection clears nothing
     drawCachedBitmaps(*s);
-    const bool color = mask & GL_COLOR_BUFFER_BIT;
+    const bool color = (mask & GL_COLOR_BUFFER_BIT) && s->buffers.drawBuffer != GL_NONE;
     const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite;  // glDepthMask applies
     s->pipeline.clear(color, glrenderer::clearColorRgba8(s->clearColor), depth,
                       glrenderer::clearDepth24(s->clearDepth));
-    if (color) s->pipeline.resetStats();  // a frame's counts start at its clear, as the course did
+    if (color) s->pipeline.resetStats();
+    if (mask & GL_ACCUM_BUFFER_BIT) {
+        s->pipeline.finish();
+        clearAccumBuffer(*s);
+    }  // a frame's counts start at its clear, as the course did
 }
 
 // Bytes of one pixel in `format`/`type`, or 0 if the pair is not supported.

@@ -12,8 +12,10 @@
 
 #include "attrib_stack.h"
 #include "bitmap_cache.h"
+#include "buffer_state.h"
 #include "client_arrays.h"
 #include "evaluators.h"
+#include "feedback.h"
 #include "display_lists.h"
 #include "selection.h"
 #include "stack_matrix.h"
@@ -103,6 +105,7 @@ struct Context::State {
                                    {GL_FOG_HINT, GL_DONT_CARE}};
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
+    BufferState buffers;
     int packAlignment = 4, unpackAlignment = 4;
     DisplayLists lists;
     ClientArrays arrays;
@@ -139,9 +142,11 @@ struct Context::State {
     glm::vec4 rasterTexCoord{0, 0, 0, 1};
     float rasterDistance = 0;
 
-    // glRenderMode; in GL_SELECT, draws make hit records in the program's buffer instead of pixels.
+    // glRenderMode; in GL_SELECT, draws make hit records in the program's buffer instead of pixels,
+    // in GL_FEEDBACK feedback tokens.
     GLenum renderMode = GL_RENDER;
     Selection selection;
+    Feedback feedback;  // GL_FEEDBACK
     bool rasterValid = true;
     BitmapCache bitmapCache;
 

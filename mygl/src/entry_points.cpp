@@ -19,7 +19,8 @@ const std::vector<EntryPoint>& implementedTable() {
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
                           clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
-                          polygonOffsetEntryPoints()}) {
+                          polygonOffsetEntryPoints(), accumulationEntryPoints(), colorIndexEntryPoints(),
+                          drawBufferEntryPoints(), feedbackEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

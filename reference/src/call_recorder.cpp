@@ -142,7 +142,7 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
 }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, lighting, fog, polygon offset, selection (the program's hit buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, lighting, fog, polygon offset, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -172,7 +172,11 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glMapGrid2d, 0) X(glad_glEvalCoord1f, 0) X(glad_glEvalCoord1d, 0) X(glad_glEvalCoord1fv, 1)          \
     X(glad_glEvalCoord1dv, 1) X(glad_glEvalCoord2f, 0) X(glad_glEvalCoord2d, 0) X(glad_glEvalCoord2fv, 2)      \
     X(glad_glEvalCoord2dv, 2) X(glad_glEvalPoint1, 0) X(glad_glEvalPoint2, 0) X(glad_glEvalMesh1, 0)           \
-    X(glad_glEvalMesh2, 0)
+    X(glad_glEvalMesh2, 0) \
+    X(glad_glClearAccum, 0) X(glad_glAccum, 0) X(glad_glDrawBuffer, 0) X(glad_glReadBuffer, 0)              \
+    X(glad_glIndexd, 0) X(glad_glIndexf, 0) X(glad_glIndexi, 0) X(glad_glIndexs, 0) X(glad_glIndexub, 0)   \
+    X(glad_glIndexdv, 1) X(glad_glIndexfv, 1) X(glad_glIndexiv, 1) X(glad_glIndexsv, 1) X(glad_glIndexubv, 1) \
+    X(glad_glClearIndex, 0) X(glad_glIndexMask, 0) X(glad_glFeedbackBuffer, 0) X(glad_glPassThrough, 0)
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();

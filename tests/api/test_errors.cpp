@@ -176,27 +176,6 @@ TEST(GlErrors, EveryGl11FunctionHasAnEntryPoint) {
     context.makeCurrent();
 }
 
-TEST(GlErrors, NotImplementedFunctionsReportThemselvesInsteadOfCrashing) {
-    mygl::Context context(8, 8);
-    context.makeCurrent();
-    const GLfloat position[4] = {0, 0, 1, 0};
-    testing::internal::CaptureStderr();
-    glAccum(GL_ACCUM, 0.5f);
-    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
-    glAccum(GL_LOAD, 1.0f);  // named once per process
-    EXPECT_EQ(glIsTexture(1), GL_FALSE);  // a value-returning one returns zero
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, position);
-    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
-    const std::string said = testing::internal::GetCapturedStderr();
-    EXPECT_EQ(said, "MyGL: glAccum is not implemented yet (GL_INVALID_OPERATION)\n"
-                    "MyGL: glIsTexture is not implemented yet (GL_INVALID_OPERATION)\n"
-                    "MyGL: glTexImage2D is not implemented yet (GL_INVALID_OPERATION)\n");
-    // The program goes on drawing.
-    glClearColor(0, 1, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    EXPECT_EQ(context.readPixels()[1], 255);
-}
-
 TEST(Context, RejectsBadSizes) {
     EXPECT_THROW(mygl::Context(0, 10), std::invalid_argument);
     EXPECT_THROW(mygl::Context(10, -1), std::invalid_argument);

@@ -58,6 +58,7 @@ struct DrawState {
     float lineWidth = 1.0f;
     float pointSize = 1.0f;
     bool selection = false;  // GL_SELECT: primitives make hits (Pipeline::takeHits), not pixels
+    bool feedback = false;   // GL_FEEDBACK: primitives are handed back (Pipeline::takeFeedback)
     // Two-sided lighting: filled triangles facing back take their vertices' back colours.
     bool twoSidedColors = false;
     UserClipPlanes clipPlanes;

@@ -4,6 +4,7 @@
 #include <memory>
 #include <new>
 #include <span>
+#include <vector>
 
 namespace glrenderer {
 
@@ -24,6 +25,11 @@ public:
     // Depth as an unsigned 24-bit integer (0 = near, 0xFFFFFF = far) per pixel.
     std::span<std::uint32_t> depth() { return {depth_.get(), count_}; }
     std::span<const std::uint32_t> depth() const { return {depth_.get(), count_}; }
+
+    // The accumulation buffer: R, G, B, A signed 16-bit words per pixel (the reference's
+    // GL_RGBA16_SNORM), allocated zeroed at the first use, as a program that never calls glAccum
+    // pays nothing for it.
+    std::span<std::int16_t> accum();
 
     void clearColor(std::uint32_t rgba);
     void clearDepth(std::uint32_t depth24);
@@ -49,6 +55,7 @@ private:
     std::uint64_t writeGeneration_ = 0;
     Pixels color_;
     Pixels depth_;
+    std::vector<std::int16_t> accum_;
 };
 
 }  // namespace glrenderer

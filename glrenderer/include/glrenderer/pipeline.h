@@ -8,6 +8,7 @@
 #include "glrenderer/bitmap.h"
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/feedback.h"
 #include "glrenderer/hit_range.h"
 #include "glrenderer/immediate_buffer.h"
 #include "glrenderer/lighting.h"
@@ -97,6 +98,8 @@ public:
 
     // The hits of what was submitted with DrawState::selection since the last call, drawn first.
     HitRange takeHits();
+    // The primitives of what was submitted with DrawState::feedback since the last call, in order.
+    FeedbackPrimitives takeFeedback();
 
     // Complete after finish().
     Stats stats() const;
