@@ -14,43 +14,82 @@
 namespace mygl {
 namespace {
 
-// The `n` components at `p` (any alignment) handed to `f` as a T*.
-template <class T, class F>
-void withComponents(const void* p, int n, F&& f) {
-    std::array<T, 4> values{};
-    std::memcpy(values.data(), p, static_cast<std::size_t>(n) * sizeof(T));
-    f(values.data());
+// The immediate-mode call an array's components stand for, taking them as T.
+template <class T>
+struct TexCoordCall { static void call(const T* v, int n) { texCoordv(v, n); } };
+template <class T>
+struct ColorCall { static void call(const T* v, int n) { colorv(v, n); } };
+template <class T>
+struct NormalCall { static void call(const T* v, int) { normalv(v); } };
+template <class T>
+struct VertexCall { static void call(const T* v, int n) { vertexv(v, n); } };
+template <class T>
+struct EdgeFlagCall { static void call(const T* v, int) { setEdgeFlag(v[0] != 0); } };
+
+// The `n` components at `p` (any alignment) read as T and handed to Call.
+template <class T, template <class> class Call>
+void readComponents(const void* p, int n) {
+    T values[4]{};
+    for (int k = 0; k < n; ++k) std::memcpy(&values[k], static_cast<const unsigned char*>(p) + k * sizeof(T), sizeof(T));
+    Call<T>::call(values, n);
 }
 
-// Calls f(const T*) with the element's components in the array's type.
-template <class F>
-void withElement(const ClientArray& a, std::size_t i, F&& f) {
-    const void* p = a.element(i);
-    switch (a.type) {
-    case GL_BYTE: return withComponents<GLbyte>(p, a.size, f);
-    case GL_UNSIGNED_BYTE: return withComponents<GLubyte>(p, a.size, f);
-    case GL_SHORT: return withComponents<GLshort>(p, a.size, f);
-    case GL_UNSIGNED_SHORT: return withComponents<GLushort>(p, a.size, f);
-    case GL_INT: return withComponents<GLint>(p, a.size, f);
-    case GL_UNSIGNED_INT: return withComponents<GLuint>(p, a.size, f);
-    case GL_FLOAT: return withComponents<GLfloat>(p, a.size, f);
-    case GL_DOUBLE: return withComponents<GLdouble>(p, a.size, f);
-    default: return;
+// An enabled array as a draw reads it: where its elements start, their step, and the call its
+// components go through, chosen by type once per draw rather than per element.
+class ArrayReader {
+public:
+    ArrayReader() = default;
+    template <template <class> class Call>
+    static ArrayReader of(const ClientArray& a) {
+        ArrayReader r;
+        r.base_ = static_cast<const unsigned char*>(a.pointer);
+        r.step_ = a.stride ? static_cast<std::size_t>(a.stride) : static_cast<std::size_t>(a.size) * componentBytes(a.type);
+        r.size_ = a.size;
+        switch (a.type) {
+        case GL_BYTE: r.read_ = &readComponents<GLbyte, Call>; break;
+        case GL_UNSIGNED_BYTE: r.read_ = &readComponents<GLubyte, Call>; break;
+        case GL_SHORT: r.read_ = &readComponents<GLshort, Call>; break;
+        case GL_UNSIGNED_SHORT: r.read_ = &readComponents<GLushort, Call>; break;
+        case GL_INT: r.read_ = &readComponents<GLint, Call>; break;
+        case GL_UNSIGNED_INT: r.read_ = &readComponents<GLuint, Call>; break;
+        case GL_FLOAT: r.read_ = &readComponents<GLfloat, Call>; break;
+        case GL_DOUBLE: r.read_ = &readComponents<GLdouble, Call>; break;
+        default: r.read_ = nullptr;
+        }
+        return r;
     }
-}
+    void operator()(std::size_t i) const {
+        if (read_) read_(base_ + i * step_, size_);
+    }
 
-// glArrayElement(i): the enabled arrays' values in GL's order, the vertex last.
-void emitElement(const ClientArrays& arrays, std::size_t i) {
-    if (arrays.edgeFlag.enabled) {
-        GLubyte flag = 0;
-        std::memcpy(&flag, arrays.edgeFlag.element(i), 1);
-        setEdgeFlag(flag != 0);
+private:
+    const unsigned char* base_ = nullptr;
+    std::size_t step_ = 0;
+    int size_ = 0;
+    void (*read_)(const void*, int) = nullptr;
+};
+
+// The enabled arrays' readers in GL's order for an element, the vertex last.
+class ElementReader {
+public:
+    explicit ElementReader(const ClientArrays& arrays) {
+        if (arrays.edgeFlag.enabled) readers_[count_++] = ArrayReader::of<EdgeFlagCall>(arrays.edgeFlag);
+        if (arrays.texCoord.enabled) readers_[count_++] = ArrayReader::of<TexCoordCall>(arrays.texCoord);
+        if (arrays.color.enabled) readers_[count_++] = ArrayReader::of<ColorCall>(arrays.color);
+        if (arrays.normal.enabled) readers_[count_++] = ArrayReader::of<NormalCall>(arrays.normal);
+        if (arrays.vertex.enabled) readers_[count_++] = ArrayReader::of<VertexCall>(arrays.vertex);
     }
-    if (arrays.texCoord.enabled) withElement(arrays.texCoord, i, [&](const auto* v) { texCoordv(v, arrays.texCoord.size); });
-    if (arrays.color.enabled) withElement(arrays.color, i, [&](const auto* v) { colorv(v, arrays.color.size); });
-    if (arrays.normal.enabled) withElement(arrays.normal, i, [](const auto* v) { normalv(v); });
-    if (arrays.vertex.enabled) withElement(arrays.vertex, i, [&](const auto* v) { vertexv(v, arrays.vertex.size); });
-}
+    // glArrayElement(i).
+    void operator()(std::size_t i) const {
+        for (int k = 0; k < count_; ++k) readers_[static_cast<std::size_t>(k)](i);
+    }
+
+private:
+    std::array<ArrayReader, 5> readers_;
+    int count_ = 0;
+};
+
+void emitElement(const ClientArrays& arrays, std::size_t i) { ElementReader{arrays}(i); }
 
 std::size_t readIndex(GLenum type, const void* indices, std::size_t k) {
     const auto* bytes = static_cast<const unsigned char*>(indices);
@@ -111,7 +150,8 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
     const bool edgeFlag = s.edgeFlag;
     endBatch(s);
     begin(mode, quadSplitOf(s, indexed));
-    for (std::size_t k = 0; k < elements.count; ++k) emitElement(arrays, elements[k]);
+    const ElementReader element(arrays);
+    for (std::size_t k = 0; k < elements.count; ++k) element(elements[k]);
     end();
     endBatch(s);
     s.color = color, s.vertexColor = vertexColor, s.texCoord = texCoord, s.normal = normal, s.edgeFlag = edgeFlag;
