@@ -266,4 +266,47 @@ void drawBenchFogTerrain(int width, int height, int frame) {
     });
 }
 
+// Particles: an opaque floor, then 1600 smooth quads and 400 points of varying alpha blended with
+// SRC_ALPHA, ONE_MINUS_SRC_ALPHA, depth-tested without depth writes, as a fountain of sparks.
+void drawBenchParticles(int width, int height, int frame) {
+    beginFrame(width, height, true, true);
+    perspectiveView(width, height, 9.0f);
+    glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
+    glColor3f(0.25f, 0.3f, 0.35f);
+    glBegin(GL_QUADS);
+    glVertex3f(-6.0f, -2.0f, 6.0f), glVertex3f(6.0f, -2.0f, 6.0f), glVertex3f(6.0f, -2.0f, -6.0f), glVertex3f(-6.0f, -2.0f, -6.0f);
+    glEnd();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const float t = static_cast<float>(frame) * 0.05f;
+    const auto place = [&](float& x, float& y, float& z) {
+        const float a = unit(random) * kTwoPi, r = unit(random) * 3.0f, h = std::fmod(unit(random) * 4.0f + t, 4.0f);
+        x = r * std::cos(a), y = h - 2.0f + 0.5f * std::sin(r + t), z = r * std::sin(a);
+    };
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 1600; ++i) {
+        float x, y, z;
+        place(x, y, z);
+        const float s = 0.08f + 0.12f * unit(random), alpha = 0.2f + 0.6f * unit(random);
+        glColor4f(1.0f, 0.6f + 0.4f * unit(random), 0.2f, alpha), glVertex3f(x - s, y - s, z);
+        glColor4f(1.0f, 0.5f, 0.1f, alpha * 0.5f), glVertex3f(x + s, y - s, z);
+        glColor4f(1.0f, 0.9f, 0.4f, alpha), glVertex3f(x + s, y + s, z);
+        glColor4f(0.9f, 0.4f, 0.1f, alpha * 0.7f), glVertex3f(x - s, y + s, z);
+    }
+    glEnd();
+    glPointSize(3.0f);
+    glBegin(GL_POINTS);
+    for (int i = 0; i < 400; ++i) {
+        float x, y, z;
+        place(x, y, z);
+        glColor4f(1.0f, 1.0f, 0.7f, 0.3f + 0.5f * unit(random)), glVertex3f(x, y, z);
+    }
+    glEnd();
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+}
+
 }  // namespace scenes

@@ -13,6 +13,17 @@ struct RasterTriangle;
 struct PixelRect;
 struct FragmentInputs;
 
+// The per-fragment operations' constants of a draw (issue 16), read by keys that have them.
+struct FragmentOpsConstants {
+    std::uint8_t alphaRef = 0;
+    std::uint8_t stencilRef = 0, stencilValueMask = 0xFF, stencilWriteMask = 0xFF;
+    std::uint32_t colorMask = 0xFFFFFFFF;
+
+    static FragmentOpsConstants of(const FragmentOps& ops) {
+        return {ops.alphaRef, ops.stencil.ref, ops.stencil.valueMask, ops.stencil.writeMask, ops.colorMask};
+    }
+};
+
 struct FragmentCounts {
     std::uint64_t fragments = 0, passed = 0;
 };
@@ -58,6 +69,7 @@ struct FragmentInputs {
     AttributePlane fogCoord;
     FogState fog;
     float depthOffset = 0.0f;  // polygon offset, with a key that has it
+    FragmentOpsConstants ops;  // (issue 16)
     // The path's key and routine, as two fields so that the flat colour packs between them.
     FragmentKey key;
     std::uint32_t flatColor = 0;  // the fragment colour word under flat shading

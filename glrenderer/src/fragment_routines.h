@@ -20,7 +20,7 @@ template <class L>
 [[gnu::always_inline]] inline void shadeSpan(FragmentKey key, const FragmentInputs& in, int row, int begin, int end,
                                              Framebuffer& fb, FragmentCounts& counts) {
     const std::ptrdiff_t rowStart = static_cast<std::ptrdiff_t>(fb.height() - 1 - row) * fb.width();
-    const PixelBuffers buffers{fb.color().data(), fb.depth().data()};
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
     const FragmentLanes<L> lanes(in);
     const typename L::Float y = L::floats(static_cast<float>(row));
     std::uint64_t passed = 0;
@@ -128,7 +128,7 @@ template <class L>
         rowLanes[row] = L::lanesBetween(firstLane, firstLane + static_cast<int>(columns) - 1);
     }
     const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
-    const PixelBuffers buffers{fb.color().data(), fb.depth().data()};
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
     const FragmentLanes<L> lanes(t.fragment);
     std::uint64_t fragments = 0, passed = 0;
     for (int top = area.minY; top <= area.maxY; top += blockRows) {

@@ -14,6 +14,7 @@ void Framebuffer::resize(int width, int height) {
     count_ = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     color_ = allocate(count_);
     depth_ = allocate(count_);
+    stencil_ = allocate(count_);
     markWritten();
 }
 

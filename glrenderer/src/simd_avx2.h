@@ -48,8 +48,12 @@ struct Avx2Lanes {
     static Int mul(Int a, Int b) { return _mm256_mullo_epi32(a, b); }
     static Int bitAnd(Int a, Int b) { return _mm256_and_si256(a, b); }
     static Int bitOr(Int a, Int b) { return _mm256_or_si256(a, b); }
+    static Int bitXor(Int a, Int b) { return _mm256_xor_si256(a, b); }
+    static Int minUnsigned(Int a, Int b) { return _mm256_min_epu32(a, b); }
+    static Int maxUnsigned(Int a, Int b) { return _mm256_max_epu32(a, b); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }
+    static Int shiftLeft(Int v, int n) { return _mm256_sll_epi32(v, _mm_cvtsi32_si128(n)); }
     static Int shiftRight(Int v, int n) { return _mm256_srl_epi32(v, _mm_cvtsi32_si128(n)); }
 
     static Mask lessThan(Int a, Int b) { return _mm256_cmpgt_epi32(b, a); }
@@ -59,6 +63,8 @@ struct Avx2Lanes {
                                    _mm256_cmpgt_epi32(_mm256_set1_epi32(last + 1), laneIndex()));
     }
     static Mask both(Mask a, Mask b) { return _mm256_and_si256(a, b); }
+    static Mask either(Mask a, Mask b) { return _mm256_or_si256(a, b); }
+    static Mask butNot(Mask a, Mask b) { return _mm256_andnot_si256(b, a); }
     static bool none(Mask m) { return _mm256_testz_si256(m, m); }
     static bool all(Mask m) { return _mm256_movemask_ps(_mm256_castsi256_ps(m)) == 0xFF; }
     static unsigned count(Mask m) {

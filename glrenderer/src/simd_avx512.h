@@ -45,8 +45,12 @@ struct Avx512Lanes {
     static Int mul(Int a, Int b) { return _mm512_mullo_epi32(a, b); }
     static Int bitAnd(Int a, Int b) { return _mm512_and_epi32(a, b); }
     static Int bitOr(Int a, Int b) { return _mm512_or_epi32(a, b); }
+    static Int bitXor(Int a, Int b) { return _mm512_xor_epi32(a, b); }
+    static Int minUnsigned(Int a, Int b) { return _mm512_min_epu32(a, b); }
+    static Int maxUnsigned(Int a, Int b) { return _mm512_max_epu32(a, b); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm512_slli_epi32(v, N); }
+    static Int shiftLeft(Int v, int n) { return _mm512_sll_epi32(v, _mm_cvtsi32_si128(n)); }
     static Int shiftRight(Int v, int n) { return _mm512_srl_epi32(v, _mm_cvtsi32_si128(n)); }
 
     static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }
@@ -57,6 +61,8 @@ struct Avx512Lanes {
         return static_cast<Mask>(upTo & from);
     }
     static Mask both(Mask a, Mask b) { return a & b; }
+    static Mask either(Mask a, Mask b) { return a | b; }
+    static Mask butNot(Mask a, Mask b) { return static_cast<Mask>(a & ~b); }
     static bool none(Mask m) { return m == 0; }
     static bool all(Mask m) { return m == 0xFFFF; }
     static unsigned count(Mask m) { return static_cast<unsigned>(std::popcount(static_cast<unsigned>(m))); }
@@ -76,6 +82,7 @@ struct Avx512Lanes {
     }
 
     static Int load(const std::uint32_t* pixels, Mask m) { return _mm512_maskz_loadu_epi32(m, pixels); }
+    static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
     static void store(std::uint32_t* pixels, Mask m, Int v) { _mm512_mask_storeu_epi32(pixels, m, v); }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {

@@ -33,6 +33,7 @@ std::span<const EntryPoint> attribStackEntryPoints();
 std::span<const EntryPoint> clipPlaneEntryPoints();
 std::span<const EntryPoint> fogEntryPoints();
 std::span<const EntryPoint> polygonOffsetEntryPoints();
+std::span<const EntryPoint> fragmentOpsEntryPoints();
 std::span<const EntryPoint> evaluatorEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:

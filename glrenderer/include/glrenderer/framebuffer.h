@@ -7,7 +7,7 @@
 
 namespace glrenderer {
 
-// RGBA8 color and 24-bit depth, row 0 at the bottom (the layout of glReadPixels and OSMesa).
+// RGBA8 color, 24-bit depth and 8-bit stencil, row 0 at the bottom (the layout of glReadPixels and OSMesa).
 class Framebuffer {
 public:
     Framebuffer(int width, int height);
@@ -24,6 +24,10 @@ public:
     // Depth as an unsigned 24-bit integer (0 = near, 0xFFFFFF = far) per pixel.
     std::span<std::uint32_t> depth() { return {depth_.get(), count_}; }
     std::span<const std::uint32_t> depth() const { return {depth_.get(), count_}; }
+
+    // Stencil values in the low byte of a word per pixel (the fragment stage's lanes are words).
+    std::span<std::uint32_t> stencil() { return {stencil_.get(), count_}; }
+    std::span<const std::uint32_t> stencil() const { return {stencil_.get(), count_}; }
 
     void clearColor(std::uint32_t rgba);
     void clearDepth(std::uint32_t depth24);
@@ -49,6 +53,7 @@ private:
     std::uint64_t writeGeneration_ = 0;
     Pixels color_;
     Pixels depth_;
+    Pixels stencil_;
 };
 
 }  // namespace glrenderer
