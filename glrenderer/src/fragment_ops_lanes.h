@@ -2,14 +2,15 @@
 // The per-fragment operations on colour words and stencil values in lanes (issue 16), in
 // llvmpipe's arithmetic for an RGBA8 buffer: blending in bytes (a product of two bytes
 // t = a * b rounded as (t + (t >> 8) + 0x80) >> 8, sums saturating at 255), logic ops on the
-// whole word. Included by fragment_stage.h.
+// whole word. Included by fragment_stage.h; every function is inlined into the stage, so that a
+// constant key leaves only the arithmetic of its factors and operations.
 #include "glrenderer/fragment_ops.h"
 
 namespace glrenderer {
 
 // The stencil value `stored` after `op`; `ref` for Replace.
 template <class L>
-typename L::Int stencilAfter(StencilOp op, typename L::Int stored, typename L::Int ref) {
+[[gnu::always_inline]] inline typename L::Int stencilAfter(StencilOp op, typename L::Int stored, typename L::Int ref) {
     switch (op) {
     case StencilOp::Keep: return stored;
     case StencilOp::Zero: return L::ints(0);
@@ -21,60 +22,86 @@ typename L::Int stencilAfter(StencilOp op, typename L::Int stored, typename L::I
     return stored;
 }
 
-// a * b / 255 for bytes a and b, rounded as the reference rounds it.
+// Blending works on colour words as two words of 16-bit fields holding one byte each: red and
+// blue (`rb`), green and alpha (`ga`), so that one operation serves two channels.
 template <class L>
-typename L::Int mulUnorm8(typename L::Int a, typename L::Int b) {
-    const typename L::Int t = L::mul(a, b);
-    return L::shiftRight(L::add(L::add(t, L::shiftRight(t, 8)), L::ints(0x80)), 8);
+struct ChannelPairs {
+    typename L::Int rb, ga;
+};
+
+template <class L>
+[[gnu::always_inline]] inline ChannelPairs<L> pairsOf(typename L::Int rgba) {
+    const typename L::Int bytes = L::ints(0x00FF00FF);
+    return {L::bitAnd(rgba, bytes), L::bitAnd(L::shiftRight(rgba, 8), bytes)};
 }
 
-// Byte `channel` (0 red ... 3 alpha) of colour words.
+// A byte in both fields.
 template <class L>
-typename L::Int channelOf(typename L::Int rgba, int channel) {
-    const typename L::Int shifted = L::shiftRight(rgba, 8 * channel);
-    return channel == 3 ? shifted : L::bitAnd(shifted, L::ints(0xFF));
+[[gnu::always_inline]] inline typename L::Int inBothFields(typename L::Int byte) {
+    return L::bitOr(byte, L::template shiftLeft<16>(byte));
 }
 
-// `value` (a byte of channel `channel`) times blend factor `f`.
+// a * b / 255 in each field, rounded as the reference rounds a product of two bytes.
 template <class L>
-typename L::Int blendTerm(BlendFactor f, int channel, typename L::Int value, typename L::Int src, typename L::Int dst) {
+[[gnu::always_inline]] inline typename L::Int mulUnorm8(typename L::Int a, typename L::Int b) {
+    const typename L::Int bytes = L::ints(0x00FF00FF);
+    const typename L::Int t = L::mulLow16(a, b);
+    const typename L::Int rounded = L::add(L::add(t, L::bitAnd(L::shiftRight(t, 8), bytes)), L::ints(0x00800080));
+    return L::bitAnd(L::shiftRight(rounded, 8), bytes);
+}
+
+// The fields of blend factor `f`, not One or Zero.
+template <class L>
+[[gnu::always_inline]] inline ChannelPairs<L> factorPairs(BlendFactor f, const ChannelPairs<L>& src,
+                                                         const ChannelPairs<L>& dst) {
     using Int = typename L::Int;
-    const Int ones = L::ints(0xFF);
-    Int factor;
+    const Int ones = L::ints(0x00FF00FF);
+    const auto oneMinus = [&](const ChannelPairs<L>& p) { return ChannelPairs<L>{L::sub(ones, p.rb), L::sub(ones, p.ga)}; };
+    const auto alphaOf = [&](const ChannelPairs<L>& p) {
+        const Int alpha = inBothFields<L>(L::shiftRight(p.ga, 16));
+        return ChannelPairs<L>{alpha, alpha};
+    };
     switch (f) {
-    case BlendFactor::Zero: return L::ints(0);
-    case BlendFactor::One: return value;
-    case BlendFactor::SrcColor: factor = channelOf<L>(src, channel); break;
-    case BlendFactor::OneMinusSrcColor: factor = L::sub(ones, channelOf<L>(src, channel)); break;
-    case BlendFactor::DstColor: factor = channelOf<L>(dst, channel); break;
-    case BlendFactor::OneMinusDstColor: factor = L::sub(ones, channelOf<L>(dst, channel)); break;
-    case BlendFactor::SrcAlpha: factor = channelOf<L>(src, 3); break;
-    case BlendFactor::OneMinusSrcAlpha: factor = L::sub(ones, channelOf<L>(src, 3)); break;
-    case BlendFactor::DstAlpha: factor = channelOf<L>(dst, 3); break;
-    case BlendFactor::OneMinusDstAlpha: factor = L::sub(ones, channelOf<L>(dst, 3)); break;
-    case BlendFactor::SrcAlphaSaturate:
-        if (channel == 3) return value;  // the factor is 1 on alpha
-        factor = L::minUnsigned(channelOf<L>(src, 3), L::sub(ones, channelOf<L>(dst, 3)));
-        break;
-    default: return value;
+    case BlendFactor::SrcColor: return src;
+    case BlendFactor::OneMinusSrcColor: return oneMinus(src);
+    case BlendFactor::DstColor: return dst;
+    case BlendFactor::OneMinusDstColor: return oneMinus(dst);
+    case BlendFactor::SrcAlpha: return alphaOf(src);
+    case BlendFactor::OneMinusSrcAlpha: return oneMinus(alphaOf(src));
+    case BlendFactor::DstAlpha: return alphaOf(dst);
+    case BlendFactor::OneMinusDstAlpha: return oneMinus(alphaOf(dst));
+    case BlendFactor::SrcAlphaSaturate: {  // min(As, 1 - Ad) on RGB, 1 on alpha
+        const Int saturate = L::minUnsigned(L::shiftRight(src.ga, 16), L::sub(L::ints(0xFF), L::shiftRight(dst.ga, 16)));
+        return {inBothFields<L>(saturate), L::bitOr(saturate, L::ints(0x00FF0000))};
     }
-    return mulUnorm8<L>(value, factor);
+    default: return {ones, ones};
+    }
 }
 
-// src * srcFactor + dst * dstFactor, per byte.
+// `value` times blend factor `f`, in fields.
 template <class L>
-typename L::Int blend(BlendFactor srcFactor, BlendFactor dstFactor, typename L::Int src, typename L::Int dst) {
-    typename L::Int out = L::ints(0);
-    for (int c = 0; c < 4; ++c) {
-        const typename L::Int sum = L::add(blendTerm<L>(srcFactor, c, channelOf<L>(src, c), src, dst),
-                                           blendTerm<L>(dstFactor, c, channelOf<L>(dst, c), src, dst));
-        out = L::bitOr(out, L::shiftLeft(L::minUnsigned(sum, L::ints(0xFF)), 8 * c));
-    }
-    return out;
+[[gnu::always_inline]] inline ChannelPairs<L> blendTerm(BlendFactor f, const ChannelPairs<L>& value,
+                                                       const ChannelPairs<L>& src, const ChannelPairs<L>& dst) {
+    if (f == BlendFactor::Zero) return {L::ints(0), L::ints(0)};
+    if (f == BlendFactor::One) return value;
+    const ChannelPairs<L> factor = factorPairs<L>(f, src, dst);
+    return {mulUnorm8<L>(value.rb, factor.rb), mulUnorm8<L>(value.ga, factor.ga)};
+}
+
+// src * srcFactor + dst * dstFactor, per byte, saturating.
+template <class L>
+[[gnu::always_inline]] inline typename L::Int blend(BlendFactor srcFactor, BlendFactor dstFactor, typename L::Int src,
+                                                    typename L::Int dst) {
+    const ChannelPairs<L> s = pairsOf<L>(src), d = pairsOf<L>(dst);
+    const ChannelPairs<L> a = blendTerm<L>(srcFactor, s, s, d), b = blendTerm<L>(dstFactor, d, s, d);
+    const typename L::Int bytes = L::ints(0x00FF00FF);
+    const typename L::Int rb = L::minUnsigned16(L::add(a.rb, b.rb), bytes);
+    const typename L::Int ga = L::minUnsigned16(L::add(a.ga, b.ga), bytes);
+    return L::bitOr(rb, L::template shiftLeft<8>(ga));
 }
 
 template <class L>
-typename L::Int logicOp(LogicOp op, typename L::Int s, typename L::Int d) {
+[[gnu::always_inline]] inline typename L::Int logicOp(LogicOp op, typename L::Int s, typename L::Int d) {
     const typename L::Int ones = L::ints(-1);
     const auto inv = [&](typename L::Int v) { return L::bitXor(v, ones); };
     switch (op) {

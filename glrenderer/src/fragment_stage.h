@@ -128,7 +128,7 @@ struct PixelBuffers {
 // The stencil test of a block: the lanes of `live` that pass, and into `updated` the stored
 // values changed by the stencil-fail operation.
 template <class L>
-typename L::Mask stencilTest(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Mask live,
+[[gnu::always_inline]] inline typename L::Mask stencilTest(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Mask live,
                              typename L::Int stored, typename L::Int& updated) {
     const typename L::Int mask = in.stencilValueMask();
     const typename L::Mask pass =
@@ -142,7 +142,7 @@ typename L::Mask stencilTest(const FragmentKey& key, const FragmentLanes<L>& in,
 // The stored colour words `dst` under the colour `src` of the fragments: blending, the logic op
 // and the colour mask of the key.
 template <class L>
-typename L::Int combineWithStored(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Int src,
+[[gnu::always_inline]] inline typename L::Int combineWithStored(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Int src,
                                   typename L::Int dst) {
     if (key.blendSrc != BlendFactor::One || key.blendDst != BlendFactor::Zero) {
         src = blend<L>(key.blendSrc, key.blendDst, src, dst);

@@ -50,10 +50,12 @@ struct Avx2Lanes {
     static Int bitOr(Int a, Int b) { return _mm256_or_si256(a, b); }
     static Int bitXor(Int a, Int b) { return _mm256_xor_si256(a, b); }
     static Int minUnsigned(Int a, Int b) { return _mm256_min_epu32(a, b); }
+    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum.
+    static Int mulLow16(Int a, Int b) { return _mm256_mullo_epi16(a, b); }
+    static Int minUnsigned16(Int a, Int b) { return _mm256_min_epu16(a, b); }
     static Int maxUnsigned(Int a, Int b) { return _mm256_max_epu32(a, b); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }
-    static Int shiftLeft(Int v, int n) { return _mm256_sll_epi32(v, _mm_cvtsi32_si128(n)); }
     static Int shiftRight(Int v, int n) { return _mm256_srl_epi32(v, _mm_cvtsi32_si128(n)); }
 
     static Mask lessThan(Int a, Int b) { return _mm256_cmpgt_epi32(b, a); }

@@ -47,10 +47,19 @@ struct Avx512Lanes {
     static Int bitOr(Int a, Int b) { return _mm512_or_epi32(a, b); }
     static Int bitXor(Int a, Int b) { return _mm512_xor_epi32(a, b); }
     static Int minUnsigned(Int a, Int b) { return _mm512_min_epu32(a, b); }
+    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum. In two
+    // AVX2 halves: AVX-512F has no 16-bit multiply (that is AVX-512BW).
+    static Int mulLow16(Int a, Int b) { return byHalves(a, b, _mm256_mullo_epi16); }
+    static Int minUnsigned16(Int a, Int b) { return byHalves(a, b, _mm256_min_epu16); }
+    template <class Op>
+    static Int byHalves(Int a, Int b, Op op) {
+        const __m256i low = op(_mm512_castsi512_si256(a), _mm512_castsi512_si256(b));
+        const __m256i high = op(_mm512_extracti64x4_epi64(a, 1), _mm512_extracti64x4_epi64(b, 1));
+        return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
+    }
     static Int maxUnsigned(Int a, Int b) { return _mm512_max_epu32(a, b); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm512_slli_epi32(v, N); }
-    static Int shiftLeft(Int v, int n) { return _mm512_sll_epi32(v, _mm_cvtsi32_si128(n)); }
     static Int shiftRight(Int v, int n) { return _mm512_srl_epi32(v, _mm_cvtsi32_si128(n)); }
 
     static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }

@@ -52,9 +52,13 @@ struct ScalarLanes {
     static Int bitXor(Int a, Int b) { return a ^ b; }
     static Int minUnsigned(Int a, Int b) { return a < b ? a : b; }
     static Int maxUnsigned(Int a, Int b) { return a > b ? a : b; }
+    // Per 16-bit half: the low 16 bits of the product, the unsigned minimum.
+    static Int mulLow16(Int a, Int b) { return ((a & 0xFFFF) * (b & 0xFFFF) & 0xFFFF) | ((a >> 16) * (b >> 16) << 16); }
+    static Int minUnsigned16(Int a, Int b) {
+        return std::min(a & 0xFFFF, b & 0xFFFF) | std::min(a & 0xFFFF0000, b & 0xFFFF0000);
+    }
     template <int N>
     static Int shiftLeft(Int v) { return v << N; }
-    static Int shiftLeft(Int v, int n) { return v << n; }
     static Int shiftRight(Int v, int n) { return v >> n; }
 
     // Lane 0 when first <= 0 <= last.

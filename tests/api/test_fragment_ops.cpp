@@ -399,3 +399,31 @@ TEST(FragmentOps, DisplayListsCompileTheOperations) {
         return readStencilFrame();
     }, "display list");
 }
+
+// Blending of colours interpolated with perspective, in layers of quads.
+TEST(FragmentOps, PerspectiveBlendedLayersMatch) {
+    for (int n : {1, 2, 5, 20, 200}) {
+        expectIdentical([n] {
+            clearedView();
+            glMatrixMode(GL_PROJECTION);
+            glLoadIdentity();
+            glFrustum(-1, 1, -0.8, 0.8, 1, 20);
+            glMatrixMode(GL_MODELVIEW);
+            glLoadIdentity();
+            glTranslatef(0, 0, -3);
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glBegin(GL_QUADS);
+            for (int i = 0; i < n; ++i) {
+                const float x = -1.0f + 0.01f * static_cast<float>(i), y = -0.8f + 0.007f * static_cast<float>(i);
+                glColor4f(1.0f, 0.6f, 0.2f, 0.6f), glVertex3f(x, y, 0);
+                glColor4f(1.0f, 0.5f, 0.1f, 0.3f), glVertex3f(x + 1, y, -0.5f);
+                glColor4f(1.0f, 0.9f, 0.4f, 0.6f), glVertex3f(x + 1, y + 1, -1);
+                glColor4f(0.9f, 0.4f, 0.1f, 0.4f), glVertex3f(x, y + 1, 0);
+            }
+            glEnd();
+            return readStencilFrame();
+        }, "perspective blend " + std::to_string(n));
+    }
+}
+
