@@ -28,7 +28,7 @@ struct FragmentCounts {
     std::uint64_t fragments = 0, passed = 0;
 };
 
-// Every fragment that passes writes its pixel (no colour mask yet).
+// Every fragment that passes writes its pixel (counted so even under a colour mask).
 inline void addFragmentCounts(Stats& stats, const FragmentCounts& counts) {
     stats.fragments += counts.fragments;
     stats.fragmentsPassed += counts.passed;

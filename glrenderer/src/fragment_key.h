@@ -14,7 +14,7 @@ enum class Shading : std::uint8_t {
 
 // What changes the work of the fragment stage, and nothing else: computed once per draw, it
 // picks the routine that draws the draw's fragments (fragment_paths.h). Fields are in GL's
-// order of the stage; a field that does not matter under the others is normalized (no depth
+// order of the stage (the per-fragment operations' group aside); a field that does not matter under the others is normalized (no depth
 // function without the depth test), so that equal work has equal keys. A structural type: fast
 // paths take their key as a template argument and the compiler removes every step it turns off.
 struct FragmentKey {
@@ -23,7 +23,6 @@ struct FragmentKey {
     // Fog (issue 16): with a mode, the colour is fogged per fragment by a fog coordinate
     // interpolated with perspective, whatever the shading (FragmentInputs::fogCoord).
     FogMode fog = FogMode::Off;
-    // Then the per-fragment tests: scissor, alpha test (function), stencil (functions, ops).
     bool depthTest = false;
     CompareFunc depthFunc = CompareFunc::Always;
     bool depthWrite = false;
@@ -31,7 +30,8 @@ struct FragmentKey {
     // fragment's z (FragmentInputs::depthOffset), with the depth test only.
     bool depthOffset = false;
     // Per-fragment operations (issue 16), each at its default when off; their constants are in
-    // FragmentInputs::ops. The scissor is no step: it cuts the primitives' bounds.
+    // FragmentInputs::ops. Kept together here; the stage runs the alpha and stencil tests before
+    // the depth test, as GL orders them. The scissor is no step: it cuts the primitives' bounds.
     CompareFunc alphaFunc = CompareFunc::Always;  // the alpha test
     bool stencilTest = false;
     CompareFunc stencilFunc = CompareFunc::Always;

@@ -31,8 +31,7 @@ struct ChannelPairs {
 
 template <class L>
 [[gnu::always_inline]] inline ChannelPairs<L> pairsOf(typename L::Int rgba) {
-    const typename L::Int bytes = L::ints(0x00FF00FF);
-    return {L::bitAnd(rgba, bytes), L::bitAnd(L::shiftRight(rgba, 8), bytes)};
+    return {L::bitAnd(rgba, L::ints(0x00FF00FF)), L::shiftRight16By8(rgba)};
 }
 
 // A byte in both fields.
@@ -41,13 +40,12 @@ template <class L>
     return L::bitOr(byte, L::template shiftLeft<16>(byte));
 }
 
-// a * b / 255 in each field, rounded as the reference rounds a product of two bytes.
+// a * b / 255 in each field, rounded as the reference rounds a product of two bytes (the
+// fields hold at most 65025 + 254 + 0x80: no carry into the next).
 template <class L>
 [[gnu::always_inline]] inline typename L::Int mulUnorm8(typename L::Int a, typename L::Int b) {
-    const typename L::Int bytes = L::ints(0x00FF00FF);
     const typename L::Int t = L::mulLow16(a, b);
-    const typename L::Int rounded = L::add(L::add(t, L::bitAnd(L::shiftRight(t, 8), bytes)), L::ints(0x00800080));
-    return L::bitAnd(L::shiftRight(rounded, 8), bytes);
+    return L::shiftRight16By8(L::add(L::add(t, L::shiftRight16By8(t)), L::ints(0x00800080)));
 }
 
 // The fields of blend factor `f`, not One or Zero.

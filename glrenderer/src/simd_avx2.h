@@ -50,9 +50,11 @@ struct Avx2Lanes {
     static Int bitOr(Int a, Int b) { return _mm256_or_si256(a, b); }
     static Int bitXor(Int a, Int b) { return _mm256_xor_si256(a, b); }
     static Int minUnsigned(Int a, Int b) { return _mm256_min_epu32(a, b); }
-    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum.
+    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum, a
+    // logical shift right by 8.
     static Int mulLow16(Int a, Int b) { return _mm256_mullo_epi16(a, b); }
     static Int minUnsigned16(Int a, Int b) { return _mm256_min_epu16(a, b); }
+    static Int shiftRight16By8(Int v) { return _mm256_srli_epi16(v, 8); }
     static Int maxUnsigned(Int a, Int b) { return _mm256_max_epu32(a, b); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }

@@ -47,10 +47,11 @@ struct Avx512Lanes {
     static Int bitOr(Int a, Int b) { return _mm512_or_epi32(a, b); }
     static Int bitXor(Int a, Int b) { return _mm512_xor_epi32(a, b); }
     static Int minUnsigned(Int a, Int b) { return _mm512_min_epu32(a, b); }
-    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum. In two
-    // AVX2 halves: AVX-512F has no 16-bit multiply (that is AVX-512BW).
+    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum (in two
+    // AVX2 halves: AVX-512F has no 16-bit multiply, that is AVX-512BW), a logical shift right by 8.
     static Int mulLow16(Int a, Int b) { return byHalves(a, b, _mm256_mullo_epi16); }
     static Int minUnsigned16(Int a, Int b) { return byHalves(a, b, _mm256_min_epu16); }
+    static Int shiftRight16By8(Int v) { return _mm512_and_epi32(_mm512_srli_epi32(v, 8), _mm512_set1_epi32(0x00FF00FF)); }
     template <class Op>
     static Int byHalves(Int a, Int b, Op op) {
         const __m256i low = op(_mm512_castsi512_si256(a), _mm512_castsi512_si256(b));

@@ -52,8 +52,10 @@ struct ScalarLanes {
     static Int bitXor(Int a, Int b) { return a ^ b; }
     static Int minUnsigned(Int a, Int b) { return a < b ? a : b; }
     static Int maxUnsigned(Int a, Int b) { return a > b ? a : b; }
-    // Per 16-bit half: the low 16 bits of the product, the unsigned minimum.
+    // Per 16-bit half: the low 16 bits of the product, the unsigned minimum, a logical shift
+    // right by 8.
     static Int mulLow16(Int a, Int b) { return ((a & 0xFFFF) * (b & 0xFFFF) & 0xFFFF) | ((a >> 16) * (b >> 16) << 16); }
+    static Int shiftRight16By8(Int v) { return (v >> 8) & 0x00FF00FF; }
     static Int minUnsigned16(Int a, Int b) {
         return std::min(a & 0xFFFF, b & 0xFFFF) | std::min(a & 0xFFFF0000, b & 0xFFFF0000);
     }
