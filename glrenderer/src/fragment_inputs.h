@@ -45,8 +45,13 @@ struct FragmentRoutine {
     // too wide for the blocks.
     using Narrow = bool (*)(const RasterTriangle& triangle, const PixelRect& area, Framebuffer& framebuffer,
                             FragmentCounts& counts);
+    // A triangle's part in `area`, row by row: each row's covered span from the edge functions
+    // (the whole width of the area when `coveredWhole`), the lanes set up once for all rows.
+    using Rows = void (*)(const RasterTriangle& triangle, const PixelRect& area, bool coveredWhole,
+                          Framebuffer& framebuffer, FragmentCounts& counts);
 
     Span span = nullptr;
+    Rows rows = nullptr;
     Narrow narrow = nullptr;  // optional
 };
 
