@@ -38,6 +38,7 @@ std::span<const Scene> allScenes() {
         {"bench-lit-torus", "benchmark: a 16k-triangle torus lit by a spot and a directional light, specular",
          drawBenchLitTorus},
         {"bench-fog-terrain", "benchmark: the 100k-triangle terrain under LINEAR fog, depth-tested", drawBenchFogTerrain},
+        {"bench-particles", "benchmark: 2000 alpha-blended quads and points, depth-tested without writes", drawBenchParticles},
     };
     return scenes;
 }

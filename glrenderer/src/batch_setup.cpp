@@ -218,8 +218,8 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     ++call.stats.rasterized;
-    if (prepareTriangle(triangle, *call.fragments, methods.raster, framebuffer_.width(), framebuffer_.height(),
-                        call.target->slot())) {
+    const PixelRect drawable = drawableRect(state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
+    if (prepareTriangle(triangle, *call.fragments, methods.raster, drawable, call.target->slot())) {
         call.target->keep();
     }
 }

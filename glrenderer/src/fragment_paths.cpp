@@ -15,6 +15,8 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, cons
     : FragmentChoice(paths, key) {
     fog = state.fog;
     polygonOffset = state.polygonOffset;
+    ops = FragmentOpsConstants::of(state.fragmentOps);
+    scissor = state.fragmentOps.scissor;
 }
 
 FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {

@@ -8,8 +8,8 @@
 namespace glrenderer {
 
 // The keys with fast paths of their own at every vector width: what scenes draw with nearly
-// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), and smooth
-// depth-tested LINEAR fog. Each is
+// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), smooth
+// depth-tested LINEAR fog, and the usual alpha blending. Each is
 // compiled with its key as a constant, so that it holds only the steps the key turns on.
 inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false),
@@ -23,6 +23,17 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Perspective, true, CompareFunc::LessEqual, true),
     // A fogged landscape (bench-fog-terrain).
     withFog(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), FogMode::Linear),
+    // Transparency over a depth-tested scene, without depth writes (bench-particles, the
+    // blended_windows port): smooth, orthographic and flat (points).
+    withBlend(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, false), BlendFactor::SrcAlpha,
+              BlendFactor::OneMinusSrcAlpha),
+    withBlend(makeFragmentKey(Shading::Linear, true, CompareFunc::Less, false), BlendFactor::SrcAlpha,
+              BlendFactor::OneMinusSrcAlpha),
+    withBlend(makeFragmentKey(Shading::Flat, true, CompareFunc::Less, false), BlendFactor::SrcAlpha,
+              BlendFactor::OneMinusSrcAlpha),
+    // Blending without the depth test (2D overlays).
+    withBlend(makeFragmentKey(Shading::Perspective, false, CompareFunc::Always, false), BlendFactor::SrcAlpha,
+              BlendFactor::OneMinusSrcAlpha),
 };
 
 // The fragment routines of one vector width: a fast path per key of kFastFragmentKeys, and one
@@ -80,6 +91,8 @@ struct FragmentChoice {
     FragmentPath varyingW, constantW;
     FogState fog;  // the draw's, for the primitives' inputs when the key has fog
     PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
+    FragmentOpsConstants ops;     // the draw's (issue 16), for every primitive's inputs
+    ScissorBox scissor;           // the draw's, for the bounds of lines (drawableRect)
 };
 
 }  // namespace glrenderer

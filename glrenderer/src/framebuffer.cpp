@@ -16,6 +16,7 @@ void Framebuffer::resize(int width, int height) {
     depth_ = allocate(count_);
     accum_.clear();
     accum_.shrink_to_fit();
+    stencil_ = allocate(count_);
     markWritten();
 }
 

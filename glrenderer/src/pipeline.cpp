@@ -273,10 +273,4 @@ void Pipeline::resetStats() {
     drawer_->resetStats();
 }
 
-void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
-    buffer_.flushAndReset();
-    drawSubmitted();
-    drawer_->clearAtFlush(color, rgba, depth, depth24);
-}
-
 }  // namespace glrenderer

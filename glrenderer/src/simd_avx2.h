@@ -60,6 +60,13 @@ struct Avx2Lanes {
     static Mask either(Mask a, Mask b) { return _mm256_or_si256(a, b); }
     static Float loadFloats(const float* lanes) { return _mm256_loadu_ps(lanes); }
     static void storeFloats(float* lanes, Float v) { _mm256_storeu_ps(lanes, v); }
+    static Int minUnsigned(Int a, Int b) { return _mm256_min_epu32(a, b); }
+    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum, a
+    // logical shift right by 8.
+    static Int mulLow16(Int a, Int b) { return _mm256_mullo_epi16(a, b); }
+    static Int minUnsigned16(Int a, Int b) { return _mm256_min_epu16(a, b); }
+    static Int shiftRight16By8(Int v) { return _mm256_srli_epi16(v, 8); }
+    static Int maxUnsigned(Int a, Int b) { return _mm256_max_epu32(a, b); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }
     static Int shiftRight(Int v, int n) { return _mm256_srl_epi32(v, _mm_cvtsi32_si128(n)); }
@@ -71,6 +78,7 @@ struct Avx2Lanes {
                                    _mm256_cmpgt_epi32(_mm256_set1_epi32(last + 1), laneIndex()));
     }
     static Mask both(Mask a, Mask b) { return _mm256_and_si256(a, b); }
+    static Mask butNot(Mask a, Mask b) { return _mm256_andnot_si256(b, a); }
     static bool none(Mask m) { return _mm256_testz_si256(m, m); }
     static bool all(Mask m) { return _mm256_movemask_ps(_mm256_castsi256_ps(m)) == 0xFF; }
     static unsigned count(Mask m) {

@@ -57,6 +57,19 @@ struct Avx512Lanes {
     static Mask either(Mask a, Mask b) { return a | b; }
     static Float loadFloats(const float* lanes) { return _mm512_loadu_ps(lanes); }
     static void storeFloats(float* lanes, Float v) { _mm512_storeu_ps(lanes, v); }
+    static Int minUnsigned(Int a, Int b) { return _mm512_min_epu32(a, b); }
+    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum (in two
+    // AVX2 halves: AVX-512F has no 16-bit multiply, that is AVX-512BW), a logical shift right by 8.
+    static Int mulLow16(Int a, Int b) { return byHalves(a, b, _mm256_mullo_epi16); }
+    static Int minUnsigned16(Int a, Int b) { return byHalves(a, b, _mm256_min_epu16); }
+    static Int shiftRight16By8(Int v) { return _mm512_and_epi32(_mm512_srli_epi32(v, 8), _mm512_set1_epi32(0x00FF00FF)); }
+    template <class Op>
+    static Int byHalves(Int a, Int b, Op op) {
+        const __m256i low = op(_mm512_castsi512_si256(a), _mm512_castsi512_si256(b));
+        const __m256i high = op(_mm512_extracti64x4_epi64(a, 1), _mm512_extracti64x4_epi64(b, 1));
+        return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
+    }
+    static Int maxUnsigned(Int a, Int b) { return _mm512_max_epu32(a, b); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm512_slli_epi32(v, N); }
     static Int shiftRight(Int v, int n) { return _mm512_srl_epi32(v, _mm_cvtsi32_si128(n)); }
@@ -69,6 +82,7 @@ struct Avx512Lanes {
         return static_cast<Mask>(upTo & from);
     }
     static Mask both(Mask a, Mask b) { return a & b; }
+    static Mask butNot(Mask a, Mask b) { return static_cast<Mask>(a & ~b); }
     static bool none(Mask m) { return m == 0; }
     static bool all(Mask m) { return m == 0xFFFF; }
     static unsigned count(Mask m) { return static_cast<unsigned>(std::popcount(static_cast<unsigned>(m))); }
@@ -88,6 +102,7 @@ struct Avx512Lanes {
     }
 
     static Int load(const std::uint32_t* pixels, Mask m) { return _mm512_maskz_loadu_epi32(m, pixels); }
+    static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
     static void store(std::uint32_t* pixels, Mask m, Int v) { _mm512_mask_storeu_epi32(pixels, m, v); }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {

@@ -53,20 +53,31 @@ struct ScalarLanes {
     static Float fromBits(Int v) { return std::bit_cast<Float>(v); }
 
     static Int add(Int a, Int b) { return a + b; }
+    static Int sub(Int a, Int b) { return a - b; }
+    static Int mul(Int a, Int b) { return a * b; }
     static Int bitAnd(Int a, Int b) { return a & b; }
     static Int bitOr(Int a, Int b) { return a | b; }
-    static Int sub(Int a, Int b) { return a - b; }
     static Int bitXor(Int a, Int b) { return a ^ b; }
-    static Int shiftRight(Int v, int n) { return v >> n; }
     static Mask either(Mask a, Mask b) { return a || b; }
     static Float loadFloats(const float* lanes) { return *lanes; }
     static void storeFloats(float* lanes, Float v) { *lanes = v; }
+    static Int minUnsigned(Int a, Int b) { return a < b ? a : b; }
+    static Int maxUnsigned(Int a, Int b) { return a > b ? a : b; }
+    // Per 16-bit half: the low 16 bits of the product, the unsigned minimum, a logical shift
+    // right by 8.
+    static Int mulLow16(Int a, Int b) { return ((a & 0xFFFF) * (b & 0xFFFF) & 0xFFFF) | ((a >> 16) * (b >> 16) << 16); }
+    static Int shiftRight16By8(Int v) { return (v >> 8) & 0x00FF00FF; }
+    static Int minUnsigned16(Int a, Int b) {
+        return std::min(a & 0xFFFF, b & 0xFFFF) | std::min(a & 0xFFFF0000, b & 0xFFFF0000);
+    }
     template <int N>
     static Int shiftLeft(Int v) { return v << N; }
+    static Int shiftRight(Int v, int n) { return v >> n; }
 
     // Lane 0 when first <= 0 <= last.
     static Mask lanesBetween(int first, int last) { return first <= 0 && last >= 0; }
     static Mask both(Mask a, Mask b) { return a && b; }
+    static Mask butNot(Mask a, Mask b) { return a && !b; }
     static bool none(Mask m) { return !m; }
     static bool all(Mask m) { return m; }
     static unsigned count(Mask m) { return m ? 1u : 0u; }
@@ -85,6 +96,7 @@ struct ScalarLanes {
     }
 
     static Int load(const std::uint32_t* pixel, Mask m) { return m ? *pixel : 0; }
+    static Int select(Mask m, Int ifSet, Int ifClear) { return m ? ifSet : ifClear; }
     static void store(std::uint32_t* pixel, Mask m, Int v) {
         if (m) *pixel = v;
     }

@@ -23,14 +23,14 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH,
     GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
     GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
+    GL_TEXTURE_2D, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
     GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
     GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
     GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
     GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
     GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL,
 };
-constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER};
+constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP};
 constexpr GLenum kDepthBufferCapabilities[] = {GL_DEPTH_TEST};
 constexpr GLenum kFogCapabilities[] = {GL_FOG};
 constexpr GLenum kLightingCapabilities[] = {GL_COLOR_MATERIAL, GL_LIGHTING, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2,
@@ -59,7 +59,11 @@ const AttribGroup kServerGroups[] = {
      }>},
     {GL_ENABLE_BIT, kEnableCapabilities, nullptr},
     {GL_COLOR_BUFFER_BIT, kColorBufferCapabilities, saveFields<[](auto& s) {
-         return std::tie(s.clearColor, s.buffers.drawBuffer, s.buffers.clearIndex, s.buffers.indexMask);
+         auto& p = s.fragmentOps;
+         auto& o = s.draw.fragmentOps;
+         return std::tie(s.clearColor, s.buffers.drawBuffer, s.buffers.clearIndex, s.buffers.indexMask, p.alphaFunc,
+                         p.alphaRef, p.blendSrc, p.blendDst, p.logicOp, p.colorMask, o.alphaFunc, o.alphaRef,
+                         o.blendSrc, o.blendDst, o.logicOp, o.colorMask);
      }>},
     {GL_ACCUM_BUFFER_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.accumClear); }>},
     {GL_PIXEL_MODE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.readBuffer); }>},
@@ -85,8 +89,12 @@ const AttribGroup kServerGroups[] = {
                          s.draw.polygonFront, s.polygonModeBack, s.draw.polygonBack, s.draw.polygonOffset.factor,
                          s.draw.polygonOffset.units);
      }>},
-    {GL_SCISSOR_BIT, kScissorCapabilities, nullptr},
-    {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, nullptr},
+    {GL_SCISSOR_BIT, kScissorCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.fragmentOps.scissor); }>},
+    {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, saveFields<[](auto& s) {
+         auto& p = s.fragmentOps;
+         return std::tie(p.stencilFunc, p.stencilRef, p.stencilValueMask, p.stencilWriteMask, p.stencilFail,
+                         p.stencilDepthFail, p.stencilDepthPass, p.clearStencil, s.draw.fragmentOps.stencil);
+     }>},
     {GL_TEXTURE_BIT, kTextureCapabilities, nullptr},
     {GL_TRANSFORM_BIT, kTransformCapabilities, saveFields<[](auto& s) { return std::tie(s.matrixMode, s.eyeClipPlanes); }>},
     {GL_VIEWPORT_BIT, {}, saveFields<[](auto& s) {

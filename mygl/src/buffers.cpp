@@ -18,14 +18,22 @@ void clear(GLbitfield mask) {
     if (s->renderMode != GL_RENDER) return;  // as the reference: selection clears nothing
     drawCachedBitmaps(*s);
     const bool color = (mask & GL_COLOR_BUFFER_BIT) && s->buffers.drawBuffer != GL_NONE;
-    const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite;  // glDepthMask applies
-    s->pipeline.clear(color, glrenderer::clearColorRgba8(s->clearColor), depth,
-                      glrenderer::clearDepth24(s->clearDepth));
-    if (color) s->pipeline.resetStats();
+    // The scissor and the colour, depth and stencil masks apply.
+    const glrenderer::FragmentOps& ops = s->draw.fragmentOps;
+    s->pipeline.clear({.color = color,
+                       .depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite,
+                       .stencil = (mask & GL_STENCIL_BUFFER_BIT) != 0,
+                       .rgba = glrenderer::clearColorRgba8(s->clearColor),
+                       .depth24 = glrenderer::clearDepth24(s->clearDepth),
+                       .colorMask = ops.colorMask,
+                       .stencilValue = static_cast<std::uint8_t>(s->fragmentOps.clearStencil & 0xFF),
+                       .stencilMask = ops.stencil.writeMask,
+                       .scissor = ops.scissor});
+    if (color) s->pipeline.resetStats();  // a frame's counts start at its clear, as the course did
     if (mask & GL_ACCUM_BUFFER_BIT) {
         s->pipeline.finish();
         clearAccumBuffer(*s);
-    }  // a frame's counts start at its clear, as the course did
+    }
 }
 
 // Bytes of one pixel in `format`/`type`, or 0 if the pair is not supported.
@@ -33,6 +41,11 @@ int bytesPerPixel(GLenum format, GLenum type) {
     if (type == GL_UNSIGNED_BYTE && format == GL_RGBA) return 4;
     if (type == GL_UNSIGNED_BYTE && format == GL_RGB) return 3;
     if (format == GL_DEPTH_COMPONENT && (type == GL_FLOAT || type == GL_UNSIGNED_INT)) return 4;
+    if (format == GL_STENCIL_INDEX) {
+        if (type == GL_UNSIGNED_BYTE || type == GL_BYTE) return 1;
+        if (type == GL_UNSIGNED_SHORT || type == GL_SHORT) return 2;
+        return 4;  // GL_UNSIGNED_INT, GL_INT, GL_FLOAT
+    }
     return 0;
 }
 
@@ -45,6 +58,17 @@ bool isKnownFormat(GLenum format) {
 bool isKnownType(GLenum type) {
     return type == GL_UNSIGNED_BYTE || type == GL_BYTE || type == GL_UNSIGNED_SHORT || type == GL_SHORT ||
            type == GL_UNSIGNED_INT || type == GL_INT || type == GL_FLOAT;
+}
+
+// A stencil value as an index of `type` (integers as they are, GL_FLOAT as a float).
+void writeStencilIndex(std::uint32_t value, GLenum type, std::uint8_t* target) {
+    const auto write = [target](auto v) { std::memcpy(target, &v, sizeof v); };
+    switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return write(static_cast<std::uint8_t>(value));
+    case GL_UNSIGNED_SHORT: case GL_SHORT: return write(static_cast<std::uint16_t>(value));
+    case GL_FLOAT: return write(static_cast<float>(value));
+    default: return write(value);
+    }
 }
 
 // The part of [start, start + length) inside [0, limit), as an offset into the range and a
@@ -65,8 +89,8 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
     s->updateModelviewProjection();  // the reference validates its state here
     if (!isKnownFormat(format) || !isKnownType(type)) return setError(*s, GL_INVALID_ENUM);
-    // An RGBA buffer has no colour indices, and there is no stencil buffer.
-    if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX) return setError(*s, GL_INVALID_OPERATION);
+    // An RGBA buffer has no colour indices.
+    if (format == GL_COLOR_INDEX) return setError(*s, GL_INVALID_OPERATION);
     const int pixelBytes = bytesPerPixel(format, type);
     if (pixelBytes == 0) return setError(*s, GL_INVALID_OPERATION);  // valid in GL, not offered here
     if (!pixels) return;
@@ -82,7 +106,9 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
         for (std::int64_t column = columns.offset; column < columns.offset + columns.count; ++column) {
             const auto source = static_cast<std::size_t>((y + row) * fb.width() + (x + column));
             std::uint8_t* target = out + static_cast<std::size_t>(row) * rowBytes + static_cast<std::size_t>(column * pixelBytes);
-            if (format == GL_DEPTH_COMPONENT) {
+            if (format == GL_STENCIL_INDEX) {
+                writeStencilIndex(fb.stencil()[source], type, target);
+            } else if (format == GL_DEPTH_COMPONENT) {
                 const std::uint32_t depth24 = fb.depth()[source];
                 if (type == GL_FLOAT) {
                     const float value = static_cast<float>(depth24) / static_cast<float>(glrenderer::kDepthMax24);

@@ -20,7 +20,7 @@ const std::vector<EntryPoint>& implementedTable() {
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
                           clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
                           polygonOffsetEntryPoints(), accumulationEntryPoints(), colorIndexEntryPoints(),
-                          drawBufferEntryPoints(), feedbackEntryPoints()}) {
+                          drawBufferEntryPoints(), feedbackEntryPoints(), fragmentOpsEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

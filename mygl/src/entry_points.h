@@ -33,6 +33,7 @@ std::span<const EntryPoint> attribStackEntryPoints();
 std::span<const EntryPoint> clipPlaneEntryPoints();
 std::span<const EntryPoint> fogEntryPoints();
 std::span<const EntryPoint> polygonOffsetEntryPoints();
+std::span<const EntryPoint> fragmentOpsEntryPoints();
 std::span<const EntryPoint> evaluatorEntryPoints();
 std::span<const EntryPoint> accumulationEntryPoints();
 std::span<const EntryPoint> colorIndexEntryPoints();

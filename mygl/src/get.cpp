@@ -8,6 +8,7 @@
 #include "capabilities.h"
 #include "entry_points.h"
 #include "fog_state.h"
+#include "fragment_ops_state.h"
 #include "polygon_offset_state.h"
 #include "gl12_lighting_enums.h"
 
@@ -75,7 +76,7 @@ Value query(const Context::State& s, GLenum name) {
     case GL_CURRENT_RASTER_POSITION_VALID: return flag(s.rasterValid);
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: return one(8);
     case GL_DEPTH_BITS: return one(24);
-    case GL_STENCIL_BITS: return one(0);
+    case GL_STENCIL_BITS: return one(8);
     case GL_SUBPIXEL_BITS: return one(8);
     case GL_PACK_ALIGNMENT: return one(s.packAlignment);
     case GL_UNPACK_ALIGNMENT: return one(s.unpackAlignment);
@@ -154,6 +155,8 @@ Value query(const Context::State& s, GLenum name) {
         if (name == GL_POLYGON_OFFSET_UNITS) return one(d.polygonOffset.units);
         if (std::optional<std::vector<double>> fog = fogQuery(s, name)) return Value{*fog, name == GL_FOG_COLOR};
         if (const std::optional<bool> enabled = evaluatorCapability(s, name)) return flag(*enabled);
+        if (name == GL_COLOR_WRITEMASK) return Value{*fragmentOpsQuery(s, name), false, true};
+        if (std::optional<std::vector<double>> op = fragmentOpsQuery(s, name)) return Value{*op, name == GL_ALPHA_TEST_REF};
         if (const std::optional<bool> enabled = capabilityEnabled(s, name)) return flag(*enabled);  // the inert ones
         return {};
     }

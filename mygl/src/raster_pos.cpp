@@ -72,6 +72,7 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
         const int x = static_cast<int>(std::floor(s->rasterPosition.x + kEpsilon - xorig));
         const int y = static_cast<int>(std::floor(s->rasterPosition.y + kEpsilon - yorig));
         const float z = s->rasterPosition.z;
+        s->bitmapCache.setDrawState(s->draw);
         if (BitmapCache::cacheable(width, height)) {
             if (!s->bitmapCache.accepts(x, y, width, height, s->rasterColor, z)) drawCachedBitmaps(*s);
             s->bitmapCache.add(x, y, width, height, bits, stride, s->rasterColor, z);
@@ -128,7 +129,7 @@ const EntryPoint kEntryPoints[] = {
 void drawCachedBitmaps(Context::State& state) {
     if (state.bitmapCache.empty()) return;
     endBatch(state);
-    state.pipeline.drawBitmap(state.draw, state.bitmapCache.bitmap());
+    state.pipeline.drawBitmap(state.bitmapCache.drawState(), state.bitmapCache.bitmap());
     state.bitmapCache.clear();
 }
 

@@ -5,6 +5,7 @@
 #include "clamp_to_unit.h"
 #include "compiled.h"
 #include "fog_state.h"
+#include "fragment_ops_state.h"
 #include "polygon_offset_state.h"
 
 namespace mygl {
@@ -17,8 +18,8 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
-    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D, GL_TEXTURE_2D,
+    GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
+    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_TEXTURE_1D, GL_TEXTURE_2D,
 };
 
 bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
@@ -187,7 +188,8 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         return true;
     }
     if (setLightingCapability(s, cap, enabled) || setClipPlaneCapability(s, cap, enabled) ||
-        setEvaluatorCapability(s, cap, enabled) || setPolygonOffsetCapability(s, cap, enabled)) {
+        setEvaluatorCapability(s, cap, enabled) || setPolygonOffsetCapability(s, cap, enabled) ||
+        setFragmentOpsCapability(s, cap, enabled)) {
         return true;
     }
     if (cap == GL_FOG) {
@@ -211,6 +213,7 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (cap == GL_FOG) return s.fog.enabled;
     if (const std::optional<bool> offset = polygonOffsetCapability(s, cap)) return *offset;
     if (const std::optional<bool> map = evaluatorCapability(s, cap)) return *map;
+    if (const std::optional<bool> op = fragmentOpsCapability(s, cap)) return *op;
     if (!isInert(cap)) return std::nullopt;
     return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
 }

@@ -142,7 +142,7 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
 }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, lighting, fog, polygon offset, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, lighting, fog, polygon offset, the per-fragment operations, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -165,6 +165,9 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glColorMaterial, 0) \
     X(glad_glFogf, 0) X(glad_glFogi, 0) X(glad_glFogfv, fogCount<GLfloat>) X(glad_glFogiv, fogCount<GLint>) \
     X(glad_glPolygonOffset, 0) \
+    X(glad_glScissor, 0) X(glad_glAlphaFunc, 0) X(glad_glStencilFunc, 0) X(glad_glStencilOp, 0)             \
+    X(glad_glStencilMask, 0) X(glad_glClearStencil, 0) X(glad_glBlendFunc, 0) X(glad_glLogicOp, 0)           \
+    X(glad_glColorMask, 0) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
     X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4) \
     X(glad_glMap1f, map1Count<GLfloat>) X(glad_glMap1d, map1Count<GLdouble>) X(glad_glMap2f, map2Count<GLfloat>) \

@@ -18,9 +18,6 @@ namespace {
 
 // The GL 1.1 functions still to do, by area.
 const std::vector<std::string> kStillToDo = {
-    // Per-fragment operations (branch perfrag)
-    "glAlphaFunc", "glBlendFunc", "glClearStencil", "glColorMask", "glLogicOp", "glScissor", "glStencilFunc",
-    "glStencilMask", "glStencilOp",
     // Stipple
     "glGetPolygonStipple", "glLineStipple", "glPolygonStipple",
     // Pixel rectangles (after the pixel unpack/pack modules)

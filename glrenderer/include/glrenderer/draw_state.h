@@ -5,6 +5,7 @@
 #include <glm/vec4.hpp>
 
 #include "glrenderer/fog.h"
+#include "glrenderer/fragment_ops.h"
 #include "glrenderer/polygon_offset.h"
 
 namespace glrenderer {
@@ -22,8 +23,6 @@ inline constexpr int kPrimitiveModeCount = 10;
 enum class QuadSplit : std::uint8_t { ByPath, V1V3 };
 
 enum class Face : std::uint8_t { Front, Back, FrontAndBack };
-enum class CompareFunc : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual,
-                                        GreaterEqual, Always };
 enum class ShadeModel : std::uint8_t { Flat, Smooth };
 enum class PolygonMode : std::uint8_t { Point, Line, Fill };
 
@@ -66,6 +65,8 @@ struct DrawState {
     FogState fog;
     // Polygon offset (issue 16).
     PolygonOffset polygonOffset;
+    // Scissor, alpha test, stencil, blending, logic op, colour mask (issue 16).
+    FragmentOps fragmentOps;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }

@@ -8,7 +8,7 @@
 
 namespace glrenderer {
 
-// RGBA8 color and 24-bit depth, row 0 at the bottom (the layout of glReadPixels and OSMesa).
+// RGBA8 color, 24-bit depth and 8-bit stencil, row 0 at the bottom (the layout of glReadPixels and OSMesa).
 class Framebuffer {
 public:
     Framebuffer(int width, int height);
@@ -30,6 +30,9 @@ public:
     // GL_RGBA16_SNORM), allocated zeroed at the first use, as a program that never calls glAccum
     // pays nothing for it.
     std::span<std::int16_t> accum();
+    // Stencil values in the low byte of a word per pixel (the fragment stage's lanes are words).
+    std::span<std::uint32_t> stencil() { return {stencil_.get(), count_}; }
+    std::span<const std::uint32_t> stencil() const { return {stencil_.get(), count_}; }
 
     void clearColor(std::uint32_t rgba);
     void clearDepth(std::uint32_t depth24);
@@ -56,6 +59,7 @@ private:
     Pixels color_;
     Pixels depth_;
     std::vector<std::int16_t> accum_;
+    Pixels stencil_;
 };
 
 }  // namespace glrenderer
