@@ -26,11 +26,17 @@ std::int16_t clearWord(float value) { return static_cast<std::int16_t>((static_c
 
 std::uint8_t channel(std::uint32_t rgba, int c) { return static_cast<std::uint8_t>(rgba >> (8 * c)); }
 
-// Calls `visit(pixelIndex)` for every pixel of `rect` inside the framebuffer.
+// Calls `visit(pixelIndex)` for every pixel of the framebuffer, inside the scissor box when it
+// is enabled.
 template <class Visit>
-void forEachPixel(const Framebuffer& fb, const PixelRect& rect, Visit&& visit) {
-    const int x0 = std::max(rect.x, 0), x1 = std::min(rect.x + rect.width, fb.width());
-    const int y0 = std::max(rect.y, 0), y1 = std::min(rect.y + rect.height, fb.height());
+void forEachPixel(const Framebuffer& fb, const ScissorBox& scissor, Visit&& visit) {
+    int x0 = 0, x1 = fb.width(), y0 = 0, y1 = fb.height();
+    if (scissor.enabled) {  // in 64 bits: x + width may pass INT_MAX
+        x0 = static_cast<int>(std::clamp<std::int64_t>(scissor.x, 0, x1));
+        y0 = static_cast<int>(std::clamp<std::int64_t>(scissor.y, 0, y1));
+        x1 = static_cast<int>(std::clamp<std::int64_t>(std::int64_t{scissor.x} + scissor.width, x0, x1));
+        y1 = static_cast<int>(std::clamp<std::int64_t>(std::int64_t{scissor.y} + scissor.height, y0, y1));
+    }
     for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; ++x) visit(static_cast<std::size_t>(y) * static_cast<std::size_t>(fb.width()) + static_cast<std::size_t>(x));
     }
@@ -38,25 +44,25 @@ void forEachPixel(const Framebuffer& fb, const PixelRect& rect, Visit&& visit) {
 
 }  // namespace
 
-void clearAccum(Framebuffer& fb, const PixelRect& rect, const std::array<float, 4>& value) {
+void clearAccum(Framebuffer& fb, const ScissorBox& scissor, const std::array<float, 4>& value) {
     const std::array<std::int16_t, 4> words{clearWord(value[0]), clearWord(value[1]), clearWord(value[2]), clearWord(value[3])};
     const std::span<std::int16_t> accum = fb.accum();
-    forEachPixel(fb, rect, [&](std::size_t i) { std::copy(words.begin(), words.end(), accum.begin() + static_cast<std::ptrdiff_t>(4 * i)); });
+    forEachPixel(fb, scissor, [&](std::size_t i) { std::copy(words.begin(), words.end(), accum.begin() + static_cast<std::ptrdiff_t>(4 * i)); });
 }
 
-void accumulate(Framebuffer& fb, const PixelRect& rect, AccumOp op, float value) {
+void accumulate(Framebuffer& fb, const ScissorBox& scissor, std::uint32_t colorMask, AccumOp op, float value) {
     const std::span<std::int16_t> accum = fb.accum();
     const std::span<std::uint32_t> color = fb.color();
     // The colour buffer's bytes as the reference unpacks them (x / 255), scaled to the words' range.
     const float scale = value * 32767.0f;
     switch (op) {
     case AccumOp::Load:
-        forEachPixel(fb, rect, [&](std::size_t i) {
+        forEachPixel(fb, scissor, [&](std::size_t i) {
             for (int c = 0; c < 4; ++c) accum[4 * i + c] = toWord(static_cast<float>(channel(color[i], c)) / 255.0f * scale);
         });
         break;
     case AccumOp::Accum:
-        forEachPixel(fb, rect, [&](std::size_t i) {
+        forEachPixel(fb, scissor, [&](std::size_t i) {
             for (int c = 0; c < 4; ++c) {
                 std::int16_t& word = accum[4 * i + c];
                 word = wrappingAdd(word, toWord(static_cast<float>(channel(color[i], c)) / 255.0f * scale));
@@ -65,22 +71,23 @@ void accumulate(Framebuffer& fb, const PixelRect& rect, AccumOp op, float value)
         break;
     case AccumOp::Add: {
         const std::int16_t increment = toWord(scale);
-        forEachPixel(fb, rect, [&](std::size_t i) {
+        forEachPixel(fb, scissor, [&](std::size_t i) {
             for (int c = 0; c < 4; ++c) accum[4 * i + c] = wrappingAdd(accum[4 * i + c], increment);
         });
         break;
     }
     case AccumOp::Mult:
-        forEachPixel(fb, rect, [&](std::size_t i) {
+        forEachPixel(fb, scissor, [&](std::size_t i) {
             for (int c = 0; c < 4; ++c) accum[4 * i + c] = toWord(static_cast<float>(accum[4 * i + c]) * value);
         });
         break;
     case AccumOp::Return: {
         const float unscale = value / 32767.0f;
-        forEachPixel(fb, rect, [&](std::size_t i) {
+        forEachPixel(fb, scissor, [&](std::size_t i) {
             const std::int16_t* words = &accum[4 * i];
-            color[i] = packRgba8(toUnorm8(words[0] * unscale), toUnorm8(words[1] * unscale),
-                                 toUnorm8(words[2] * unscale), toUnorm8(words[3] * unscale));
+            const std::uint32_t rgba = packRgba8(toUnorm8(words[0] * unscale), toUnorm8(words[1] * unscale),
+                                                 toUnorm8(words[2] * unscale), toUnorm8(words[3] * unscale));
+            color[i] = (rgba & colorMask) | (color[i] & ~colorMask);
         });
         fb.markWritten();
         break;

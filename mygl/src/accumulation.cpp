@@ -22,11 +22,6 @@ std::optional<AccumOp> accumOp(GLenum op) {
     }
 }
 
-// glAccum's pixels: the whole window (a scissor box will narrow it).
-glrenderer::PixelRect accumRect(const Context::State& s) {
-    return {0, 0, s.framebuffer.width(), s.framebuffer.height()};
-}
-
 // The reference's order: the operation is checked first; in GL_SELECT or GL_FEEDBACK nothing
 // happens. Without a colour buffer to read (GL_LOAD, GL_ACCUM) or to write (GL_RETURN) the
 // accumulation buffer is left as it is.
@@ -41,7 +36,8 @@ void accum(GLenum op, GLfloat value) {
     if (*operation == AccumOp::Return && s->buffers.drawBuffer == GL_NONE) return;
     drawCachedBitmaps(*s);
     s->pipeline.finish();
-    glrenderer::accumulate(s->framebuffer, accumRect(*s), *operation, value);
+    const glrenderer::FragmentOps& ops = s->draw.fragmentOps;
+    glrenderer::accumulate(s->framebuffer, ops.scissor, ops.colorMask, *operation, value);
 }
 
 // Clamped to [-1, 1] as the reference does it: NaN becomes -1.
@@ -58,7 +54,7 @@ const EntryPoint kEntryPoints[] = {
 
 }  // namespace
 
-void clearAccumBuffer(Context::State& s) { glrenderer::clearAccum(s.framebuffer, accumRect(s), s.buffers.accumClear); }
+void clearAccumBuffer(Context::State& s) { glrenderer::clearAccum(s.framebuffer, s.draw.fragmentOps.scissor, s.buffers.accumClear); }
 
 std::span<const EntryPoint> accumulationEntryPoints() { return kEntryPoints; }
 

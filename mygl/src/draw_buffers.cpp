@@ -27,6 +27,7 @@ void selectBuffer(GLenum buffer, GLenum BufferState::*field) {
     if (!s) return;
     if (const GLenum error = bufferError(buffer); error != GL_NO_ERROR) return setError(*s, error);
     s->buffers.*field = buffer;
+    if (field == &BufferState::drawBuffer) updateColorWrites(*s);
 }
 
 const EntryPoint kEntryPoints[] = {

@@ -34,6 +34,8 @@ std::span<const EntryPoint> clipPlaneEntryPoints();
 std::span<const EntryPoint> fogEntryPoints();
 std::span<const EntryPoint> polygonOffsetEntryPoints();
 std::span<const EntryPoint> fragmentOpsEntryPoints();
+// The colour bits draws write: glColorMask's, none with glDrawBuffer(GL_NONE).
+void updateColorWrites(Context::State& state);
 std::span<const EntryPoint> evaluatorEntryPoints();
 std::span<const EntryPoint> accumulationEntryPoints();
 std::span<const EntryPoint> colorIndexEntryPoints();

@@ -134,12 +134,7 @@ void colorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     s->fragmentOps.colorMask = {r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
-    glrenderer::FragmentOps ops = s->draw.fragmentOps;
-    ops.colorMask = 0;
-    for (int c = 0; c < 4; ++c) {
-        if (s->fragmentOps.colorMask[static_cast<std::size_t>(c)]) ops.colorMask |= 0xFFu << (8 * c);
-    }
-    update(*s, ops);
+    updateColorWrites(*s);
 }
 
 const EntryPoint kEntryPoints[] = {
@@ -217,5 +212,16 @@ std::optional<std::vector<double>> fragmentOpsQuery(const Context::State& s, GLe
 }
 
 std::span<const EntryPoint> fragmentOpsEntryPoints() { return kEntryPoints; }
+
+void updateColorWrites(Context::State& s) {
+    glrenderer::FragmentOps ops = s.draw.fragmentOps;
+    ops.colorMask = 0;
+    if (s.buffers.drawBuffer != GL_NONE) {
+        for (int c = 0; c < 4; ++c) {
+            if (s.fragmentOps.colorMask[static_cast<std::size_t>(c)]) ops.colorMask |= 0xFFu << (8 * c);
+        }
+    }
+    update(s, ops);
+}
 
 }  // namespace mygl

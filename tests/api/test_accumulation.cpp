@@ -113,6 +113,27 @@ TEST(Accumulation, ClearValuesMatchTheReference) {
     }
 }
 
+// The scissor box narrows every operation and the accumulation buffer's clear; GL_RETURN writes
+// through the colour mask.
+TEST(Accumulation, ScissorAndColorMaskApplyAsInTheReference) {
+    const auto frames = onBothBackends<Frame>([&] {
+        jitteredScene(0, 0);
+        glClearAccum(0.1f, 0.5f, 0.9f, 0.3f);
+        glClear(GL_ACCUM_BUFFER_BIT);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(5, 9, 40, 20);
+        glAccum(GL_ACCUM, 0.5f);
+        glClearAccum(0.7f, 0.1f, 0.2f, 0.5f);
+        glScissor(20, 2, 30, 40);
+        glClear(GL_ACCUM_BUFFER_BIT);
+        glScissor(3, 6, 50, 30);
+        glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+        glAccum(GL_RETURN, 1.0f);
+        return readFrame(kWidth, kHeight);
+    }, kWidth, kHeight);
+    EXPECT_EQ(difference(frames.mygl, frames.osmesa).pixels, 0);
+}
+
 // Everything that is not a frame: queries, the attribute group, errors, display lists, and no
 // effect outside GL_RENDER. Each line is a value or an error, compared as a whole.
 std::vector<double> accumStateWalk() {

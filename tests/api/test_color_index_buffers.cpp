@@ -168,15 +168,24 @@ TEST(DrawReadBuffer, ValuesAndErrorsMatchTheReference) {
     EXPECT_EQ(testing_support::firstDifference(walks.mygl, walks.osmesa), "");
 }
 
-// Front, back and left all draw into the one buffer; GL_NONE clears nothing.
-TEST(DrawReadBuffer, ClearsFollowTheDrawBufferAsTheReference) {
+// Front, back and left all draw into the one buffer; GL_NONE clears and draws no colour (depth
+// is still written).
+TEST(DrawReadBuffer, ClearsAndDrawsFollowTheDrawBufferAsTheReference) {
     const auto frames = onBothBackends<Frame>([] {
         glClearColor(0.2f, 0.4f, 0.6f, 1);
         glDrawBuffer(GL_BACK);
-        glClear(GL_COLOR_BUFFER_BIT);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         glDrawBuffer(GL_NONE);
         glClearColor(1, 0, 0, 1);
         glClear(GL_COLOR_BUFFER_BIT);
+        glEnable(GL_DEPTH_TEST);
+        glColor3f(0, 1, 0);
+        glRectf(-0.5f, -0.5f, 0.5f, 0.5f);  // depth only
+        glDrawBuffer(GL_FRONT);
+        glColor3f(1, 1, 0);
+        glBegin(GL_TRIANGLES);  // hidden where the rectangle wrote its depth
+        glVertex3f(-0.9f, -0.9f, 0.5f), glVertex3f(0.9f, -0.9f, 0.5f), glVertex3f(0.0f, 0.9f, 0.5f);
+        glEnd();
         glDrawBuffer(GL_FRONT_AND_BACK);
         glReadBuffer(GL_BACK);
         return readFrame(16, 16);
