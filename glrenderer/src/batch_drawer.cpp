@@ -8,9 +8,19 @@
 namespace glrenderer {
 
 BatchDrawer::BatchDrawer(Framebuffer& framebuffer)
-    : framebuffer_(framebuffer), tiles_(framebuffer), setup_(framebuffer, kChunkVertices) {}
+    : framebuffer_(framebuffer), tiles_(framebuffer), setup_(framebuffer, kChunkVertices) {
+    texturesInUse_.reserve(kTexturesReserved);
+}
 
-void BatchDrawer::flush() { tiles_.flush(stats_, paintersSort_); }
+void BatchDrawer::flush() {
+    tiles_.flush(stats_, paintersSort_);
+    texturesInUse_.clear();
+}
+
+void BatchDrawer::keepTexture(const TextureState& texture) {
+    if (texture.env == TextureEnv::Off) return;
+    if (texturesInUse_.empty() || texturesInUse_.back() != texture.image) texturesInUse_.push_back(texture.image);
+}
 
 void BatchDrawer::draw(const SubmittedBatch& submitted) {
     if (submitted.state.selection) return select(submitted);
@@ -30,6 +40,7 @@ void BatchDrawer::draw(const SubmittedBatch& submitted) {
 }
 
 void BatchDrawer::draw(BatchChunk& chunk) {
+    for (const BatchEntry& entry : chunk.batches) keepTexture(entry.state.texture);
     if (!chunk.setUp) {
         lightChunk(chunk);
         for (const BatchEntry& entry : chunk.batches) draw(chunk.batch(entry));

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -59,6 +60,11 @@ private:
     void drawUnfilled(const Batch& batch);
     void select(const SubmittedBatch& batch);
 
+    static constexpr std::size_t kTexturesReserved = 64;
+
+    // Keeps the texture the chunk's batch reads alive until its triangles are drawn (flush).
+    void keepTexture(const TextureState& texture);
+
     Framebuffer& framebuffer_;
     // Written for every triangle on the batch thread: a line of its own, not shared with
     // anything the program's thread writes.
@@ -67,6 +73,8 @@ private:
     BatchSetup setup_;
     bool paintersSort_ = false;  // of the last batch drawn: how its tiles order triangles
     HitRange hits_;
+    // The textures queued triangles read, released when the tiles are drawn.
+    std::vector<std::shared_ptr<const TextureImage>> texturesInUse_;
 };
 
 }  // namespace glrenderer

@@ -17,7 +17,9 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     const std::int64_t y0 = std::max<std::int64_t>(bottom, 0), y1 = std::min<std::int64_t>(bottom + bitmap.height, fb.height());
     // Runs of set bits, in each row, are spans of one colour and depth for the fragment stage.
     FragmentInputs fragment;
-    fragment.setPath(FragmentChoice(bestFragmentPaths(), flatFragmentKey(state)).varyingW);
+    // Not textured yet (the raster position's texture coordinates are not kept).
+    const FragmentKey key = withTexture(flatFragmentKey(state), TextureState{});
+    fragment.setPath(FragmentChoice(bestFragmentPaths(), key).varyingW);
     fragment.setFlatColor(bitmap.color);
     fragment.depth = {bitmap.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
     // Fog: the reference's bitmap quad carries no fog coordinate, so its fragments read 0 (not

@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "glrenderer/draw_state.h"
+#include "glrenderer/texture.h"
 
 namespace glrenderer {
 
@@ -32,6 +33,15 @@ struct FragmentKey {
     bool depthOffset = false;
     // Then blending (equation, factors), the logic op and the colour and depth masks.
 
+    // Texturing (issue 16), first in the stage's order but kept here, apart: the environment
+    // (Off without a texture), what the texture's format holds, its filter and wraps. The
+    // texture coordinates are interpolated with perspective, whatever the shading
+    // (FragmentInputs::texCoord).
+    TextureEnv textureEnv = TextureEnv::Off;
+    TextureBase textureBase = TextureBase::Rgba;
+    TextureFilter textureFilter = TextureFilter::Nearest;
+    TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+
     bool operator==(const FragmentKey&) const = default;
 };
 
@@ -47,10 +57,27 @@ constexpr FragmentKey withFog(FragmentKey key, FogMode mode) {
     return key;
 }
 
+// `key` with texturing as `texture` makes it (none when its env is Off).
+inline FragmentKey withTexture(FragmentKey key, const TextureState& texture) {
+    if (texture.env == TextureEnv::Off) {
+        const FragmentKey untextured;
+        key.textureEnv = untextured.textureEnv, key.textureBase = untextured.textureBase;
+        key.textureFilter = untextured.textureFilter, key.wrapS = untextured.wrapS, key.wrapT = untextured.wrapT;
+        return key;
+    }
+    key.textureEnv = texture.env;
+    key.textureBase = texture.base;
+    key.textureFilter = texture.filter;
+    key.wrapS = texture.wrapS;
+    key.wrapT = texture.wrapT;
+    return key;
+}
+
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).
 inline FragmentKey fragmentKey(const DrawState& state) {
     const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
-    return withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
+    const FragmentKey key = makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite);
+    return withTexture(withFog(key, state.fog.mode), state.texture);
 }
 
 // The same key for primitives of one colour (points, bitmaps).

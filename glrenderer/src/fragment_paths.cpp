@@ -17,6 +17,8 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, cons
     : FragmentChoice(paths, key) {
     fog = state.fog;
     polygonOffset = state.polygonOffset;
+    texture = state.texture.image.get();
+    textureEnvColor = state.texture.envColor;
 }
 
 FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {

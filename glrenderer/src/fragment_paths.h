@@ -81,6 +81,10 @@ struct FragmentChoice {
     FragmentPath varyingW, constantW;
     FogState fog;  // the draw's, for the primitives' inputs when the key has fog
     PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
+    // The draw's texture (kept alive by the batch drawer until its triangles are drawn) and
+    // environment colour, when the key has texturing.
+    const TextureImage* texture = nullptr;
+    glm::vec4 textureEnvColor{0.0f};
 };
 
 }  // namespace glrenderer

@@ -9,6 +9,7 @@
 
 #include "fragment_fog.h"
 #include "fragment_inputs.h"
+#include "fragment_texture.h"
 #include "lane_clamp.h"
 
 namespace glrenderer {
@@ -39,7 +40,7 @@ public:
     explicit FragmentLanes(const FragmentInputs& in)
         : depth_(in.depth), invW_(in.invW), red_(in.color[0]), green_(in.color[1]), blue_(in.color[2]),
           alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
-          depthOffset_(L::floats(in.depthOffset)) {}
+          depthOffset_(L::floats(in.depthOffset)), texture_(in) {}
 
     // 24-bit window depth: round(clamp(z) * (2^24 - 1)), ties to even.
     // Polygon offset adds the primitive's depth offset to z first.
@@ -49,13 +50,21 @@ public:
         return L::roundToInt(L::mul(clampUnit<L>(z), L::floats(16777215.0f)));
     }
 
-    // The colour words, packed R, G, B, A from the low byte.
-    [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y) const {
-        if (key.shading == Shading::Flat && key.fog == FogMode::Off) return flat_;
+    // The colour words of the lanes `live`, packed R, G, B, A from the low byte.
+    [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y, typename L::Mask live) const {
+        const bool textured = key.textureEnv != TextureEnv::Off;
+        if (key.shading == Shading::Flat && key.fog == FogMode::Off && !textured) return flat_;
         Float r = red_.at(x, y), g = green_.at(x, y), b = blue_.at(x, y), a = alpha_.at(x, y);
-        if (key.shading == Shading::Perspective || key.fog != FogMode::Off) {
+        if (key.shading == Shading::Perspective || key.fog != FogMode::Off || textured) {
             const Float w = L::div(L::floats(1.0f), invW_.at(x, y));
             if (key.shading == Shading::Perspective) r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
+            // The texture environment, first.
+            if (textured) {
+                Float texel[4], c[4] = {r, g, b, a};
+                texture_.sample(key, x, y, w, live, texel);
+                applyTextureEnv<L>(key, texel, texture_.envColor(), c);
+                r = c[0], g = c[1], b = c[2], a = c[3];
+            }
             // Fog, after the texture environment: alpha keeps its value.
             if (key.fog != FogMode::Off) {
                 const Float f = fog_.factor(key.fog, L::mul(fogCoord_.at(x, y), w));
@@ -73,6 +82,7 @@ private:
     PlaneLanes<L> fogCoord_;
     FogLanes<L> fog_;
     Float depthOffset_;
+    TextureLanes<L> texture_;
 };
 
 // Lanes on consecutive pixels of a row: lane i is pixel first + i of the buffers. A whole
@@ -121,7 +131,7 @@ template <class L, class Block>
                                                typename L::Float x, typename L::Float y, typename L::Mask covered,
                                                const Block& block, const PixelBuffers& buffers) {
     typename L::Mask live = covered;
-    // Texture environment (issue 16), then fog (FragmentLanes::rgba): they make the colour,
+    // Texture environment, then fog (FragmentLanes::rgba): they make the colour,
     // computed below; the alpha test needs it here, before the tests.
     // Scissor (issue 16): a rectangle, cut from coverage before the stage where it can be.
     // Alpha test, then the stencil test (issue 16).
@@ -132,7 +142,7 @@ template <class L, class Block>
     }
     // Stencil operations on depth pass and fail (issue 16).
     if (L::none(live)) return live;
-    const typename L::Int rgba = in.rgba(key, x, y);
+    const typename L::Int rgba = in.rgba(key, x, y, live);
     // Blending, the logic op, the colour mask (issue 16): here, reading the stored colour.
     block.store(buffers.color, live, rgba);
     return live;

@@ -25,7 +25,9 @@ EdgeFunction::EdgeFunction(const FixedPoint& a, const FixedPoint& b) {
 
 FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods) {
     FragmentKey key = fragmentKey(state);
-    if (methods.hiddenSurface == HiddenSurface::PaintersSort) key = makeFragmentKey(key.shading, false, {}, false);
+    if (methods.hiddenSurface == HiddenSurface::PaintersSort) {
+        key = withTexture(makeFragmentKey(key.shading, false, {}, false), state.texture);
+    }
     key.depthOffset = key.depthTest && state.polygonOffset.fill;
     if (key.shading == Shading::Perspective && methods.interpolation == Interpolation::ScreenLinear) {
         key.shading = Shading::Linear;
@@ -63,7 +65,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
         in.setFlatColor(t.flatColor);
-        if (!key.depthTest && key.fog == FogMode::Off) return true;
+        if (!key.depthTest && key.fog == FogMode::Off && key.textureEnv == TextureEnv::Off) return true;
     }
     // The reference sets up planes only for triangles counter-clockwise in its y-down view; one
     // clockwise in GL's window (area > 0 here) is set up as (v1, v0, v2), keeping the provoking
@@ -89,6 +91,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         in.invW = planes.plane(v0.invW, v1.invW, v2.invW);
         in.fogCoord = planes.plane(v0.fogCoord * v0.invW, v1.fogCoord * v1.invW, v2.fogCoord * v2.invW);
     }
+    if (key.textureEnv != TextureEnv::Off) in.setTexture(fragments.texture, fragments.textureEnvColor, planes, v0, v1, v2);
     return true;
 }
 

@@ -48,6 +48,12 @@ struct Avx2Lanes {
     static Int mul(Int a, Int b) { return _mm256_mullo_epi32(a, b); }
     static Int bitAnd(Int a, Int b) { return _mm256_and_si256(a, b); }
     static Int bitOr(Int a, Int b) { return _mm256_or_si256(a, b); }
+    static Int minInt(Int a, Int b) { return _mm256_min_epi32(a, b); }
+    static Int maxInt(Int a, Int b) { return _mm256_max_epi32(a, b); }
+    template <int N>
+    static Int shiftRightSigned(Int v) { return _mm256_srai_epi32(v, N); }
+    template <int N>
+    static Int shiftRightUnsigned(Int v) { return _mm256_srli_epi32(v, N); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }
     static Int shiftRight(Int v, int n) { return _mm256_srl_epi32(v, _mm_cvtsi32_si128(n)); }

@@ -45,11 +45,18 @@ struct Avx512Lanes {
     static Int mul(Int a, Int b) { return _mm512_mullo_epi32(a, b); }
     static Int bitAnd(Int a, Int b) { return _mm512_and_epi32(a, b); }
     static Int bitOr(Int a, Int b) { return _mm512_or_epi32(a, b); }
+    static Int minInt(Int a, Int b) { return _mm512_min_epi32(a, b); }
+    static Int maxInt(Int a, Int b) { return _mm512_max_epi32(a, b); }
+    template <int N>
+    static Int shiftRightSigned(Int v) { return _mm512_srai_epi32(v, N); }
+    template <int N>
+    static Int shiftRightUnsigned(Int v) { return _mm512_srli_epi32(v, N); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm512_slli_epi32(v, N); }
     static Int shiftRight(Int v, int n) { return _mm512_srl_epi32(v, _mm_cvtsi32_si128(n)); }
 
     static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }
+    static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
     static Mask notNegative(Int a) { return _mm512_cmpge_epi32_mask(a, _mm512_setzero_si512()); }
     static Mask lanesBetween(int first, int last) {
         const unsigned upTo = last >= 15 ? 0xFFFFu : last < 0 ? 0u : (2u << last) - 1;

@@ -45,6 +45,18 @@ struct ScalarLanes {
     static Float fromBits(Int v) { return std::bit_cast<Float>(v); }
 
     static Int add(Int a, Int b) { return a + b; }
+    // Texture sampling's integer steps (fragment_texture.h).
+    static Int sub(Int a, Int b) { return a - b; }
+    static Int mul(Int a, Int b) { return a * b; }
+    static Int minInt(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b) ? a : b; }
+    static Int maxInt(Int a, Int b) { return static_cast<std::int32_t>(a) > static_cast<std::int32_t>(b) ? a : b; }
+    template <int N>
+    static Int shiftRightSigned(Int v) { return static_cast<Int>(static_cast<std::int32_t>(v) >> N); }
+    template <int N>
+    static Int shiftRightUnsigned(Int v) { return v >> N; }
+    static Mask lessThan(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b); }
+    static Int select(Mask m, Int ifSet, Int ifClear) { return m ? ifSet : ifClear; }
+    static Int gather(const std::uint32_t* base, Int offset, Mask m) { return m ? base[offset] : 0; }
     static Int bitAnd(Int a, Int b) { return a & b; }
     static Int bitOr(Int a, Int b) { return a | b; }
     template <int N>

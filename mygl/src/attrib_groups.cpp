@@ -93,7 +93,7 @@ const AttribGroup kServerGroups[] = {
 };
 
 const AttribGroup kClientGroups[] = {
-    {GL_CLIENT_PIXEL_STORE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.packAlignment, s.unpackAlignment); }>},
+    {GL_CLIENT_PIXEL_STORE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.pack, s.unpack); }>},
     {GL_CLIENT_VERTEX_ARRAY_BIT, {}, saveFields<[](auto& s) { return std::tie(s.arrays); }>},
 };
 

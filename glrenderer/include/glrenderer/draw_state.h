@@ -6,6 +6,7 @@
 
 #include "glrenderer/fog.h"
 #include "glrenderer/polygon_offset.h"
+#include "glrenderer/texture.h"
 
 namespace glrenderer {
 
@@ -65,6 +66,8 @@ struct DrawState {
     FogState fog;
     // Polygon offset (issue 16).
     PolygonOffset polygonOffset;
+    // Texturing (issue 16): env Off when disabled.
+    TextureState texture;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }
