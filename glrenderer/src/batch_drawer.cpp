@@ -19,7 +19,7 @@ void BatchDrawer::flush() {
 
 void BatchDrawer::keepTexture(const TextureState& texture) {
     if (texture.env == TextureEnv::Off) return;
-    if (texturesInUse_.empty() || texturesInUse_.back() != texture.image) texturesInUse_.push_back(texture.image);
+    if (texturesInUse_.empty() || texturesInUse_.back() != texture.texture) texturesInUse_.push_back(texture.texture);
 }
 
 void BatchDrawer::draw(const SubmittedBatch& submitted) {

@@ -74,7 +74,7 @@ private:
     bool paintersSort_ = false;  // of the last batch drawn: how its tiles order triangles
     HitRange hits_;
     // The textures queued triangles read, released when the tiles are drawn.
-    std::vector<std::shared_ptr<const TextureImage>> texturesInUse_;
+    std::vector<std::shared_ptr<const Texture>> texturesInUse_;
 };
 
 }  // namespace glrenderer

@@ -61,7 +61,7 @@ struct FragmentInputs {
     // Texturing (issue 16), with a key that has it: planes of s, t and q divided by w (invW is
     // set too) and the draw's texture.
     AttributePlane texCoord[3];
-    const TextureImage* texture = nullptr;
+    const Texture* texture = nullptr;
     glm::vec4 textureEnvColor{0.0f};
     // The path's key and routine, as two fields so that the flat colour packs between them.
     FragmentKey key;
@@ -71,7 +71,7 @@ struct FragmentInputs {
     // The texture planes of s, t and q through `planes` (a PlaneBuilder or a line's), each
     // coordinate divided by w as a perspective colour is, with the plane of 1 / w.
     template <class Planes, class... Vertices>
-    void setTexture(const TextureImage* image, const glm::vec4& envColor, const Planes& planes, const Vertices&... v);
+    void setTexture(const Texture* image, const glm::vec4& envColor, const Planes& planes, const Vertices&... v);
 
     // The colour of a flat primitive: its word, and with fog its constant planes.
     void setFlatColor(const glm::vec4& color);
@@ -91,7 +91,7 @@ struct FragmentInputs {
 namespace glrenderer {
 
 template <class Planes, class... Vertices>
-void FragmentInputs::setTexture(const TextureImage* image, const glm::vec4& envColor, const Planes& planes,
+void FragmentInputs::setTexture(const Texture* image, const glm::vec4& envColor, const Planes& planes,
                                 const Vertices&... v) {
     texture = image;
     textureEnvColor = envColor;

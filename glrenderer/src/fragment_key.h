@@ -34,12 +34,14 @@ struct FragmentKey {
     // Then blending (equation, factors), the logic op and the colour and depth masks.
 
     // Texturing (issue 16), first in the stage's order but kept here, apart: the environment
-    // (Off without a texture), what the texture's format holds, its filter and wraps. The
+    // (Off without a texture), what the texture's format holds, its filters and wraps. The
     // texture coordinates are interpolated with perspective, whatever the shading
     // (FragmentInputs::texCoord).
     TextureEnv textureEnv = TextureEnv::Off;
+    bool texture1D = false;
     TextureBase textureBase = TextureBase::Rgba;
-    TextureFilter textureFilter = TextureFilter::Nearest;
+    TextureFilter minFilter = TextureFilter::Nearest, magFilter = TextureFilter::Nearest;
+    MipmapFilter mipFilter = MipmapFilter::None;
     TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
 
     bool operator==(const FragmentKey&) const = default;
@@ -58,19 +60,21 @@ constexpr FragmentKey withFog(FragmentKey key, FogMode mode) {
 }
 
 // `key` with texturing as `texture` makes it (none when its env is Off).
-inline FragmentKey withTexture(FragmentKey key, const TextureState& texture) {
-    if (texture.env == TextureEnv::Off) {
-        const FragmentKey untextured;
-        key.textureEnv = untextured.textureEnv, key.textureBase = untextured.textureBase;
-        key.textureFilter = untextured.textureFilter, key.wrapS = untextured.wrapS, key.wrapT = untextured.wrapT;
-        return key;
-    }
-    key.textureEnv = texture.env;
-    key.textureBase = texture.base;
-    key.textureFilter = texture.filter;
-    key.wrapS = texture.wrapS;
-    key.wrapT = texture.wrapT;
+constexpr FragmentKey withTexture(FragmentKey key, TextureEnv env, bool oneDimensional, TextureBase base,
+                                  TextureFilter minFilter, TextureFilter magFilter, MipmapFilter mipFilter,
+                                  TextureWrap wrapS, TextureWrap wrapT) {
+    key.textureEnv = env, key.texture1D = oneDimensional, key.textureBase = base;
+    key.minFilter = minFilter, key.magFilter = magFilter, key.mipFilter = mipFilter;
+    key.wrapS = wrapS, key.wrapT = wrapT;
     return key;
+}
+inline FragmentKey withTexture(FragmentKey key, const TextureState& t) {
+    if (t.env == TextureEnv::Off) {
+        const FragmentKey u;  // untextured
+        return withTexture(key, u.textureEnv, u.texture1D, u.textureBase, u.minFilter, u.magFilter, u.mipFilter, u.wrapS,
+                           u.wrapT);
+    }
+    return withTexture(key, t.env, t.oneDimensional, t.base, t.minFilter, t.magFilter, t.mipFilter, t.wrapS, t.wrapT);
 }
 
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).

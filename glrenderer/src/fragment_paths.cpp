@@ -17,7 +17,7 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, cons
     : FragmentChoice(paths, key) {
     fog = state.fog;
     polygonOffset = state.polygonOffset;
-    texture = state.texture.image.get();
+    texture = state.texture.texture.get();
     textureEnvColor = state.texture.envColor;
 }
 

@@ -83,7 +83,7 @@ struct FragmentChoice {
     PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
     // The draw's texture (kept alive by the batch drawer until its triangles are drawn) and
     // environment colour, when the key has texturing.
-    const TextureImage* texture = nullptr;
+    const Texture* texture = nullptr;
     glm::vec4 textureEnvColor{0.0f};
 };
 

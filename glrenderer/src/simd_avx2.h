@@ -40,6 +40,7 @@ struct Avx2Lanes {
     static Float max(Float a, Float b) { return _mm256_max_ps(a, b); }
     static Float toFloat(Int v) { return _mm256_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm256_cvtps_epi32(v); }
+    static Int truncateToInt(Float v) { return _mm256_cvttps_epi32(v); }
     static Int bitsOf(Float v) { return _mm256_castps_si256(v); }
     static Float fromBits(Int v) { return _mm256_castsi256_ps(v); }
 
@@ -98,6 +99,7 @@ struct Avx2Lanes {
     }
     static void storeWhole(std::uint32_t* pixels, Int v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(pixels), v); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return _mm256_blendv_epi8(ifClear, ifSet, m); }
+    static Mask greaterThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_GT_OQ)); }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
         return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), offsets, m, 4);

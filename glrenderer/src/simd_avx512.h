@@ -37,6 +37,7 @@ struct Avx512Lanes {
     static Float max(Float a, Float b) { return _mm512_max_ps(a, b); }
     static Float toFloat(Int v) { return _mm512_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm512_cvtps_epi32(v); }
+    static Int truncateToInt(Float v) { return _mm512_cvttps_epi32(v); }
     static Int bitsOf(Float v) { return _mm512_castps_si512(v); }
     static Float fromBits(Int v) { return _mm512_castsi512_ps(v); }
 
@@ -57,6 +58,7 @@ struct Avx512Lanes {
 
     static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
+    static Mask greaterThan(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
     static Mask notNegative(Int a) { return _mm512_cmpge_epi32_mask(a, _mm512_setzero_si512()); }
     static Mask lanesBetween(int first, int last) {
         const unsigned upTo = last >= 15 ? 0xFFFFu : last < 0 ? 0u : (2u << last) - 1;

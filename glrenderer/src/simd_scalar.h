@@ -41,6 +41,10 @@ struct ScalarLanes {
     static Float max(Float a, Float b) { return a > b ? a : b; }
     static Float toFloat(Int v) { return static_cast<Float>(static_cast<std::int32_t>(v)); }
     static Int roundToInt(Float v) { return static_cast<Int>(roundToEven(v)); }  // |v| < 2^31
+    // Towards zero, as cvttps2dq: NaN and values out of range give INT_MIN.
+    static Int truncateToInt(Float v) {
+        return std::isfinite(v) && std::fabs(v) < 2147483648.0f ? static_cast<Int>(static_cast<std::int32_t>(v)) : 0x80000000u;
+    }
     static Int bitsOf(Float v) { return std::bit_cast<Int>(v); }
     static Float fromBits(Int v) { return std::bit_cast<Float>(v); }
 
@@ -56,6 +60,7 @@ struct ScalarLanes {
     static Int shiftRightUnsigned(Int v) { return v >> N; }
     static Mask lessThan(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return m ? ifSet : ifClear; }
+    static Mask greaterThan(Float a, Float b) { return a > b; }
     static Int gather(const std::uint32_t* base, Int offset, Mask m) { return m ? base[offset] : 0; }
     static Int bitAnd(Int a, Int b) { return a & b; }
     static Int bitOr(Int a, Int b) { return a | b; }

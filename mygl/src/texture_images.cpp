@@ -1,6 +1,7 @@
 #include "texture_images.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace mygl {
@@ -55,17 +56,30 @@ std::vector<std::uint32_t> textureTexels(const std::vector<glm::vec4>& rgba, Tex
     return texels;
 }
 
-std::shared_ptr<const glrenderer::TextureImage> withSubImage(const glrenderer::TextureImage& image, int x, int y,
-                                                              int width, int height,
-                                                              const std::vector<glm::vec4>& rgba, TextureBase base) {
-    auto copy = std::make_shared<glrenderer::TextureImage>(image);
+void writeSubImage(TextureLevel& level, int x, int y, int width, int height, const std::vector<glm::vec4>& rgba) {
     for (int row = 0; row < height; ++row) {
         for (int column = 0; column < width; ++column) {
             const glm::vec4& c = rgba[static_cast<std::size_t>(row * width + column)];
-            copy->texels[static_cast<std::size_t>((y + row) * image.width + x + column)] = texel(c, base);
+            level.texels[static_cast<std::size_t>((y + row) * level.imageWidth + x + column)] = texel(c, level.base);
         }
     }
-    return copy;
+}
+
+std::shared_ptr<const glrenderer::Texture> textureSnapshot(std::span<const TextureLevel> levels) {
+    auto texture = std::make_shared<glrenderer::Texture>();
+    texture->levelCount = static_cast<int>(levels.size());
+    std::size_t total = 0;
+    for (const TextureLevel& l : levels) total += l.texels.size();
+    texture->texels.reserve(total);
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        texture->width[i] = static_cast<std::uint32_t>(levels[i].imageWidth);
+        texture->height[i] = static_cast<std::uint32_t>(levels[i].imageHeight);
+        texture->offset[i] = static_cast<std::uint32_t>(texture->texels.size());
+        texture->texels.insert(texture->texels.end(), levels[i].texels.begin(), levels[i].texels.end());
+    }
+    texture->powerOfTwoWidth = std::has_single_bit(texture->width[0]);
+    texture->powerOfTwoHeight = std::has_single_bit(texture->height[0]);
+    return texture;
 }
 
 }  // namespace mygl

@@ -2,6 +2,7 @@
 // Texture images: converting unpacked RGBA colours into a level's texels, and the checks
 // glTexImage and glTexSubImage share (texture_images.cpp).
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -18,11 +19,10 @@ std::optional<glrenderer::TextureBase> textureBaseOf(GLint internalFormat);
 // channel rounded to nearest even of c * 255).
 std::vector<std::uint32_t> textureTexels(const std::vector<glm::vec4>& rgba, glrenderer::TextureBase base);
 
-// glTexSubImage's rectangle of `rgba` (width x height) written into a copy of `image` at
-// (x, y): the batches that read the old image keep it.
-std::shared_ptr<const glrenderer::TextureImage> withSubImage(const glrenderer::TextureImage& image, int x, int y,
-                                                              int width, int height,
-                                                              const std::vector<glm::vec4>& rgba,
-                                                              glrenderer::TextureBase base);
+// glTexSubImage's rectangle of `rgba` (width x height) written into the level's image at (x, y).
+void writeSubImage(TextureLevel& level, int x, int y, int width, int height, const std::vector<glm::vec4>& rgba);
+
+// The pipeline's texture of levels [0, levelCount) of `levels` (defined, each half the one before).
+std::shared_ptr<const glrenderer::Texture> textureSnapshot(std::span<const TextureLevel> levels);
 
 }  // namespace mygl

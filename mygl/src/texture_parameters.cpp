@@ -6,6 +6,7 @@
 
 #include "compiled.h"
 #include "pixel_pack.h"
+#include "texture_images.h"
 #include "textures.h"
 
 namespace mygl {
@@ -15,21 +16,23 @@ using glrenderer::TextureBase;
 
 bool isMipmapFilter(GLenum filter) { return filter != GL_NEAREST && filter != GL_LINEAR; }
 
-// Whether a texture can be sampled: level 0 defined and, with a mipmap filter, every level
-// down to 1 x 1, each half the one above in the same internal format.
-bool isComplete(const TextureObject& t) {
+// How many levels a texture samples: 1 without a mipmap filter, else every level down to
+// 1 x 1, each half the one above in the same internal format; 0 when they are not all there
+// (the texture is incomplete: texturing is off).
+std::size_t sampledLevels(const TextureObject& t) {
     const TextureLevel& base = t.levels[0];
-    if (!base.image || base.image->width == 0 || base.image->height == 0) return false;
-    if (!isMipmapFilter(t.minFilter)) return true;
-    int width = base.image->width, height = base.image->height;
-    for (std::size_t level = 1; width > 1 || height > 1; ++level) {
+    if (!base.defined || base.imageWidth == 0 || base.imageHeight == 0) return 0;
+    if (!isMipmapFilter(t.minFilter)) return 1;
+    int width = base.imageWidth, height = base.imageHeight;
+    std::size_t level = 1;
+    for (; width > 1 || height > 1; ++level) {
         width = std::max(width / 2, 1), height = std::max(height / 2, 1);
         const TextureLevel& l = t.levels[level];
-        if (!l.image || l.image->width != width || l.image->height != height || l.internalFormat != base.internalFormat) {
-            return false;
+        if (!l.defined || l.imageWidth != width || l.imageHeight != height || l.internalFormat != base.internalFormat) {
+            return 0;
         }
     }
-    return true;
+    return level;
 }
 
 glrenderer::TextureEnv envOf(GLenum mode) {
@@ -221,8 +224,8 @@ void getTexImage(GLenum target, GLint level, GLenum format, GLenum type, void* p
         return setError(*s, GL_INVALID_OPERATION);
     }
     const TextureLevel& l = boundTexture(s->textures, target).levels[static_cast<std::size_t>(level)];
-    if (!l.image || !pixels) return;
-    packTexels(l.image->texels, l.image->width, l.image->height, l.base, format, type, s->pack, pixels);
+    if (!l.defined || !pixels) return;
+    packTexels(l.texels, l.imageWidth, l.imageHeight, l.base, format, type, s->pack, pixels);
 }
 
 const EntryPoint kEntryPoints[] = {
@@ -260,23 +263,37 @@ const EntryPoint kEntryPoints[] = {
 }  // namespace
 
 void updateTexturing(Context::State& s) {
-    const TextureUnit& unit = s.textures;
+    TextureUnit& unit = s.textures;
     glrenderer::TextureState next;
-    const TextureObject* t = unit.enabled2D ? &boundTexture(unit, GL_TEXTURE_2D)
-                           : unit.enabled1D ? &boundTexture(unit, GL_TEXTURE_1D)
-                                            : nullptr;
-    if (t && isComplete(*t)) {
-        const TextureLevel& level = t->levels[0];
+    TextureObject* t = unit.enabled2D ? &boundTexture(unit, GL_TEXTURE_2D)
+                     : unit.enabled1D ? &boundTexture(unit, GL_TEXTURE_1D)
+                                      : nullptr;
+    const std::size_t levels = t ? sampledLevels(*t) : 0;
+    if (levels > 0) {
+        if (!t->snapshot || t->snapshot->levelCount != static_cast<int>(levels)) {
+            t->snapshot = textureSnapshot(std::span<const TextureLevel>(t->levels.data(), levels));
+        }
+        using glrenderer::MipmapFilter;
+        using glrenderer::TextureFilter;
+        const GLenum min = t->minFilter;
         next.env = envOf(unit.envMode);
-        next.base = level.base;
-        // One image for now: the magnification filter for both (docs/reference-rules.md, Textures).
-        next.filter = t->magFilter == GL_LINEAR ? glrenderer::TextureFilter::Linear : glrenderer::TextureFilter::Nearest;
+        next.oneDimensional = !unit.enabled2D;
+        next.base = t->levels[0].base;
+        next.minFilter = min == GL_NEAREST || min == GL_NEAREST_MIPMAP_NEAREST || min == GL_NEAREST_MIPMAP_LINEAR
+                             ? TextureFilter::Nearest
+                             : TextureFilter::Linear;
+        next.magFilter = t->magFilter == GL_LINEAR ? TextureFilter::Linear : TextureFilter::Nearest;
+        next.mipFilter = !isMipmapFilter(min) ? MipmapFilter::None
+                       : min == GL_NEAREST_MIPMAP_NEAREST || min == GL_LINEAR_MIPMAP_NEAREST ? MipmapFilter::Nearest
+                                                                                             : MipmapFilter::Linear;
+        // GL_CLAMP as GL_CLAMP_TO_EDGE: the same under NEAREST; its border under LINEAR is not
+        // reproduced (tests/conformance/expected_differences.txt).
         next.wrapS = t->wrapS == GL_REPEAT ? glrenderer::TextureWrap::Repeat : glrenderer::TextureWrap::ClampToEdge;
         next.wrapT = t->wrapT == GL_REPEAT ? glrenderer::TextureWrap::Repeat : glrenderer::TextureWrap::ClampToEdge;
         next.envColor = unit.envColor;
         next.matrix = s.texture.top().matrix();
         next.identityMatrix = next.matrix == kIdentity;
-        next.image = level.image;
+        next.texture = t->snapshot;
     }
     if (!(next == s.draw.texture)) s.draw.texture = std::move(next);
 }

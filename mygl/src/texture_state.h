@@ -20,14 +20,15 @@ namespace mygl {
 inline constexpr int kMaxTextureLevels = 15;
 inline constexpr int kMaxTextureSize = 1 << (kMaxTextureLevels - 1);
 
-// One mipmap level: its size as given (border stripped, as the reference stores it), its
-// internal format and its texels, shared with the batches that read them (replaced, never
-// changed, when the level is written again).
+// One mipmap level: its size as given, its internal format and its image (border stripped,
+// as the reference stores it), in RGBA8 texels (glrenderer::Texture).
 struct TextureLevel {
     int width = 0, height = 0, border = 0;
     GLint internalFormat = 1;
     glrenderer::TextureBase base = glrenderer::TextureBase::Rgba;
-    std::shared_ptr<const glrenderer::TextureImage> image;  // null while undefined
+    bool defined = false;
+    int imageWidth = 0, imageHeight = 0;
+    std::vector<std::uint32_t> texels;
 };
 
 struct TextureObject {
@@ -39,6 +40,9 @@ struct TextureObject {
     GLenum wrapS = GL_REPEAT, wrapT = GL_REPEAT;
     glm::vec4 borderColor{0.0f};
     float priority = 1.0f;
+    // The images as the pipeline samples them, made again after any of them changes (null
+    // then): queued batches keep the one they read.
+    std::shared_ptr<const glrenderer::Texture> snapshot;
 };
 
 // The one texture unit of GL 1.1.

@@ -13,8 +13,6 @@
 namespace mygl {
 namespace {
 
-using glrenderer::TextureImage;
-
 bool isTarget(GLenum target, int dims) {
     return dims == 1 ? target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D
                      : target == GL_TEXTURE_2D || target == GL_PROXY_TEXTURE_2D;
@@ -37,20 +35,19 @@ void defineLevel(TextureLevel& level, int width, int height, int border, GLint i
     level.width = width, level.height = height, level.border = border;
     level.internalFormat = internalFormat;
     level.base = base;
-    auto image = std::make_shared<TextureImage>();
-    image->width = width - 2 * border;
-    image->height = std::max(height - 2 * border, 1);  // a 1D texture's one row
+    level.defined = true;
+    level.imageWidth = width - 2 * border;
+    level.imageHeight = std::max(height - 2 * border, 1);  // a 1D texture's one row
     std::vector<glm::vec4> inner;
     if (border == 0) {
         inner = rgba;
     } else {
-        inner.reserve(static_cast<std::size_t>(image->width) * static_cast<std::size_t>(image->height));
+        inner.reserve(static_cast<std::size_t>(level.imageWidth) * static_cast<std::size_t>(level.imageHeight));
         for (int y = height > 1 ? border : 0; y < (height > 1 ? height - border : 1); ++y) {
             for (int x = border; x < width - border; ++x) inner.push_back(rgba[static_cast<std::size_t>(y * width + x)]);
         }
     }
-    image->texels = textureTexels(inner, base);
-    level.image = std::move(image);
+    level.texels = textureTexels(inner, base);
 }
 
 // The checks of glTexImage before the data is read; GL_NO_ERROR when the call may proceed.
@@ -78,6 +75,7 @@ void texImage(GLenum target, GLint level, GLint internalFormat, GLsizei width, G
         return;
     }
     defineLevel(defined, width, height, border, internalFormat, rgba);
+    texture.snapshot.reset();
 }
 
 // glTexImage1D/2D: checks, then the pixels unpacked now (as the reference does when it compiles
@@ -109,7 +107,8 @@ void texSubImage(GLenum target, int dims, GLint level, GLint x, GLint y, GLsizei
                  const std::vector<glm::vec4>& rgba) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    TextureLevel& defined = boundTexture(s->textures, target).levels[static_cast<std::size_t>(level)];
+    TextureObject& texture = boundTexture(s->textures, target);
+    TextureLevel& defined = texture.levels[static_cast<std::size_t>(level)];
     const int b = defined.border;
     if (x < -b || y < -b || width < 0 || height < 0 || x + width > defined.width - b ||
         (dims == 2 && y + height > defined.height - b)) {
@@ -119,18 +118,19 @@ void texSubImage(GLenum target, int dims, GLint level, GLint x, GLint y, GLsizei
     // The border is not stored: only the rectangle's part inside the image is written.
     std::vector<glm::vec4> inner;
     const int x0 = std::max(x, 0), y0 = std::max(y, 0);
-    const int x1 = std::min(x + width, defined.image->width), y1 = std::min(y + height, defined.image->height);
+    const int x1 = std::min(x + width, defined.imageWidth), y1 = std::min(y + height, defined.imageHeight);
     if (x0 >= x1 || y0 >= y1) return;
     for (int row = y0; row < y1; ++row) {
         for (int column = x0; column < x1; ++column) inner.push_back(rgba[static_cast<std::size_t>((row - y) * width + column - x)]);
     }
-    defined.image = withSubImage(*defined.image, x0, y0, x1 - x0, y1 - y0, inner, defined.base);
+    writeSubImage(defined, x0, y0, x1 - x0, y1 - y0, inner);
+    texture.snapshot.reset();  // batches queued with the old images keep them
 }
 
 GLenum texSubImageError(Context::State& s, GLenum target, int dims, GLint level, GLenum format, GLenum type) {
     if (!isTarget(target, dims) || isProxy(target)) return GL_INVALID_ENUM;
     if (level < 0 || level >= kMaxTextureLevels) return GL_INVALID_VALUE;
-    if (!boundTexture(s.textures, target).levels[static_cast<std::size_t>(level)].image) return GL_INVALID_OPERATION;
+    if (!boundTexture(s.textures, target).levels[static_cast<std::size_t>(level)].defined) return GL_INVALID_OPERATION;
     return pixelFormatError(format, type);
 }
 

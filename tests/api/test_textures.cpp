@@ -6,6 +6,7 @@
 #include <glad/gl.h>
 
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -156,6 +157,67 @@ TEST(Textures, NonPowerOfTwoSizes) {
         for (const GLenum wrap : {GLenum{GL_REPEAT}, GLenum{kClampToEdge}}) {
             expectIdentical({filter, filter, wrap, GL_MODULATE, GL_RGBA, GL_RGBA, 4, 5, 7});
             expectIdentical({filter, filter, wrap, GL_REPLACE, GL_RGB, GL_RGB, 3, 12, 3});
+        }
+    }
+}
+
+// A long floor going away from the viewer (minified more and more) with a mipmapped texture,
+// every level given, each level's pattern different so that the chosen level shows.
+Frame drawMipmappedFloor(GLenum minFilter, GLenum magFilter, GLenum wrap, int size, float repeat) {
+    glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 60.0);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    GLuint name = 0;
+    glGenTextures(1, &name);
+    glBindTexture(GL_TEXTURE_2D, name);
+    for (int level = 0, side = size; side >= 1; ++level, side /= 2) {
+        std::vector<GLubyte> texels = pattern(side, side, 4);
+        for (std::size_t i = 0; i < texels.size(); i += 4) texels[i + 2] = static_cast<GLubyte>(40 * level);
+        glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, side, side, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+    glEnable(GL_TEXTURE_2D);
+    glColor3f(1.0f, 1.0f, 1.0f);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0.0f, 0.0f);
+    glVertex3f(-3.0f, -1.0f, -1.2f);
+    glTexCoord2f(repeat, 0.0f);
+    glVertex3f(3.0f, -1.0f, -1.2f);
+    glTexCoord2f(repeat, repeat * 4.0f);
+    glVertex3f(3.0f, -1.0f, -50.0f);
+    glTexCoord2f(0.0f, repeat * 4.0f);
+    glVertex3f(-3.0f, -1.0f, -50.0f);
+    glEnd();
+    glDeleteTextures(1, &name);
+    return readFrame(kWidth, kHeight);
+}
+
+TEST(Textures, MipmappedFloorAcrossFilters) {
+    const GLenum minFilters[] = {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
+                                 GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
+    for (const GLenum minFilter : minFilters) {
+        for (const GLenum magFilter : {GL_NEAREST, GL_LINEAR}) {
+            for (const float repeat : {0.5f, 3.0f}) {
+                const auto frames = onBothBackends<Frame>(
+                    [&] { return drawMipmappedFloor(minFilter, magFilter, GL_REPEAT, 16, repeat); }, kWidth, kHeight);
+                const ColorDifference d = difference(frames.mygl, frames.osmesa);
+                // Each level has its own blue: minified mipmaps show several.
+                std::set<GLubyte> blues;
+                for (std::size_t p = 2; p < frames.osmesa.color.size(); p += 4) blues.insert(frames.osmesa.color[p]);
+                if (minFilter != GL_NEAREST && minFilter != GL_LINEAR) {
+                    EXPECT_GT(blues.size(), 4u);
+                }
+                EXPECT_EQ(d.pixels, 0) << "min " << minFilter << " mag " << magFilter << " repeat " << repeat
+                                       << ": max channel difference " << d.maxChannel;
+            }
         }
     }
 }
