@@ -45,7 +45,7 @@ Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& v
     texCoordinates_.clear();
     if (batch.state.texture.env != TextureEnv::Off) {
         texCoordinates_.resize(count);
-        textureCoordinates(batch.vertices, batch.state.texture, texCoordinates_);
+        textureCoordinates(batch.vertices, batch.state.texture, batch.transform.modelview, texCoordinates_);
         for (std::size_t i = 0; i < count; ++i) windowVertices_[i].texCoord = texCoordinates_[i];
     }
     const UserClipPlanes& user = batch.state.clipPlanes;

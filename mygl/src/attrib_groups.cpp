@@ -23,7 +23,7 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH,
     GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
     GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
+    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
     GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
     GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
     GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
@@ -41,7 +41,8 @@ constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE,          GL_POLYGON_OFF
                                            GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,      GL_POLYGON_STIPPLE};
 constexpr GLenum kScissorCapabilities[] = {GL_SCISSOR_TEST};
 constexpr GLenum kStencilCapabilities[] = {GL_STENCIL_TEST};
-constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D, GL_TEXTURE_2D};
+constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D,    GL_TEXTURE_2D,    GL_TEXTURE_GEN_S,
+                                           GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
 constexpr GLenum kEvalCapabilities[] = {
     GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
     GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
@@ -83,7 +84,12 @@ const AttribGroup kServerGroups[] = {
      }>},
     {GL_SCISSOR_BIT, kScissorCapabilities, nullptr},
     {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, nullptr},
-    {GL_TEXTURE_BIT, kTextureCapabilities, nullptr},
+    // (The bound textures' own parameters are not saved yet.)
+    {GL_TEXTURE_BIT, kTextureCapabilities, saveFields<[](auto& s) {
+         auto& t = s.textures;
+         return std::tie(t.bound1D, t.bound2D, t.envMode, t.envColor, t.gen.mode, t.gen.objectPlane, t.gen.eyePlane,
+                         t.genMode);
+     }>},
     {GL_TRANSFORM_BIT, kTransformCapabilities, saveFields<[](auto& s) { return std::tie(s.matrixMode, s.eyeClipPlanes); }>},
     {GL_VIEWPORT_BIT, {}, saveFields<[](auto& s) {
          return std::tie(s.draw.viewport, s.draw.depthNear, s.draw.depthFar);

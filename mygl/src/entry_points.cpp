@@ -19,7 +19,8 @@ const std::vector<EntryPoint>& implementedTable() {
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
                           clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
-                          polygonOffsetEntryPoints(), textureEntryPoints(), textureParameterEntryPoints()}) {
+                          polygonOffsetEntryPoints(), textureEntryPoints(), textureParameterEntryPoints(),
+                          textureGenEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

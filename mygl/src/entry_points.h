@@ -36,6 +36,7 @@ std::span<const EntryPoint> polygonOffsetEntryPoints();
 std::span<const EntryPoint> evaluatorEntryPoints();
 std::span<const EntryPoint> textureEntryPoints();
 std::span<const EntryPoint> textureParameterEntryPoints();
+std::span<const EntryPoint> textureGenEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.

@@ -145,6 +145,7 @@ Value query(const Context::State& s, GLenum name) {
         if (std::optional<std::vector<double>> fog = fogQuery(s, name)) return Value{*fog, name == GL_FOG_COLOR};
         if (const std::optional<bool> enabled = evaluatorCapability(s, name)) return flag(*enabled);
         if (const std::optional<bool> enabled = textureCapability(s, name)) return flag(*enabled);
+        if (const std::optional<bool> enabled = texGenCapability(s, name)) return flag(*enabled);
         if (std::optional<std::vector<double>> texture = textureQuery(s, name)) return Value{*texture};
         return {};
     }

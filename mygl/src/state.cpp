@@ -211,7 +211,7 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         setEvaluatorCapability(s, cap, enabled) || setPolygonOffsetCapability(s, cap, enabled)) {
         return true;
     }
-    if (setTextureCapability(s, cap, enabled)) return true;
+    if (setTextureCapability(s, cap, enabled) || setTexGenCapability(s, cap, enabled)) return true;
     if (cap == GL_FOG) {
         s.fog.enabled = enabled;
         updateFog(s);
@@ -232,6 +232,7 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (const std::optional<bool> plane = clipPlaneCapability(s, cap)) return *plane;
     if (cap == GL_FOG) return s.fog.enabled;
     if (const std::optional<bool> texture = textureCapability(s, cap)) return *texture;
+    if (const std::optional<bool> gen = texGenCapability(s, cap)) return *gen;
     if (const std::optional<bool> offset = polygonOffsetCapability(s, cap)) return *offset;
     if (const std::optional<bool> map = evaluatorCapability(s, cap)) return *map;
     if (!isInert(cap)) return std::nullopt;

@@ -179,7 +179,7 @@ double componentBits(const TextureLevel& level, GLenum name) {
 template <class T>
 void getTexLevelParameter(GLenum target, GLint level, GLenum name, T* out) {
     Context::State* s = stateOutsideBeginEnd();
-    if (!s || !out) return;
+    if (!s) return;
     if (!isTextureTarget(target) && target != GL_PROXY_TEXTURE_1D && target != GL_PROXY_TEXTURE_2D) {
         return setError(*s, GL_INVALID_ENUM);
     }
@@ -198,7 +198,7 @@ void getTexLevelParameter(GLenum target, GLint level, GLenum name, T* out) {
         break;
     default: return setError(*s, GL_INVALID_ENUM);
     }
-    answer(a, out);
+    if (out) answer(a, out);
 }
 
 template <class T>
@@ -291,6 +291,14 @@ void updateTexturing(Context::State& s) {
         next.wrapS = t->wrapS == GL_REPEAT ? glrenderer::TextureWrap::Repeat : glrenderer::TextureWrap::ClampToEdge;
         next.wrapT = t->wrapT == GL_REPEAT ? glrenderer::TextureWrap::Repeat : glrenderer::TextureWrap::ClampToEdge;
         next.envColor = unit.envColor;
+        next.gen = unit.gen;
+        const bool sphere = ((unit.gen.enabled & 1u) && unit.genMode[0] == GL_SPHERE_MAP) ||
+                            ((unit.gen.enabled & 2u) && unit.genMode[1] == GL_SPHERE_MAP);
+        if (sphere) {  // SPHERE_MAP's eye normals
+            s.modelview.top().settleKind();
+            next.gen.inverseModelview = s.modelview.top().inverse();
+            next.gen.normalize = s.lighting.normalize;
+        }
         next.matrix = s.texture.top().matrix();
         next.identityMatrix = next.matrix == kIdentity;
         next.texture = t->snapshot;

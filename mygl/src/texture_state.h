@@ -45,6 +45,14 @@ struct TextureObject {
     std::shared_ptr<const glrenderer::Texture> snapshot;
 };
 
+// GL's initial planes: S takes x, T takes y, R and Q nothing.
+inline glrenderer::TextureGen defaultTextureGen() {
+    glrenderer::TextureGen gen;
+    gen.objectPlane[0] = gen.eyePlane[0] = {1, 0, 0, 0};
+    gen.objectPlane[1] = gen.eyePlane[1] = {0, 1, 0, 0};
+    return gen;
+}
+
 // The one texture unit of GL 1.1.
 struct TextureUnit {
     std::map<GLuint, TextureObject> objects;  // the named ones; name 0 is each target's default
@@ -53,6 +61,10 @@ struct TextureUnit {
     bool enabled1D = false, enabled2D = false;
     GLenum envMode = GL_MODULATE;
     glm::vec4 envColor{0.0f};
+    // glTexGen per coordinate S, T, R, Q: the pipeline's planes and enables, and the modes as
+    // GL names them.
+    glrenderer::TextureGen gen = defaultTextureGen();
+    std::array<GLenum, 4> genMode{GL_EYE_LINEAR, GL_EYE_LINEAR, GL_EYE_LINEAR, GL_EYE_LINEAR};
     // Proxy textures keep only their levels' sizes and formats.
     TextureObject proxy1D{GL_PROXY_TEXTURE_1D}, proxy2D{GL_PROXY_TEXTURE_2D};
 };

@@ -22,7 +22,9 @@ std::optional<bool> textureCapability(const Context::State& state, GLenum cap);
 // glGet's values of the texture state (bindings, sizes), or nullopt for other names.
 std::optional<std::vector<double>> textureQuery(const Context::State& state, GLenum name);
 
-std::span<const EntryPoint> textureEntryPoints();
-std::span<const EntryPoint> textureParameterEntryPoints();
+// The same for GL_TEXTURE_GEN_S/T/R/Q (texture_gen.cpp).
+bool setTexGenCapability(Context::State& state, GLenum cap, bool enabled);
+std::optional<bool> texGenCapability(const Context::State& state, GLenum cap);
+
 
 }  // namespace mygl

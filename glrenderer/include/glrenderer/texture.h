@@ -36,6 +36,19 @@ struct Texture {
     std::vector<std::uint32_t> texels;
 };
 
+// glTexGen: which of S, T, R, Q (bits 0-3) are generated, and how.
+enum class TexGenMode : std::uint8_t { ObjectLinear, EyeLinear, SphereMap };
+struct TextureGen {
+    std::uint8_t enabled = 0;
+    std::array<TexGenMode, 4> mode{TexGenMode::EyeLinear, TexGenMode::EyeLinear, TexGenMode::EyeLinear,
+                                   TexGenMode::EyeLinear};
+    std::array<glm::vec4, 4> objectPlane{}, eyePlane{};  // eye planes as stored: times the inverse modelview
+    // For SPHERE_MAP: the inverse modelview (eye normals) and whether normals are normalized.
+    Matrix inverseModelview = kIdentity;
+    bool normalize = false;
+    bool operator==(const TextureGen&) const = default;
+};
+
 // What a draw samples and how; the image is shared, never changed once made.
 struct TextureState {
     TextureEnv env = TextureEnv::Off;
@@ -45,6 +58,7 @@ struct TextureState {
     MipmapFilter mipFilter = MipmapFilter::None;
     TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
     glm::vec4 envColor{0.0f};  // GL_TEXTURE_ENV_COLOR, clamped
+    TextureGen gen;
     Matrix matrix = kIdentity;  // the texture matrix
     bool identityMatrix = true;
     std::shared_ptr<const Texture> texture;
