@@ -27,7 +27,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears",
-                               "bench-gears-lists", "bench-mesh", "bench-lit-torus", "bench-fog-terrain"};
+                               "bench-gears-lists", "bench-mesh", "bench-lit-torus", "bench-fog-terrain",
+                               "bench-textured-cubes"};
 
 struct Variant {
     std::string name;

@@ -11,6 +11,7 @@ void drawBenchGears(int width, int height, int frame);  // three gears: flat-sha
 void drawBenchGearsLists(int width, int height, int frame);  // the same gears from display lists
 void drawBenchMesh(int width, int height, int frame);   // a 100k-triangle mesh through glDrawElements
 void drawBenchLitTorus(int width, int height, int frame);  // 16k triangles lit by a spot and a directional light
-void drawBenchFogTerrain(int width, int height, int frame);  // the mesh's terrain under LINEAR fog
+void drawBenchFogTerrain(int width, int height, int frame);
+void drawBenchTexturedCubes(int width, int height, int frame);  // bench-cubes textured: mipmaps, LINEAR_MIPMAP_LINEAR  // the mesh's terrain under LINEAR fog
 
 }  // namespace scenes

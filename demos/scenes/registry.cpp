@@ -38,6 +38,8 @@ std::span<const Scene> allScenes() {
         {"bench-lit-torus", "benchmark: a 16k-triangle torus lit by a spot and a directional light, specular",
          drawBenchLitTorus},
         {"bench-fog-terrain", "benchmark: the 100k-triangle terrain under LINEAR fog, depth-tested", drawBenchFogTerrain},
+        {"bench-textured-cubes", "benchmark: the 1000 cubes textured (64x64 mipmaps, LINEAR_MIPMAP_LINEAR, MODULATE)",
+         drawBenchTexturedCubes},
     };
     return scenes;
 }

@@ -8,8 +8,8 @@
 namespace glrenderer {
 
 // The keys with fast paths of their own at every vector width: what scenes draw with nearly
-// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), and smooth
-// depth-tested LINEAR fog. Each is
+// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), smooth
+// depth-tested LINEAR fog and the common textures. Each is
 // compiled with its key as a constant, so that it holds only the steps the key turns on.
 inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false),
@@ -23,6 +23,17 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Perspective, true, CompareFunc::LessEqual, true),
     // A fogged landscape (bench-fog-terrain).
     withFog(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), FogMode::Linear),
+    // Textured, depth-tested: RGB(A) bricks, LINEAR_MIPMAP_LINEAR, MODULATE (bench-textured-cubes),
+    // and a NEAREST checkerboard.
+    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgb, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
+                TextureWrap::Repeat, TextureWrap::Repeat),
+    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgba, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
+                TextureWrap::Repeat, TextureWrap::Repeat),
+    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
+                TextureWrap::Repeat, TextureWrap::Repeat),
 };
 
 // The fragment routines of one vector width: a fast path per key of kFastFragmentKeys, and one

@@ -40,7 +40,11 @@ struct ScalarLanes {
     static Float min(Float a, Float b) { return a < b ? a : b; }
     static Float max(Float a, Float b) { return a > b ? a : b; }
     static Float toFloat(Int v) { return static_cast<Float>(static_cast<std::int32_t>(v)); }
-    static Int roundToInt(Float v) { return static_cast<Int>(roundToEven(v)); }  // |v| < 2^31
+    // As cvtps2dq: ties to even; NaN and values out of range give INT_MIN.
+    static Int roundToInt(Float v) {
+        if (!(std::fabs(v) < 2147483648.0f)) return 0x80000000u;
+        return static_cast<Int>(static_cast<std::int32_t>(roundToEven(v)));
+    }
     // Towards zero, as cvttps2dq: NaN and values out of range give INT_MIN.
     static Int truncateToInt(Float v) {
         return std::isfinite(v) && std::fabs(v) < 2147483648.0f ? static_cast<Int>(static_cast<std::int32_t>(v)) : 0x80000000u;
