@@ -18,14 +18,6 @@ typename L::Float unormToFloat(typename L::Int byte) {
     return L::mul(L::toFloat(byte), L::floats(1.0f / 255.0f));
 }
 
-// gallivm's lerp of 8-bit values with an 8-bit weight w (prescaled: 256 is one): a plus
-// (w * (b - a) + 128) >> 8, the rounding of SSSE3's pmulhrsw.
-template <class L>
-typename L::Int lerpUnorm8(typename L::Int w, typename L::Int a, typename L::Int b) {
-    const typename L::Int product = L::mul(w, L::sub(b, a));
-    return L::add(a, L::template shiftRightSigned<8>(L::add(product, L::ints(128))));
-}
-
 // Byte `Shift / 8` of each word.
 template <class L, int Shift>
 typename L::Int channel(typename L::Int word) {
@@ -33,13 +25,11 @@ typename L::Int channel(typename L::Int word) {
     else return L::bitAnd(L::template shiftRightUnsigned<Shift>(word), L::ints(0xFF));
 }
 
-// The four bytes of words a and b lerped with weights w.
+// The four bytes of words a and b lerped with weights w (0-255, 256 being one), as gallivm's
+// lerp of unorm8 values: a + ((w * (b - a) + 128) >> 8), the rounding of SSSE3's pmulhrsw.
 template <class L>
-typename L::Int lerpWords(typename L::Int w, typename L::Int a, typename L::Int b) {
-    return L::bitOr(L::bitOr(lerpUnorm8<L>(w, channel<L, 0>(a), channel<L, 0>(b)),
-                             L::template shiftLeft<8>(lerpUnorm8<L>(w, channel<L, 8>(a), channel<L, 8>(b)))),
-                    L::bitOr(L::template shiftLeft<16>(lerpUnorm8<L>(w, channel<L, 16>(a), channel<L, 16>(b))),
-                             L::template shiftLeft<24>(lerpUnorm8<L>(w, channel<L, 24>(a), channel<L, 24>(b)))));
+[[gnu::always_inline]] inline typename L::Int lerpWords(typename L::Int w, typename L::Int a, typename L::Int b) {
+    return L::lerpBytes(w, a, b);
 }
 
 // gallivm's fast log2 (lp_build_fast_log2): floor(log2 x) - 1 plus the mantissa in [1, 2),
@@ -66,7 +56,8 @@ public:
 
     // The texel colour of the fragments at (x, y) (w their interpolated w), each channel in
     // [0, 1], read for the lanes of `live`.
-    void sample(const FragmentKey& key, Float x, Float y, Float w, Mask live, Float texel[4]) const {
+    [[gnu::always_inline]] inline void sample(const FragmentKey& key, Float x, Float y, Float w, Mask live,
+                                              Float texel[4]) const {
         Float s, t;
         coordinates(x, y, w, s, t);
         const Level zero = level(0);
@@ -123,7 +114,7 @@ private:
     // level 0's size, rho the larger of the two squared lengths, lod = log2(rho) / 2
     // (lp_build_rho without its approximations, lp_build_fast_log2). A 1D texture takes the
     // larger of |ds/dx| and |ds/dy| times its width, unsquared.
-    Float quadLod(const FragmentKey& key, Float x, Float y) const {
+    [[gnu::always_inline]] inline Float quadLod(const FragmentKey& key, Float x, Float y) const {
         const Float qx = L::toFloat(L::bitAnd(L::roundToInt(x), L::ints(~1)));
         const Float qy = L::toFloat(L::bitAnd(L::roundToInt(y), L::ints(~1)));
         Float s00, t00, s10, t10, s01, t01;
@@ -144,7 +135,7 @@ private:
     }
 
     // The minification filter with the mipmap filter at `lod`.
-    Int minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
+    [[gnu::always_inline]] inline Int minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
         const Int last = L::ints(texture_->levelCount - 1);
         if (key.mipFilter == MipmapFilter::None) return sampleLevel(key, key.minFilter, s, t, level(0), live);
         if (key.mipFilter == MipmapFilter::Nearest) {
@@ -162,7 +153,7 @@ private:
         return lerpWords<L>(weight, word0, word1);
     }
 
-    Int sampleLevel(const FragmentKey& key, TextureFilter filter, Float s, Float t, const Level& l, Mask live) const {
+    [[gnu::always_inline]] inline Int sampleLevel(const FragmentKey& key, TextureFilter filter, Float s, Float t, const Level& l, Mask live) const {
         if (filter == TextureFilter::Nearest) {
             const Int i = nearest(key.wrapS, s, l.width, texture_->powerOfTwoWidth);
             const Int j = nearest(key.wrapT, t, l.height, texture_->powerOfTwoHeight);
