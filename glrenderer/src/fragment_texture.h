@@ -222,7 +222,7 @@ private:
 // The texture environment: the fragment's colour `c` (RGBA, in float) combined with the texel
 // as Mesa's fixed-function fragment program combines them for the texture's base format.
 template <class L>
-void applyTextureEnv(const FragmentKey& key, const typename L::Float texel[4], const typename L::Float envColor[4],
+[[gnu::always_inline]] inline void applyTextureEnv(const FragmentKey& key, const typename L::Float texel[4], const typename L::Float envColor[4],
                      typename L::Float c[4]) {
     using Float = typename L::Float;
     const TextureBase base = key.textureBase;

@@ -43,13 +43,15 @@ struct Kept<const void*> {
     const void* get() const { return data.empty() ? pointer : data.data(); }
 };
 
-// Names written by the call (glGenTextures): replayed into storage of their own, as the
-// program's array may be gone by then (the backend generates the same names again).
+// Words the call writes. With a count (glGenTextures' names) the replay writes storage of its
+// own, as the program's array may be gone by then (the backend generates the same names again);
+// without one (glSelectBuffer's hit buffer) the program's pointer is kept.
 template <>
 struct Kept<GLuint*> {
+    GLuint* pointer;
     mutable std::vector<GLuint> names;
-    Kept(GLuint*, std::size_t count) : names(count) {}
-    GLuint* get() const { return names.data(); }
+    Kept(GLuint* p, std::size_t count) : pointer(p), names(count) {}
+    GLuint* get() const { return names.empty() ? pointer : names.data(); }
 };
 
 // How many elements a pointer argument of the call points at: a number, or a function of the
@@ -236,6 +238,8 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glTexCoord1dv, 1) X(glad_glTexCoord1fv, 1) X(glad_glTexCoord1iv, 1) X(glad_glTexCoord1sv, 1)      \
     X(glad_glTexCoord3dv, 3) X(glad_glTexCoord3fv, 3) X(glad_glTexCoord3iv, 3) X(glad_glTexCoord3sv, 3)      \
     X(glad_glTexCoord4dv, 4) X(glad_glTexCoord4fv, 4) X(glad_glTexCoord4iv, 4) X(glad_glTexCoord4sv, 4)      \
+    X(glad_glTexGend, 0) X(glad_glTexGenf, 0) X(glad_glTexGeni, 0) X(glad_glTexGendv, textureParameterCount<GLdouble>) \
+    X(glad_glTexGenfv, textureParameterCount<GLfloat>) X(glad_glTexGeniv, textureParameterCount<GLint>)       \
     X(glad_glPixelStoref, 0) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
     X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4) \
