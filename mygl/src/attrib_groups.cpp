@@ -5,6 +5,7 @@
 
 #include "attrib_stack.h"
 #include "context_state.h"
+#include "textures.h"
 
 namespace mygl {
 namespace {
@@ -53,6 +54,42 @@ constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE,   GL_CLIP_PLANE0,    
                                              GL_CLIP_PLANE3, GL_CLIP_PLANE4,     GL_CLIP_PLANE5,     GL_CLIP_PLANE0 + 6,
                                              GL_CLIP_PLANE0 + 7};
 
+// GL_TEXTURE_BIT: the unit's bindings, environment and texgen, and the parameters of the
+// textures bound now (restored into those textures, if they still exist).
+RestoreGroup saveTextures(const State& state) {
+    const RestoreGroup unit = saveFields<[](auto& s) {
+        auto& t = s.textures;
+        return std::tie(t.bound1D, t.bound2D, t.envMode, t.envColor, t.gen.mode, t.gen.objectPlane, t.gen.eyePlane,
+                        t.genMode);
+    }>(state);
+    struct Parameters {
+        GLenum target;
+        GLuint name;
+        GLenum minFilter, magFilter, wrapS, wrapT;
+        glm::vec4 borderColor;
+        float priority;
+    };
+    std::vector<Parameters> saved;
+    for (const GLenum target : {GLenum{GL_TEXTURE_1D}, GLenum{GL_TEXTURE_2D}}) {
+        const TextureObject& t = boundTexture(state.textures, target);
+        const GLuint name = target == GL_TEXTURE_1D ? state.textures.bound1D : state.textures.bound2D;
+        saved.push_back({target, name, t.minFilter, t.magFilter, t.wrapS, t.wrapT, t.borderColor, t.priority});
+    }
+    return [unit, saved](State& s) {
+        unit(s);
+        for (const Parameters& p : saved) {
+            TextureUnit& textures = s.textures;
+            const auto found = textures.objects.find(p.name);
+            TextureObject* t = p.name == 0 ? (p.target == GL_TEXTURE_1D ? &textures.default1D : &textures.default2D)
+                             : found != textures.objects.end() ? &found->second
+                                                               : nullptr;
+            if (!t) continue;
+            t->minFilter = p.minFilter, t->magFilter = p.magFilter, t->wrapS = p.wrapS, t->wrapT = p.wrapT;
+            t->borderColor = p.borderColor, t->priority = p.priority;
+        }
+    };
+}
+
 const AttribGroup kServerGroups[] = {
     {GL_CURRENT_BIT, {}, saveFields<[](auto& s) {
          return std::tie(s.color, s.vertexColor, s.normal, s.texCoord, s.edgeFlag, s.rasterPosition, s.rasterColor,
@@ -84,12 +121,7 @@ const AttribGroup kServerGroups[] = {
      }>},
     {GL_SCISSOR_BIT, kScissorCapabilities, nullptr},
     {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, nullptr},
-    // (The bound textures' own parameters are not saved yet.)
-    {GL_TEXTURE_BIT, kTextureCapabilities, saveFields<[](auto& s) {
-         auto& t = s.textures;
-         return std::tie(t.bound1D, t.bound2D, t.envMode, t.envColor, t.gen.mode, t.gen.objectPlane, t.gen.eyePlane,
-                         t.genMode);
-     }>},
+    {GL_TEXTURE_BIT, kTextureCapabilities, saveTextures},
     {GL_TRANSFORM_BIT, kTransformCapabilities, saveFields<[](auto& s) { return std::tie(s.matrixMode, s.eyeClipPlanes); }>},
     {GL_VIEWPORT_BIT, {}, saveFields<[](auto& s) {
          return std::tie(s.draw.viewport, s.draw.depthNear, s.draw.depthFar);

@@ -449,6 +449,23 @@ std::vector<double> textureQueries() {
     values.insert(values.end(), eye, eye + 4);
     glEnable(GL_TEXTURE_GEN_R);
     values.push_back(glIsEnabled(GL_TEXTURE_GEN_R));
+    // GL_TEXTURE_BIT restores the bound texture's parameters, the environment and the enables.
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    glDisable(GL_TEXTURE_GEN_R);
+    glBindTexture(GL_TEXTURE_2D, names[2]);
+    glPopAttrib();
+    integers(GL_TEXTURE_BINDING_2D, 1);
+    for (const GLenum name : {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_WRAP_T}) {
+        GLint v = 0;
+        glGetTexParameteriv(GL_TEXTURE_2D, name, &v);
+        values.push_back(v);
+    }
+    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, env);
+    values.push_back(env[0]);
+    values.push_back(glIsEnabled(GL_TEXTURE_GEN_R));
     integers(GL_MAX_TEXTURE_SIZE, 1);
     for (const GLenum name : {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_PACK_SWAP_BYTES}) integers(name, 1);
     glDeleteTextures(3, names);
