@@ -362,6 +362,19 @@ TEST(Textures, SubImagesCopiesAndOneDimensional) {
         glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glEnable(GL_TEXTURE_1D);
     });
+    expectIdenticalWith("1D mipmapped, minified", [] {
+        glDisable(GL_TEXTURE_2D);
+        for (int level = 0, side = 16; side >= 1; ++level, side /= 2) {
+            std::vector<GLubyte> line = pattern(side, 1, 4);
+            for (std::size_t i = 2; i < line.size(); i += 4) line[i] = static_cast<GLubyte>(50 * level);
+            glTexImage1D(GL_TEXTURE_1D, level, GL_RGBA, side, 0, GL_RGBA, GL_UNSIGNED_BYTE, line.data());
+        }
+        glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glEnable(GL_TEXTURE_1D);
+        glMatrixMode(GL_TEXTURE);
+        glScalef(6.0f, 1.0f, 1.0f);
+        glMatrixMode(GL_MODELVIEW);
+    });
     expectIdenticalWith("unpack row length and skips, floats", [] {
         std::vector<GLfloat> image(12 * 10 * 4);
         for (std::size_t i = 0; i < image.size(); ++i) image[i] = static_cast<float>((i * 37) % 101) / 100.0f;
