@@ -390,6 +390,96 @@ void addFragmentOpsCases(std::vector<Case>& out) {
     }
 }
 
+// Textures: a quad in perspective and a small triangle, textured with an 8 x 8 image (and its
+// mipmaps) across filters, wraps and environment modes, smooth colours per vertex.
+void addTextureCases(std::vector<Case>& out) {
+    struct Filter {
+        const char* name;
+        GLenum min, mag;
+    };
+    static const Filter kFilters[] = {{"nearest", GL_NEAREST, GL_NEAREST},
+                                      {"linear", GL_LINEAR, GL_LINEAR},
+                                      {"nearest_mag_linear", GL_NEAREST, GL_LINEAR},
+                                      {"mipmap_nearest", GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR},
+                                      {"mipmap_linear", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR}};
+    struct Wrap {
+        const char* name;
+        GLenum wrap;
+    };
+    static const Wrap kWraps[] = {{"repeat", GL_REPEAT}, {"edge", 0x812F}, {"clamp", GL_CLAMP}};
+    struct Env {
+        const char* name;
+        GLenum env;
+    };
+    static const Env kEnvs[] = {{"modulate", GL_MODULATE}, {"replace", GL_REPLACE}, {"decal", GL_DECAL},
+                                {"blend", GL_BLEND}, {"add", GL_ADD}};
+    auto draw = [](GLenum min, GLenum mag, GLenum wrap, GLenum env, bool constantColor, bool clipped) {
+        glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        for (int level = 0, side = 8; side >= 1; ++level, side /= 2) {
+            std::vector<GLubyte> texels;
+            for (int y = 0; y < side; ++y) {
+                for (int x = 0; x < side; ++x) {
+                    const bool check = (x + y) % 2 == 0;
+                    texels.insert(texels.end(), {GLubyte(check ? 230 : 30 * x), GLubyte(255 * y / 8), GLubyte(40 * level),
+                                                 GLubyte(check ? 255 : 90 + 20 * y)});
+                }
+            }
+            glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, side, side, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+        }
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min));
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(mag));
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, static_cast<GLint>(env));
+        const GLfloat envColor[] = {0.3f, 0.6f, 0.9f, 0.5f};
+        glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, envColor);
+        glEnable(GL_TEXTURE_2D);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 40.0);
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glColor3f(0.9f, 0.8f, 0.7f);
+        glBegin(GL_QUADS);
+        // Inside the view volume, or crossing it (clipped by the near edges).
+        const float x = clipped ? 2.0f : 1.0f, y = clipped ? -1.0f : -0.8f;
+        const float corners[4][5] = {{-x, y, -1.5f, -0.4f, -0.3f}, {x, y, -1.5f, 1.6f, -0.3f},
+                                     {x, y, -30.0f, 1.6f, 6.0f}, {-x, y, -30.0f, -0.4f, 6.0f}};
+        for (int i = 0; i < 4; ++i) {
+            if (!constantColor) glColor3f(0.5f + 0.15f * float(i), 1.0f - 0.2f * float(i), 0.6f);
+            glTexCoord2f(corners[i][3], corners[i][4]);
+            glVertex3f(corners[i][0], corners[i][1], corners[i][2]);
+        }
+        glEnd();
+        glBegin(GL_TRIANGLES);
+        glColor3f(1.0f, 0.7f, 0.4f);
+        glTexCoord2f(0.1f, 0.2f);
+        glVertex3f(-0.4f, 0.1f, -2.0f);
+        glColor3f(0.3f, 1.0f, 0.8f);
+        glTexCoord2f(1.3f, 0.1f);
+        glVertex3f(0.5f, 0.0f, -2.2f);
+        glColor3f(0.8f, 0.5f, 1.0f);
+        glTexCoord2f(0.6f, 1.2f);
+        glVertex3f(0.1f, 0.6f, -2.4f);
+        glEnd();
+        glDisable(GL_TEXTURE_2D);
+    };
+    for (const Filter& f : kFilters) {
+        for (const Wrap& w : kWraps) {
+            for (const Env& e : kEnvs) {
+                const std::string name = std::string("texture_") + f.name + "_" + w.name + "_" + e.name;
+                out.push_back({"textures", name, false, [=](int, int) { draw(f.min, f.mag, w.wrap, e.env, false, false); }});
+            }
+        }
+    }
+    out.push_back({"textures", "texture_constant_color", false,
+                   [=](int, int) { draw(GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, true, false); }});
+    out.push_back({"textures", "texture_clipped_quad", false,
+                   [=](int, int) { draw(GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_MODULATE, false, true); }});
+}
+
 }  // namespace
 
 std::vector<Case> allCases() {
@@ -402,6 +492,7 @@ std::vector<Case> allCases() {
     addMergeBreakers(cases);
     addSmoothAndStippleCases(cases);
     addFragmentOpsCases(cases);
+    addTextureCases(cases);
     return cases;
 }
 

@@ -146,6 +146,74 @@ void drawBenchCubes(int width, int height, int frame) {
     }
 }
 
+namespace {
+
+// Texture 1 of the current context: a 64 x 64 brick-like pattern with every mipmap level,
+// made once per context (a fresh context's first name), then only bound.
+void bindBenchTexture() {
+    if (!glIsTexture(1)) {
+        GLuint name = 0;
+        glGenTextures(1, &name);
+        glBindTexture(GL_TEXTURE_2D, name);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        for (int level = 0, side = 64; side >= 1; ++level, side /= 2) {
+            std::vector<GLubyte> texels;
+            for (int y = 0; y < side; ++y) {
+                for (int x = 0; x < side; ++x) {
+                    const int s = x * 64 / side, t = y * 64 / side;
+                    const bool mortar = t % 16 < 2 || (s + (t / 16 % 2) * 16) % 32 < 2;
+                    texels.insert(texels.end(), {GLubyte(mortar ? 200 : 150 + (s * 7 + t * 3) % 60), GLubyte(mortar ? 200 : 70),
+                                                 GLubyte(mortar ? 190 : 50 + level * 20)});
+                }
+            }
+            glTexImage2D(GL_TEXTURE_2D, level, GL_RGB, side, side, 0, GL_RGB, GL_UNSIGNED_BYTE, texels.data());
+        }
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    }
+    glBindTexture(GL_TEXTURE_2D, 1);
+}
+
+// A unit cube with texture coordinates over each face and a colour per face.
+void drawTexturedCube(const float (*faceColors)[3]) {
+    static const float corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                        {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
+    static const float st[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    glBegin(GL_QUADS);
+    for (int f = 0; f < 6; ++f) {
+        glColor3fv(faceColors[f]);
+        for (int k = 0; k < 4; ++k) {
+            glTexCoord2fv(st[k]);
+            glVertex3fv(corners[faces[f][k]]);
+        }
+    }
+    glEnd();
+}
+
+}  // namespace
+
+void drawBenchTexturedCubes(int width, int height, int frame) {
+    static const float colors[6][3] = {{1.0f, 0.8f, 0.8f}, {0.8f, 1.0f, 0.8f}, {0.8f, 0.85f, 1.0f},
+                                       {1.0f, 1.0f, 0.8f}, {1.0f, 0.8f, 1.0f}, {0.8f, 1.0f, 1.0f}};
+    beginFrame(width, height, true, true);
+    bindBenchTexture();
+    glEnable(GL_TEXTURE_2D);
+    perspectiveView(width, height, 30.0f);
+    glRotatef(25.0f + static_cast<float>(frame), 1.0f, 1.0f, 0.0f);
+    for (int i = 0; i < 1000; ++i) {
+        glPushMatrix();
+        glTranslatef(static_cast<float>(i % 10) * 2.2f - 9.9f, static_cast<float>(i / 10 % 10) * 2.2f - 9.9f,
+                     static_cast<float>(i / 100) * 2.2f - 9.9f);
+        glRotatef(static_cast<float>(i * 37 % 360), 0.3f, 1.0f, 0.2f);
+        glScalef(0.6f, 0.6f, 0.6f);
+        drawTexturedCube(colors);
+        glPopMatrix();
+    }
+    glDisable(GL_TEXTURE_2D);
+}
+
 void drawBenchTiny(int width, int height, int) {
     beginFrame(width, height, true, false);
     std::mt19937 random(1);

@@ -13,5 +13,6 @@ void drawBenchMesh(int width, int height, int frame);   // a 100k-triangle mesh 
 void drawBenchLitTorus(int width, int height, int frame);  // 16k triangles lit by a spot and a directional light
 void drawBenchFogTerrain(int width, int height, int frame);  // the mesh's terrain under LINEAR fog
 void drawBenchParticles(int width, int height, int frame);  // 2000 alpha-blended quads and points over a floor
+void drawBenchTexturedCubes(int width, int height, int frame);  // bench-cubes textured: mipmaps, LINEAR_MIPMAP_LINEAR
 
 }  // namespace scenes

@@ -39,6 +39,8 @@ std::span<const Scene> allScenes() {
          drawBenchLitTorus},
         {"bench-fog-terrain", "benchmark: the 100k-triangle terrain under LINEAR fog, depth-tested", drawBenchFogTerrain},
         {"bench-particles", "benchmark: 2000 alpha-blended quads and points, depth-tested without writes", drawBenchParticles},
+        {"bench-textured-cubes", "benchmark: the 1000 cubes textured (64x64 mipmaps, LINEAR_MIPMAP_LINEAR, MODULATE)",
+         drawBenchTexturedCubes},
     };
     return scenes;
 }

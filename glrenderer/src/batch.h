@@ -76,7 +76,7 @@ struct BatchChunk {
     // by one unit here and there): flat.
     SubmittedBatch batch(const BatchEntry& entry) const {
         SubmittedBatch batch{entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
-        if (!batch.colorsPerVertex) batch.state.shadeModel = ShadeModel::Flat;
+        if (!batch.colorsPerVertex && batch.state.texture.env == TextureEnv::Off) batch.state.shadeModel = ShadeModel::Flat;
         return batch;
     }
     void clear() {

@@ -18,9 +18,19 @@ bool anyEdgeShown(const Batch& batch) {
 }  // namespace
 
 BatchDrawer::BatchDrawer(Framebuffer& framebuffer)
-    : framebuffer_(framebuffer), tiles_(framebuffer), setup_(framebuffer, kChunkVertices) {}
+    : framebuffer_(framebuffer), tiles_(framebuffer), setup_(framebuffer, kChunkVertices) {
+    texturesInUse_.reserve(kTexturesReserved);
+}
 
-void BatchDrawer::flush() { tiles_.flush(stats_, paintersSort_); }
+void BatchDrawer::flush() {
+    tiles_.flush(stats_, paintersSort_);
+    texturesInUse_.clear();
+}
+
+void BatchDrawer::keepTexture(const TextureState& texture) {
+    if (texture.env == TextureEnv::Off) return;
+    if (texturesInUse_.empty() || texturesInUse_.back() != texture.texture) texturesInUse_.push_back(texture.texture);
+}
 
 void BatchDrawer::draw(const SubmittedBatch& submitted) {
     if (submitted.state.selection || submitted.state.feedback) return select(submitted);
@@ -40,6 +50,7 @@ void BatchDrawer::draw(const SubmittedBatch& submitted) {
 }
 
 void BatchDrawer::draw(BatchChunk& chunk) {
+    for (const BatchEntry& entry : chunk.batches) keepTexture(entry.state.texture);
     if (!chunk.setUp) {
         lightChunk(chunk);
         for (const BatchEntry& entry : chunk.batches) draw(chunk.batch(entry));

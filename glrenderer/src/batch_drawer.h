@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -61,6 +62,11 @@ private:
     void select(const SubmittedBatch& batch);
     void feedbackUnfilled(const SubmittedBatch& batch, FeedbackOutput& feedback);
 
+    static constexpr std::size_t kTexturesReserved = 64;
+
+    // Keeps the texture the chunk's batch reads alive until its triangles are drawn (flush).
+    void keepTexture(const TextureState& texture);
+
     Framebuffer& framebuffer_;
     // Written for every triangle on the batch thread: a line of its own, not shared with
     // anything the program's thread writes.
@@ -71,6 +77,8 @@ private:
     HitRange hits_;
     FeedbackPrimitives feedback_;
     bool feedbackLineReset_ = false;
+    // The textures queued triangles read, released when the tiles are drawn.
+    std::vector<std::shared_ptr<const Texture>> texturesInUse_;
 };
 
 }  // namespace glrenderer

@@ -22,6 +22,7 @@ ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& 
     v.color = from.color + t * (to.color - from.color);
     v.backColor = from.backColor + t * (to.backColor - from.backColor);
     v.fogCoord = from.fogCoord + t * (to.fogCoord - from.fogCoord);
+    v.texCoord = from.texCoord + t * (to.texCoord - from.texCoord);
     return v;
 }
 

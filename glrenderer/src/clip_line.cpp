@@ -14,6 +14,7 @@ ClipVertex moveTowards(const ClipVertex& from, const ClipVertex& to, float t) {
     v.position = from.position + t * (to.position - from.position);
     v.color = from.color + t * (to.color - from.color);
     v.fogCoord = from.fogCoord + t * (to.fogCoord - from.fogCoord);
+    v.texCoord = from.texCoord + t * (to.texCoord - from.texCoord);
     return v;
 }
 

@@ -14,6 +14,7 @@ struct ClipVertex {
     glm::vec3 eye{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     float fogCoord = 0.0f;  // only with fog: the eye-space distance (fog.h)
+    glm::vec4 texCoord{0.0f, 0.0f, 0.0f, 1.0f};  // only with texturing: after the texture matrix
 };
 
 }  // namespace glrenderer

@@ -22,7 +22,9 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     const std::int64_t y1 = std::min<std::int64_t>(bottom + bitmap.height, fb.height() - drawable.minY);
     // Runs of set bits, in each row, are spans of one colour and depth for the fragment stage.
     FragmentInputs fragment;
-    const FragmentChoice fragments(bestFragmentPaths(), flatFragmentKey(state), state);
+    // Not textured yet (the raster position's texture coordinates are not kept).
+    const FragmentKey key = withTexture(flatFragmentKey(state), TextureState{});
+    const FragmentChoice fragments(bestFragmentPaths(), key, state);
     fragment.setPath(fragments.varyingW);
     fragment.ops = fragments.ops;
     fragment.setFlatColor(bitmap.color);

@@ -6,8 +6,8 @@ namespace glrenderer {
 
 void FragmentInputs::setFlatColor(const glm::vec4& c) {
     flatColor = fragmentRgba8(c);
-    // Fog mixes in float before the conversion: the planes a * 0 + c give c at every pixel.
-    if (key.fog != FogMode::Off) {
+    // Fog and the texture environment mix in float before the conversion: the planes a * 0 + c give c at every pixel.
+    if (key.fog != FogMode::Off || key.textureEnv != TextureEnv::Off) {
         for (int i = 0; i < 4; ++i) color[i] = {c[i], 0.0f, 0.0f};
     }
 }

@@ -75,10 +75,20 @@ struct FragmentInputs {
     FogState fog;
     float depthOffset = 0.0f;  // polygon offset, with a key that has it
     FragmentOpsConstants ops;  // (issue 16)
+    // Texturing (issue 16), with a key that has it: planes of s, t and q divided by w (invW is
+    // set too) and the draw's texture.
+    AttributePlane texCoord[3];
+    const Texture* texture = nullptr;
+    glm::vec4 textureEnvColor{0.0f};
     // The path's key and routine, as two fields so that the flat colour packs between them.
     FragmentKey key;
     std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
     const FragmentRoutine* routine = nullptr;
+
+    // The texture planes of s, t and q through `planes` (a PlaneBuilder or a line's), each
+    // coordinate divided by w as a perspective colour is, with the plane of 1 / w.
+    template <class Planes, class... Vertices>
+    void setTexture(const Texture* image, const glm::vec4& envColor, const Planes& planes, const Vertices&... v);
 
     // The colour of a flat primitive: its word, and with fog its constant planes.
     void setFlatColor(const glm::vec4& color);
@@ -92,5 +102,20 @@ struct FragmentInputs {
         routine->span(*this, row, begin, end, framebuffer, counts);
     }
 };
+
+}  // namespace glrenderer
+
+namespace glrenderer {
+
+template <class Planes, class... Vertices>
+void FragmentInputs::setTexture(const Texture* image, const glm::vec4& envColor, const Planes& planes,
+                                const Vertices&... v) {
+    texture = image;
+    textureEnvColor = envColor;
+    invW = planes.plane(v.invW...);
+    texCoord[0] = planes.plane((v.texCoord.s * v.invW)...);
+    texCoord[1] = planes.plane((v.texCoord.t * v.invW)...);
+    texCoord[2] = planes.plane((v.texCoord.q * v.invW)...);
+}
 
 }  // namespace glrenderer

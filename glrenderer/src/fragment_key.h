@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "glrenderer/draw_state.h"
+#include "glrenderer/texture.h"
 
 namespace glrenderer {
 
@@ -19,7 +20,6 @@ enum class Shading : std::uint8_t {
 // paths take their key as a template argument and the compiler removes every step it turns off.
 struct FragmentKey {
     Shading shading = Shading::Flat;
-    // Issue 16 adds here the texture environment and the texture's format.
     // Fog (issue 16): with a mode, the colour is fogged per fragment by a fog coordinate
     // interpolated with perspective, whatever the shading (FragmentInputs::fogCoord).
     FogMode fog = FogMode::Off;
@@ -44,6 +44,17 @@ struct FragmentKey {
     constexpr bool readsColor() const {
         return blendSrc != BlendFactor::One || blendDst != BlendFactor::Zero || logicOp != LogicOp::Copy || colorMask;
     }
+
+    // Texturing (issue 16), first in the stage's order but kept here, apart: the environment
+    // (Off without a texture), what the texture's format holds, its filters and wraps. The
+    // texture coordinates are interpolated with perspective, whatever the shading
+    // (FragmentInputs::texCoord).
+    TextureEnv textureEnv = TextureEnv::Off;
+    bool texture1D = false;
+    TextureBase textureBase = TextureBase::Rgba;
+    TextureFilter minFilter = TextureFilter::Nearest, magFilter = TextureFilter::Nearest;
+    MipmapFilter mipFilter = MipmapFilter::None;
+    TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
 
     bool operator==(const FragmentKey&) const = default;
 };
@@ -89,11 +100,29 @@ constexpr FragmentKey withFragmentOps(FragmentKey key, const FragmentOps& ops) {
     return key;
 }
 
+// `key` with texturing as `texture` makes it (none when its env is Off).
+constexpr FragmentKey withTexture(FragmentKey key, TextureEnv env, bool oneDimensional, TextureBase base,
+                                  TextureFilter minFilter, TextureFilter magFilter, MipmapFilter mipFilter,
+                                  TextureWrap wrapS, TextureWrap wrapT) {
+    key.textureEnv = env, key.texture1D = oneDimensional, key.textureBase = base;
+    key.minFilter = minFilter, key.magFilter = magFilter, key.mipFilter = mipFilter;
+    key.wrapS = wrapS, key.wrapT = wrapT;
+    return key;
+}
+inline FragmentKey withTexture(FragmentKey key, const TextureState& t) {
+    if (t.env == TextureEnv::Off) {
+        const FragmentKey u;  // untextured
+        return withTexture(key, u.textureEnv, u.texture1D, u.textureBase, u.minFilter, u.magFilter, u.mipFilter, u.wrapS,
+                           u.wrapT);
+    }
+    return withTexture(key, t.env, t.oneDimensional, t.base, t.minFilter, t.magFilter, t.mipFilter, t.wrapS, t.wrapT);
+}
+
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).
 inline FragmentKey fragmentKey(const DrawState& state) {
     const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
     const FragmentKey key = withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
-    return withFragmentOps(key, state.fragmentOps);
+    return withTexture(withFragmentOps(key, state.fragmentOps), state.texture);
 }
 
 // The same key for primitives of one colour (points, bitmaps).

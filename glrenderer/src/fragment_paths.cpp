@@ -17,6 +17,8 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, cons
     polygonOffset = state.polygonOffset;
     ops = FragmentOpsConstants::of(state.fragmentOps);
     scissor = state.fragmentOps.scissor;
+    texture = state.texture.texture.get();
+    textureEnvColor = state.texture.envColor;
 }
 
 FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {

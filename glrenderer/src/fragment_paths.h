@@ -9,7 +9,7 @@ namespace glrenderer {
 
 // The keys with fast paths of their own at every vector width: what scenes draw with nearly
 // always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), smooth
-// depth-tested LINEAR fog, and the usual alpha blending. Each is
+// depth-tested LINEAR fog, the usual alpha blending and the common textures. Each is
 // compiled with its key as a constant, so that it holds only the steps the key turns on.
 inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false),
@@ -34,6 +34,17 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     // Blending without the depth test (2D overlays).
     withBlend(makeFragmentKey(Shading::Perspective, false, CompareFunc::Always, false), BlendFactor::SrcAlpha,
               BlendFactor::OneMinusSrcAlpha),
+    // Textured, depth-tested: RGB(A) bricks, LINEAR_MIPMAP_LINEAR, MODULATE (bench-textured-cubes),
+    // and a NEAREST checkerboard.
+    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgb, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
+                TextureWrap::Repeat, TextureWrap::Repeat),
+    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgba, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
+                TextureWrap::Repeat, TextureWrap::Repeat),
+    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
+                TextureWrap::Repeat, TextureWrap::Repeat),
 };
 
 // The fragment routines of one vector width: a fast path per key of kFastFragmentKeys, and one
@@ -93,6 +104,10 @@ struct FragmentChoice {
     PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
     FragmentOpsConstants ops;     // the draw's (issue 16), for every primitive's inputs
     ScissorBox scissor;           // the draw's, for the bounds of lines (drawableRect)
+    // The draw's texture (kept alive by the batch drawer until its triangles are drawn) and
+    // environment colour, when the key has texturing.
+    const Texture* texture = nullptr;
+    glm::vec4 textureEnvColor{0.0f};
 };
 
 }  // namespace glrenderer

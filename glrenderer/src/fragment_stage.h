@@ -10,6 +10,7 @@
 #include "fragment_fog.h"
 #include "fragment_inputs.h"
 #include "fragment_ops_lanes.h"
+#include "fragment_texture.h"
 #include "lane_clamp.h"
 
 namespace glrenderer {
@@ -42,7 +43,8 @@ public:
           alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
           depthOffset_(L::floats(in.depthOffset)), alphaRef_(L::ints(in.ops.alphaRef)),
           stencilRef_(L::ints(in.ops.stencilRef)), stencilValueMask_(L::ints(in.ops.stencilValueMask)),
-          stencilWriteMask_(L::ints(in.ops.stencilWriteMask)), colorMask_(L::ints(static_cast<int>(in.ops.colorMask))) {}
+          stencilWriteMask_(L::ints(in.ops.stencilWriteMask)), colorMask_(L::ints(static_cast<int>(in.ops.colorMask))),
+          texture_(in) {}
 
     // The per-fragment operations' constants (issue 16).
     Int alphaRef() const { return alphaRef_; }
@@ -59,13 +61,21 @@ public:
         return L::roundToInt(L::mul(clampUnit<L>(z), L::floats(16777215.0f)));
     }
 
-    // The colour words, packed R, G, B, A from the low byte.
-    [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y) const {
-        if (key.shading == Shading::Flat && key.fog == FogMode::Off) return flat_;
+    // The colour words of the lanes `live`, packed R, G, B, A from the low byte.
+    [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y, typename L::Mask live) const {
+        const bool textured = key.textureEnv != TextureEnv::Off;
+        if (key.shading == Shading::Flat && key.fog == FogMode::Off && !textured) return flat_;
         Float r = red_.at(x, y), g = green_.at(x, y), b = blue_.at(x, y), a = alpha_.at(x, y);
-        if (key.shading == Shading::Perspective || key.fog != FogMode::Off) {
+        if (key.shading == Shading::Perspective || key.fog != FogMode::Off || textured) {
             const Float w = L::div(L::floats(1.0f), invW_.at(x, y));
             if (key.shading == Shading::Perspective) r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
+            // The texture environment, first.
+            if (textured) {
+                Float texel[4], c[4] = {r, g, b, a};
+                texture_.sample(key, x, y, w, live, texel);
+                applyTextureEnv<L>(key, texel, texture_.envColor(), c);
+                r = c[0], g = c[1], b = c[2], a = c[3];
+            }
             // Fog, after the texture environment: alpha keeps its value.
             if (key.fog != FogMode::Off) {
                 const Float f = fog_.factor(key.fog, L::mul(fogCoord_.at(x, y), w));
@@ -84,6 +94,7 @@ private:
     FogLanes<L> fog_;
     Float depthOffset_;
     Int alphaRef_, stencilRef_, stencilValueMask_, stencilWriteMask_, colorMask_;
+    TextureLanes<L> texture_;
 };
 
 // Lanes on consecutive pixels of a row: lane i is pixel first + i of the buffers. A whole
@@ -161,11 +172,11 @@ template <class L, class Block>
                                                const Block& block, const PixelBuffers& buffers) {
     using Int = typename L::Int;
     typename L::Mask live = covered;
-    // Texture environment (issue 16), then fog (FragmentLanes::rgba) make the colour.
+    // The texture environment, then fog (FragmentLanes::rgba) make the colour.
     // The scissor test was done on the primitive's bounds (drawableRect).
     Int rgba{};
     if (key.alphaFunc != CompareFunc::Always) {  // in bytes, as the reference compares
-        rgba = in.rgba(key, x, y);
+        rgba = in.rgba(key, x, y, live);
         live = L::compare(key.alphaFunc, live, L::shiftRight(rgba, 24), in.alphaRef());
     }
     Int stencil{}, updatedStencil{};
@@ -193,7 +204,7 @@ template <class L, class Block>
         block.store(buffers.stencil, stencilLanes, L::bitOr(kept, L::bitAnd(updatedStencil, writeMask)));
     }
     if (L::none(live)) return live;
-    if (key.alphaFunc == CompareFunc::Always) rgba = in.rgba(key, x, y);
+    if (key.alphaFunc == CompareFunc::Always) rgba = in.rgba(key, x, y, live);
     if (key.readsColor()) rgba = combineWithStored<L>(key, in, rgba, block.load(buffers.color, live));
     block.store(buffers.color, live, rgba);
     return live;

@@ -15,6 +15,11 @@ constexpr float kMaxPointCoordinate = 1 << 22;
 // The reference's maximum point size.
 constexpr float kMaxPointSize = 255.0f;
 
+// Planes of one value at every pixel.
+struct ConstantPlanes {
+    AttributePlane plane(float a) const { return {a, 0.0f, 0.0f}; }
+};
+
 struct PixelBox {
     std::int64_t x0, y0, x1, y1;  // inclusive
 };
@@ -70,6 +75,7 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
         fragment.invW = {point.invW, 0.0f, 0.0f};
         fragment.fogCoord = {point.fogCoord * point.invW, 0.0f, 0.0f};
     }
+    if (fragment.key.textureEnv != TextureEnv::Off) fragment.setTexture(fragments.texture, fragments.textureEnvColor, ConstantPlanes{}, point);
     FragmentCounts counts;
     for (std::int64_t row = box.y0; row <= box.y1; ++row) {
         fragment.shadeSpan(static_cast<int>(row), static_cast<int>(box.x0), static_cast<int>(box.x1), framebuffer, counts);

@@ -68,7 +68,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
         in.setFlatColor(t.flatColor);
-        if (!key.depthTest && key.fog == FogMode::Off) return true;
+        if (!key.depthTest && key.fog == FogMode::Off && key.textureEnv == TextureEnv::Off) return true;
     }
     // The reference sets up planes only for triangles counter-clockwise in its y-down view; one
     // clockwise in GL's window (area > 0 here) is set up as (v1, v0, v2), keeping the provoking
@@ -94,6 +94,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         in.invW = planes.plane(v0.invW, v1.invW, v2.invW);
         in.fogCoord = planes.plane(v0.fogCoord * v0.invW, v1.fogCoord * v1.invW, v2.fogCoord * v2.invW);
     }
+    if (key.textureEnv != TextureEnv::Off) in.setTexture(fragments.texture, fragments.textureEnvColor, planes, v0, v1, v2);
     return true;
 }
 

@@ -48,6 +48,7 @@ struct Avx2Lanes {
     static Float select(Mask m, Float ifSet, Float ifClear) { return _mm256_blendv_ps(ifClear, ifSet, _mm256_castsi256_ps(m)); }
     static Float toFloat(Int v) { return _mm256_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm256_cvtps_epi32(v); }
+    static Int truncateToInt(Float v) { return _mm256_cvttps_epi32(v); }
     static Int bitsOf(Float v) { return _mm256_castps_si256(v); }
     static Float fromBits(Int v) { return _mm256_castsi256_ps(v); }
 
@@ -67,6 +68,12 @@ struct Avx2Lanes {
     static Int minUnsigned16(Int a, Int b) { return _mm256_min_epu16(a, b); }
     static Int shiftRight16By8(Int v) { return _mm256_srli_epi16(v, 8); }
     static Int maxUnsigned(Int a, Int b) { return _mm256_max_epu32(a, b); }
+    static Int minInt(Int a, Int b) { return _mm256_min_epi32(a, b); }
+    static Int maxInt(Int a, Int b) { return _mm256_max_epi32(a, b); }
+    template <int N>
+    static Int shiftRightSigned(Int v) { return _mm256_srai_epi32(v, N); }
+    template <int N>
+    static Int shiftRightUnsigned(Int v) { return _mm256_srli_epi32(v, N); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }
     static Int shiftRight(Int v, int n) { return _mm256_srl_epi32(v, _mm_cvtsi32_si128(n)); }
@@ -112,6 +119,20 @@ struct Avx2Lanes {
     }
     static void storeWhole(std::uint32_t* pixels, Int v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(pixels), v); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return _mm256_blendv_epi8(ifClear, ifSet, m); }
+    // The four bytes of words a and b lerped with weights w (0-255): a + ((w * (b - a) + 128) >> 8)
+    // per byte, two bytes per 32-bit lane at once with pmulhrsw, as llvmpipe's sampler does.
+    static Int lerpBytes(Int w, Int a, Int b) {
+        const __m256i low = _mm256_set1_epi32(0x00FF00FF);
+        const __m256i w16 = _mm256_or_si256(w, _mm256_slli_epi32(w, 16));
+        const auto half = [&](__m256i x, __m256i y) {
+            const __m256i delta = _mm256_slli_epi16(_mm256_sub_epi16(y, x), 7);
+            return _mm256_and_si256(_mm256_add_epi16(x, _mm256_mulhrs_epi16(w16, delta)), low);
+        };
+        const __m256i even = half(_mm256_and_si256(a, low), _mm256_and_si256(b, low));
+        const __m256i odd = half(_mm256_and_si256(_mm256_srli_epi32(a, 8), low), _mm256_and_si256(_mm256_srli_epi32(b, 8), low));
+        return _mm256_or_si256(even, _mm256_slli_epi32(odd, 8));
+    }
+    static Mask greaterThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_GT_OQ)); }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
         return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), offsets, m, 4);

@@ -45,6 +45,7 @@ struct Avx512Lanes {
     static Float select(Mask m, Float ifSet, Float ifClear) { return _mm512_mask_blend_ps(m, ifClear, ifSet); }
     static Float toFloat(Int v) { return _mm512_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm512_cvtps_epi32(v); }
+    static Int truncateToInt(Float v) { return _mm512_cvttps_epi32(v); }
     static Int bitsOf(Float v) { return _mm512_castps_si512(v); }
     static Float fromBits(Int v) { return _mm512_castsi512_ps(v); }
 
@@ -70,11 +71,37 @@ struct Avx512Lanes {
         return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
     }
     static Int maxUnsigned(Int a, Int b) { return _mm512_max_epu32(a, b); }
+    static Int minInt(Int a, Int b) { return _mm512_min_epi32(a, b); }
+    static Int maxInt(Int a, Int b) { return _mm512_max_epi32(a, b); }
+    template <int N>
+    static Int shiftRightSigned(Int v) { return _mm512_srai_epi32(v, N); }
+    template <int N>
+    static Int shiftRightUnsigned(Int v) { return _mm512_srli_epi32(v, N); }
     template <int N>
     static Int shiftLeft(Int v) { return _mm512_slli_epi32(v, N); }
     static Int shiftRight(Int v, int n) { return _mm512_srl_epi32(v, _mm_cvtsi32_si128(n)); }
 
     static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }
+    static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
+    // As Avx2Lanes::lerpBytes, on each 256-bit half (pmulhrsw needs AVX-512BW at this width).
+    static Int lerpBytes(Int w, Int a, Int b) {
+        const auto half = [](__m256i w8, __m256i x, __m256i y) {
+            const __m256i low = _mm256_set1_epi32(0x00FF00FF);
+            const __m256i w16 = _mm256_or_si256(w8, _mm256_slli_epi32(w8, 16));
+            const auto bytes = [&](__m256i p, __m256i q) {
+                const __m256i delta = _mm256_slli_epi16(_mm256_sub_epi16(q, p), 7);
+                return _mm256_and_si256(_mm256_add_epi16(p, _mm256_mulhrs_epi16(w16, delta)), low);
+            };
+            const __m256i even = bytes(_mm256_and_si256(x, low), _mm256_and_si256(y, low));
+            const __m256i odd = bytes(_mm256_and_si256(_mm256_srli_epi32(x, 8), low), _mm256_and_si256(_mm256_srli_epi32(y, 8), low));
+            return _mm256_or_si256(even, _mm256_slli_epi32(odd, 8));
+        };
+        const __m256i lowHalf = half(_mm512_castsi512_si256(w), _mm512_castsi512_si256(a), _mm512_castsi512_si256(b));
+        const __m256i highHalf = half(_mm512_extracti64x4_epi64(w, 1), _mm512_extracti64x4_epi64(a, 1),
+                                      _mm512_extracti64x4_epi64(b, 1));
+        return _mm512_inserti64x4(_mm512_castsi256_si512(lowHalf), highHalf, 1);
+    }
+    static Mask greaterThan(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
     static Mask notNegative(Int a) { return _mm512_cmpge_epi32_mask(a, _mm512_setzero_si512()); }
     static Mask lanesBetween(int first, int last) {
         const unsigned upTo = last >= 15 ? 0xFFFFu : last < 0 ? 0u : (2u << last) - 1;
@@ -102,7 +129,6 @@ struct Avx512Lanes {
     }
 
     static Int load(const std::uint32_t* pixels, Mask m) { return _mm512_maskz_loadu_epi32(m, pixels); }
-    static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
     static void store(std::uint32_t* pixels, Mask m, Int v) { _mm512_mask_storeu_epi32(pixels, m, v); }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {

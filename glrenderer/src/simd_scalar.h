@@ -48,13 +48,43 @@ struct ScalarLanes {
     static Mask isNan(Float v) { return v != v; }
     static Float select(Mask m, Float ifSet, Float ifClear) { return m ? ifSet : ifClear; }
     static Float toFloat(Int v) { return static_cast<Float>(static_cast<std::int32_t>(v)); }
-    static Int roundToInt(Float v) { return static_cast<Int>(roundToEven(v)); }  // |v| < 2^31
+    // As cvtps2dq: ties to even; NaN and values out of range give INT_MIN.
+    static Int roundToInt(Float v) {
+        if (!(std::fabs(v) < 2147483648.0f)) return 0x80000000u;
+        return static_cast<Int>(static_cast<std::int32_t>(roundToEven(v)));
+    }
+    // Towards zero, as cvttps2dq: NaN and values out of range give INT_MIN.
+    static Int truncateToInt(Float v) {
+        return std::isfinite(v) && std::fabs(v) < 2147483648.0f ? static_cast<Int>(static_cast<std::int32_t>(v)) : 0x80000000u;
+    }
     static Int bitsOf(Float v) { return std::bit_cast<Int>(v); }
     static Float fromBits(Int v) { return std::bit_cast<Float>(v); }
 
     static Int add(Int a, Int b) { return a + b; }
     static Int sub(Int a, Int b) { return a - b; }
     static Int mul(Int a, Int b) { return a * b; }
+    // Texture sampling's integer steps (fragment_texture.h).
+    static Int minInt(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b) ? a : b; }
+    static Int maxInt(Int a, Int b) { return static_cast<std::int32_t>(a) > static_cast<std::int32_t>(b) ? a : b; }
+    template <int N>
+    static Int shiftRightSigned(Int v) { return static_cast<Int>(static_cast<std::int32_t>(v) >> N); }
+    template <int N>
+    static Int shiftRightUnsigned(Int v) { return v >> N; }
+    static Mask lessThan(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b); }
+    static Int select(Mask m, Int ifSet, Int ifClear) { return m ? ifSet : ifClear; }
+    static Mask greaterThan(Float a, Float b) { return a > b; }
+    // The four bytes of words a and b lerped with weight w (0-255): a + ((w * (b - a) + 128) >> 8)
+    // per byte, the rounding of llvmpipe's pmulhrsw.
+    static Int lerpBytes(Int w, Int a, Int b) {
+        Int out = 0;
+        for (int shift = 0; shift < 32; shift += 8) {
+            const auto x = static_cast<std::int32_t>((a >> shift) & 0xFF), y = static_cast<std::int32_t>((b >> shift) & 0xFF);
+            const std::int32_t lerped = x + ((static_cast<std::int32_t>(w) * (y - x) + 128) >> 8);
+            out |= static_cast<Int>(lerped) << shift;
+        }
+        return out;
+    }
+    static Int gather(const std::uint32_t* base, Int offset, Mask m) { return m ? base[offset] : 0; }
     static Int bitAnd(Int a, Int b) { return a & b; }
     static Int bitOr(Int a, Int b) { return a | b; }
     static Int bitXor(Int a, Int b) { return a ^ b; }
@@ -96,7 +126,6 @@ struct ScalarLanes {
     }
 
     static Int load(const std::uint32_t* pixel, Mask m) { return m ? *pixel : 0; }
-    static Int select(Mask m, Int ifSet, Int ifClear) { return m ? ifSet : ifClear; }
     static void store(std::uint32_t* pixel, Mask m, Int v) {
         if (m) *pixel = v;
     }

@@ -4,6 +4,7 @@
 #include "column_transform.h"
 #include "cpu_features.h"
 #include "fog.h"
+#include "texture_coordinates.h"
 
 namespace glrenderer {
 namespace {
@@ -20,6 +21,7 @@ glm::vec3 eyeNormal(const Matrix& m, const glm::vec3& n) {
 VertexStage::VertexStage(std::size_t batchVertices) {
     clipPositions_.reserve(batchVertices);
     fogCoordinates_.reserve(batchVertices);
+    texCoordinates_.reserve(batchVertices);
     outcodes_.reserve(batchVertices);
     windowVertices_.reserve(batchVertices);
     clipVertices_.reserve(batchVertices);
@@ -40,6 +42,12 @@ Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& v
         fogCoordinates(batch.vertices, batch.transform.modelview, batch.state.fog.distance, fogCoordinates_);
         for (std::size_t i = 0; i < count; ++i) windowVertices_[i].fogCoord = fogCoordinates_[i];
     }
+    texCoordinates_.clear();
+    if (batch.state.texture.env != TextureEnv::Off) {
+        texCoordinates_.resize(count);
+        textureCoordinates(batch.vertices, batch.state.texture, batch.transform.modelview, texCoordinates_);
+        for (std::size_t i = 0; i < count; ++i) windowVertices_[i].texCoord = texCoordinates_[i];
+    }
     const UserClipPlanes& user = batch.state.clipPlanes;
     if (user.enabled) {
         for (std::size_t i = 0; i < count; ++i) {
@@ -58,6 +66,7 @@ ClipVertex VertexStage::clipVertex(std::span<const Vertex> vertices, std::size_t
     out.backColor = in.backColor;
     out.edgeFlag = in.edgeFlag;
     if (!fogCoordinates_.empty()) out.fogCoord = fogCoordinates_[i];
+    if (!texCoordinates_.empty()) out.texCoord = texCoordinates_[i];
     return out;
 }
 

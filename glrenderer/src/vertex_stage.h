@@ -21,7 +21,7 @@ public:
 
     // Stages the batch; returns the union of its vertices' outcodes (with the program's clip
     // planes: the pass computes the view volume's, a second one adds those when enabled) and,
-    // with fog, gives the window vertices their fog coordinates. The arrays below hold the
+    // with fog and texturing, gives the window vertices their fog and texture coordinates. The arrays below hold the
     // batch's vertices until the next call.
     Outcode run(const SubmittedBatch& batch, const ViewportTransform& viewport);
     std::span<const Outcode> outcodes() const { return outcodes_; }
@@ -36,6 +36,7 @@ public:
 private:
     std::vector<glm::vec4> clipPositions_;
     std::vector<float> fogCoordinates_;  // empty without fog
+    std::vector<glm::vec4> texCoordinates_;  // empty without texturing
     std::vector<Outcode> outcodes_;
     std::vector<WindowVertex> windowVertices_;
     std::vector<ClipVertex> clipVertices_;

@@ -36,6 +36,7 @@ WindowVertex ViewportTransform::applyToClipped(const ClipVertex& vertex) const {
     out.z = p.z * out.invW * scaleZ_ + translateZ_;
     out.color = vertex.color;
     out.fogCoord = vertex.fogCoord;
+    out.texCoord = vertex.texCoord;
     return out;
 }
 

@@ -13,6 +13,7 @@ struct WindowVertex {
     float invW = 1;  // 1 / w_clip, the perspective weight of the attributes
     glm::vec4 color;
     float fogCoord = 0;  // only with fog
+    glm::vec4 texCoord{0.0f, 0.0f, 0.0f, 1.0f};  // only with texturing
 };
 
 // glViewport and glDepthRange as a scale and an offset per axis, computed in float as the
@@ -27,6 +28,7 @@ public:
     WindowVertex apply(const ClipVertex& vertex) const {
         WindowVertex out = apply(vertex.position, vertex.color);
         out.fogCoord = vertex.fogCoord;
+        out.texCoord = vertex.texCoord;
         return out;
     }
     // A vertex made by clipping: the same formula with a separate multiply and add, as the

@@ -5,6 +5,7 @@
 
 #include "attrib_stack.h"
 #include "context_state.h"
+#include "textures.h"
 
 namespace mygl {
 namespace {
@@ -23,7 +24,7 @@ constexpr GLenum kEnableCapabilities[] = {
     GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH,
     GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
     GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
+    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
     GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
     GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
     GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
@@ -41,7 +42,8 @@ constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE,          GL_POLYGON_OFF
                                            GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,      GL_POLYGON_STIPPLE};
 constexpr GLenum kScissorCapabilities[] = {GL_SCISSOR_TEST};
 constexpr GLenum kStencilCapabilities[] = {GL_STENCIL_TEST};
-constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D, GL_TEXTURE_2D};
+constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D,    GL_TEXTURE_2D,    GL_TEXTURE_GEN_S,
+                                           GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
 constexpr GLenum kEvalCapabilities[] = {
     GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
     GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
@@ -51,6 +53,42 @@ constexpr GLenum kEvalCapabilities[] = {
 constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE,   GL_CLIP_PLANE0,     GL_CLIP_PLANE1,     GL_CLIP_PLANE2,
                                              GL_CLIP_PLANE3, GL_CLIP_PLANE4,     GL_CLIP_PLANE5,     GL_CLIP_PLANE0 + 6,
                                              GL_CLIP_PLANE0 + 7};
+
+// GL_TEXTURE_BIT: the unit's bindings, environment and texgen, and the parameters of the
+// textures bound now (restored into those textures, if they still exist).
+RestoreGroup saveTextures(const State& state) {
+    const RestoreGroup unit = saveFields<[](auto& s) {
+        auto& t = s.textures;
+        return std::tie(t.bound1D, t.bound2D, t.envMode, t.envColor, t.gen.mode, t.gen.objectPlane, t.gen.eyePlane,
+                        t.genMode);
+    }>(state);
+    struct Parameters {
+        GLenum target;
+        GLuint name;
+        GLenum minFilter, magFilter, wrapS, wrapT;
+        glm::vec4 borderColor;
+        float priority;
+    };
+    std::vector<Parameters> saved;
+    for (const GLenum target : {GLenum{GL_TEXTURE_1D}, GLenum{GL_TEXTURE_2D}}) {
+        const TextureObject& t = boundTexture(state.textures, target);
+        const GLuint name = target == GL_TEXTURE_1D ? state.textures.bound1D : state.textures.bound2D;
+        saved.push_back({target, name, t.minFilter, t.magFilter, t.wrapS, t.wrapT, t.borderColor, t.priority});
+    }
+    return [unit, saved](State& s) {
+        unit(s);
+        for (const Parameters& p : saved) {
+            TextureUnit& textures = s.textures;
+            const auto found = textures.objects.find(p.name);
+            TextureObject* t = p.name == 0 ? (p.target == GL_TEXTURE_1D ? &textures.default1D : &textures.default2D)
+                             : found != textures.objects.end() ? &found->second
+                                                               : nullptr;
+            if (!t) continue;
+            t->minFilter = p.minFilter, t->magFilter = p.magFilter, t->wrapS = p.wrapS, t->wrapT = p.wrapT;
+            t->borderColor = p.borderColor, t->priority = p.priority;
+        }
+    };
+}
 
 const AttribGroup kServerGroups[] = {
     {GL_CURRENT_BIT, {}, saveFields<[](auto& s) {
@@ -95,7 +133,7 @@ const AttribGroup kServerGroups[] = {
          return std::tie(p.stencilFunc, p.stencilRef, p.stencilValueMask, p.stencilWriteMask, p.stencilFail,
                          p.stencilDepthFail, p.stencilDepthPass, p.clearStencil, s.draw.fragmentOps.stencil);
      }>},
-    {GL_TEXTURE_BIT, kTextureCapabilities, nullptr},
+    {GL_TEXTURE_BIT, kTextureCapabilities, saveTextures},
     {GL_TRANSFORM_BIT, kTransformCapabilities, saveFields<[](auto& s) { return std::tie(s.matrixMode, s.eyeClipPlanes); }>},
     {GL_VIEWPORT_BIT, {}, saveFields<[](auto& s) {
          return std::tie(s.draw.viewport, s.draw.depthNear, s.draw.depthFar);
@@ -105,7 +143,7 @@ const AttribGroup kServerGroups[] = {
 };
 
 const AttribGroup kClientGroups[] = {
-    {GL_CLIENT_PIXEL_STORE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.packAlignment, s.unpackAlignment); }>},
+    {GL_CLIENT_PIXEL_STORE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.pack, s.unpack); }>},
     {GL_CLIENT_VERTEX_ARRAY_BIT, {}, saveFields<[](auto& s) { return std::tie(s.arrays); }>},
 };
 

@@ -4,6 +4,7 @@
 
 #include "compiled.h"
 #include "fog_state.h"
+#include "textures.h"
 #include "vertex_input.h"
 
 namespace mygl {
@@ -21,6 +22,7 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     }
     prepareLighting(*s);
     if (s->fog.enabled) updateFogDistance(*s);
+    updateTexturing(*s);
     s->insideBeginEnd = true;
     s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
     if (s->lightingEnabled) s->pipeline.colorPerVertex();  // lit colours vary per vertex
@@ -65,8 +67,14 @@ void rect(T x1, T y1, T x2, T y2) {
     {"glNormal3" #suffix, compiled<+[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }>()},  \
     {"glNormal3" #suffix "v", compiled<+[](const T* v) { normalv(v); }, 3>()}
 #define MYGL_TEXCOORD(suffix, T)                                                                  \
+    {"glTexCoord1" #suffix, compiled<+[](T s) { texCoordv(&s, 1); }>()},                                   \
     {"glTexCoord2" #suffix, compiled<+[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data(), 2); }>()},     \
-    {"glTexCoord2" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 2); }, 2>()}
+    {"glTexCoord3" #suffix, compiled<+[](T s, T t, T r) { texCoordv(std::array<T, 3>{s, t, r}.data(), 3); }>()}, \
+    {"glTexCoord4" #suffix, compiled<+[](T s, T t, T r, T q) { texCoordv(std::array<T, 4>{s, t, r, q}.data(), 4); }>()}, \
+    {"glTexCoord1" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 1); }, 1>()},                      \
+    {"glTexCoord2" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 2); }, 2>()},                      \
+    {"glTexCoord3" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 3); }, 3>()},                      \
+    {"glTexCoord4" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 4); }, 4>()}
 #define MYGL_RECT(suffix, T)                                                                      \
     {"glRect" #suffix, compiled<+[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }>()},               \
     {"glRect" #suffix "v", compiled<+[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); }, 2>()}

@@ -98,7 +98,7 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
     s->pipeline.finish();
     const auto& fb = s->framebuffer;
     const Span columns = clipToWindow(x, width, fb.width()), rows = clipToWindow(y, height, fb.height());
-    const auto align = static_cast<std::size_t>(s->packAlignment);
+    const auto align = static_cast<std::size_t>(s->pack.alignment);
     const std::size_t rowBytes = (static_cast<std::size_t>(width) * static_cast<std::size_t>(pixelBytes) + align - 1) / align * align;
     auto* out = static_cast<std::uint8_t*>(pixels);
     // Only the part inside the window is written; the rest of the caller's memory is untouched.

@@ -21,6 +21,8 @@
 #include "selection.h"
 #include "stack_matrix.h"
 #include "mygl/context.h"
+#include "pixel_store.h"
+#include "texture_state.h"
 
 namespace mygl {
 
@@ -124,7 +126,8 @@ struct Context::State {
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
     BufferState buffers;
-    int packAlignment = 4, unpackAlignment = 4;
+    PixelStoreModes pack, unpack;  // glPixelStore
+    TextureUnit textures;  // (issue 16)
     DisplayLists lists;
     ClientArrays arrays;
     AttribStack attribStack, clientAttribStack;

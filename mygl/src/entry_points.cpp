@@ -20,7 +20,8 @@ const std::vector<EntryPoint>& implementedTable() {
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
                           clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
                           polygonOffsetEntryPoints(), accumulationEntryPoints(), colorIndexEntryPoints(),
-                          drawBufferEntryPoints(), feedbackEntryPoints(), fragmentOpsEntryPoints()}) {
+                          drawBufferEntryPoints(), feedbackEntryPoints(), fragmentOpsEntryPoints(),
+                          textureEntryPoints(), textureParameterEntryPoints(), textureGenEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

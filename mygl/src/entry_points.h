@@ -51,6 +51,9 @@ GLint endFeedback(Context::State& state);
 
 // glClear's GL_ACCUM_BUFFER_BIT: the accumulation buffer filled with glClearAccum's value.
 void clearAccumBuffer(Context::State& state);
+std::span<const EntryPoint> textureEntryPoints();
+std::span<const EntryPoint> textureParameterEntryPoints();
+std::span<const EntryPoint> textureGenEntryPoints();
 
 // The current context if a call that is not allowed between glBegin and glEnd may proceed:
 // nullptr without a context, and nullptr plus GL_INVALID_OPERATION inside glBegin/glEnd.

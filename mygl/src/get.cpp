@@ -10,6 +10,7 @@
 #include "fog_state.h"
 #include "fragment_ops_state.h"
 #include "polygon_offset_state.h"
+#include "textures.h"
 #include "gl12_lighting_enums.h"
 
 namespace mygl {
@@ -78,8 +79,18 @@ Value query(const Context::State& s, GLenum name) {
     case GL_DEPTH_BITS: return one(24);
     case GL_STENCIL_BITS: return one(8);
     case GL_SUBPIXEL_BITS: return one(8);
-    case GL_PACK_ALIGNMENT: return one(s.packAlignment);
-    case GL_UNPACK_ALIGNMENT: return one(s.unpackAlignment);
+    case GL_PACK_ALIGNMENT: return one(s.pack.alignment);
+    case GL_UNPACK_ALIGNMENT: return one(s.unpack.alignment);
+    case GL_PACK_ROW_LENGTH: return one(s.pack.rowLength);
+    case GL_UNPACK_ROW_LENGTH: return one(s.unpack.rowLength);
+    case GL_PACK_SKIP_PIXELS: return one(s.pack.skipPixels);
+    case GL_UNPACK_SKIP_PIXELS: return one(s.unpack.skipPixels);
+    case GL_PACK_SKIP_ROWS: return one(s.pack.skipRows);
+    case GL_UNPACK_SKIP_ROWS: return one(s.unpack.skipRows);
+    case GL_PACK_SWAP_BYTES: return flag(s.pack.swapBytes);
+    case GL_UNPACK_SWAP_BYTES: return flag(s.unpack.swapBytes);
+    case GL_PACK_LSB_FIRST: return flag(s.pack.lsbFirst);
+    case GL_UNPACK_LSB_FIRST: return flag(s.unpack.lsbFirst);
     case GL_DOUBLEBUFFER: return flag(false);
     case GL_VERTEX_ARRAY: return flag(s.arrays.vertex.enabled);
     case GL_NORMAL_ARRAY: return flag(s.arrays.normal.enabled);
@@ -157,6 +168,9 @@ Value query(const Context::State& s, GLenum name) {
         if (const std::optional<bool> enabled = evaluatorCapability(s, name)) return flag(*enabled);
         if (name == GL_COLOR_WRITEMASK) return Value{*fragmentOpsQuery(s, name), false, true};
         if (std::optional<std::vector<double>> op = fragmentOpsQuery(s, name)) return Value{*op, name == GL_ALPHA_TEST_REF};
+        if (const std::optional<bool> enabled = textureCapability(s, name)) return flag(*enabled);
+        if (const std::optional<bool> enabled = texGenCapability(s, name)) return flag(*enabled);
+        if (std::optional<std::vector<double>> texture = textureQuery(s, name)) return Value{*texture};
         if (const std::optional<bool> enabled = capabilityEnabled(s, name)) return flag(*enabled);  // the inert ones
         return {};
     }

@@ -101,7 +101,7 @@ CompiledCall keptBitmap(const Context::State& s, GLsizei w, GLsizei h, GLfloat x
     std::vector<GLubyte> rows;
     const std::size_t packed = w > 0 ? bitmapRowStride(w, 1) : 0;
     if (bits && w > 0 && h > 0) {
-        const std::size_t stride = bitmapRowStride(w, s.unpackAlignment);
+        const std::size_t stride = bitmapRowStride(w, s.unpack.alignment);
         rows.resize(packed * static_cast<std::size_t>(h));
         for (std::size_t row = 0; row < static_cast<std::size_t>(h); ++row) {
             std::copy_n(bits + row * stride, packed, rows.begin() + static_cast<std::ptrdiff_t>(row * packed));
@@ -120,7 +120,7 @@ const EntryPoint kEntryPoints[] = {
              s->lists.add(keptBitmap(*s, w, h, xo, yo, xm, ym, bits));
              if (!s->lists.executingWhileCompiling()) return;
          }
-         bitmap(w, h, xo, yo, xm, ym, bits, w > 0 ? bitmapRowStride(w, s->unpackAlignment) : 0);
+         bitmap(w, h, xo, yo, xm, ym, bits, w > 0 ? bitmapRowStride(w, s->unpack.alignment) : 0);
      })},
 };
 

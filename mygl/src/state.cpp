@@ -1,5 +1,6 @@
 // Enables and fixed-function state, translated into the pipeline's DrawState.
 #include <algorithm>
+#include <cmath>
 
 #include "capabilities.h"
 #include "clamp_to_unit.h"
@@ -7,6 +8,7 @@
 #include "fog_state.h"
 #include "fragment_ops_state.h"
 #include "polygon_offset_state.h"
+#include "textures.h"
 
 namespace mygl {
 namespace {
@@ -18,8 +20,7 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
-    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_TEXTURE_1D, GL_TEXTURE_2D,
+    GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE,
 };
 
 bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
@@ -124,9 +125,22 @@ void depthRange(GLdouble nearVal, GLdouble farVal) {
 void pixelStore(GLenum name, GLint value) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    if (name != GL_PACK_ALIGNMENT && name != GL_UNPACK_ALIGNMENT) return setError(*s, GL_INVALID_ENUM);
-    if (value != 1 && value != 2 && value != 4 && value != 8) return setError(*s, GL_INVALID_VALUE);
-    (name == GL_PACK_ALIGNMENT ? s->packAlignment : s->unpackAlignment) = value;
+    const bool pack = name >= GL_PACK_SWAP_BYTES && name <= GL_PACK_ALIGNMENT;
+    if (!pack && !(name >= GL_UNPACK_SWAP_BYTES && name <= GL_UNPACK_ALIGNMENT)) return setError(*s, GL_INVALID_ENUM);
+    PixelStoreModes& modes = pack ? s->pack : s->unpack;
+    const GLenum unpackName = pack ? name - GL_PACK_SWAP_BYTES + GL_UNPACK_SWAP_BYTES : name;
+    switch (unpackName) {
+    case GL_UNPACK_SWAP_BYTES: modes.swapBytes = value != 0; return;
+    case GL_UNPACK_LSB_FIRST: modes.lsbFirst = value != 0; return;
+    case GL_UNPACK_ALIGNMENT:
+        if (value != 1 && value != 2 && value != 4 && value != 8) return setError(*s, GL_INVALID_VALUE);
+        modes.alignment = value;
+        return;
+    default:
+        if (value < 0) return setError(*s, GL_INVALID_VALUE);
+        (unpackName == GL_UNPACK_ROW_LENGTH ? modes.rowLength : unpackName == GL_UNPACK_SKIP_ROWS ? modes.skipRows
+                                                                                                : modes.skipPixels) = value;
+    }
 }
 
 // Hints change nothing here (the reference renders the same either way) but are checked and
@@ -168,6 +182,12 @@ const EntryPoint kEntryPoints[] = {
          if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
      }>()},
     {"glPixelStorei", entry(+[](GLenum name, GLint value) { pixelStore(name, value); })},
+    {"glPixelStoref", entry(+[](GLenum name, GLfloat value) {
+         // Booleans are any non-zero value; counts round to the nearest integer.
+         const bool flag = name == GL_PACK_SWAP_BYTES || name == GL_PACK_LSB_FIRST || name == GL_UNPACK_SWAP_BYTES ||
+                           name == GL_UNPACK_LSB_FIRST;
+         pixelStore(name, flag ? GLint{value != 0.0f} : static_cast<GLint>(std::lround(value)));
+     })},
     {"glHint", compiled<+[](GLenum target, GLenum mode) { hint(target, mode); }>()},
     {"glGetError", entry(+[]() -> GLenum {
          Context::State* s = stateOutsideBeginEnd();
@@ -192,6 +212,7 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         setFragmentOpsCapability(s, cap, enabled)) {
         return true;
     }
+    if (setTextureCapability(s, cap, enabled) || setTexGenCapability(s, cap, enabled)) return true;
     if (cap == GL_FOG) {
         s.fog.enabled = enabled;
         updateFog(s);
@@ -211,6 +232,8 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
     if (const std::optional<bool> plane = clipPlaneCapability(s, cap)) return *plane;
     if (cap == GL_FOG) return s.fog.enabled;
+    if (const std::optional<bool> texture = textureCapability(s, cap)) return *texture;
+    if (const std::optional<bool> gen = texGenCapability(s, cap)) return *gen;
     if (const std::optional<bool> offset = polygonOffsetCapability(s, cap)) return *offset;
     if (const std::optional<bool> map = evaluatorCapability(s, cap)) return *map;
     if (const std::optional<bool> op = fragmentOpsCapability(s, cap)) return *op;

@@ -35,6 +35,7 @@ void lightVertex(Context::State& s, glrenderer::Vertex& v);
     v.position = object;
     v.normal = s->normal;
     v.edgeFlag = s->edgeFlag;
+    v.texCoord = s->texCoord;
     if (!s->lightingEnabled) {
         v.color = s->vertexColor;
     } else {

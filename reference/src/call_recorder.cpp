@@ -3,6 +3,7 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <tuple>
 #include <type_traits>
@@ -40,6 +41,17 @@ struct Kept<const void*> {
                           : std::vector<unsigned char>()),
           pointer(p) {}
     const void* get() const { return data.empty() ? pointer : data.data(); }
+};
+
+// Words the call writes. With a count (glGenTextures' names) the replay writes storage of its
+// own, as the program's array may be gone by then (the backend generates the same names again);
+// without one (glSelectBuffer's hit buffer) the program's pointer is kept.
+template <>
+struct Kept<GLuint*> {
+    GLuint* pointer;
+    mutable std::vector<GLuint> names;
+    Kept(GLuint* p, std::size_t count) : pointer(p), names(count) {}
+    GLuint* get() const { return names.empty() ? pointer : names.data(); }
 };
 
 // How many elements a pointer argument of the call points at: a number, or a function of the
@@ -113,6 +125,53 @@ template <class T>
 std::size_t lightCount(GLenum, GLenum name, const T*) { return lightParameterCount(name); }
 template <class T>
 std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(name); }
+// Bytes of a client image of width x height x depth pixels under the unpack state in force
+// (asked of the backend: queries, not recorded), from the pointer to the last byte read.
+std::size_t imageBytes(GLsizei width, GLsizei height, GLenum format, GLenum type) {
+    if (width <= 0 || height <= 0 || !glad_glGetIntegerv) return 0;
+    GLint alignment = 4, rowLength = 0, skipPixels = 0, skipRows = 0;
+    glad_glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    glad_glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+    glad_glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
+    glad_glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
+    const std::size_t components = format == GL_RGBA || format == 0x80E1 /* GL_BGRA */ ? 4
+                                 : format == GL_RGB || format == 0x80E0 /* GL_BGR */ ? 3
+                                 : format == GL_LUMINANCE_ALPHA ? 2 : 1;
+    const std::size_t component = type == GL_UNSIGNED_BYTE || type == GL_BYTE ? 1
+                                : type == GL_UNSIGNED_SHORT || type == GL_SHORT ? 2 : 4;
+    const std::size_t pixel = components * component;
+    const std::size_t rowPixels = static_cast<std::size_t>(rowLength > 0 ? rowLength : width);
+    const std::size_t a = alignment > 0 ? static_cast<std::size_t>(alignment) : 1;
+    std::size_t stride = rowPixels * pixel;
+    if (component < a) stride = (stride + a - 1) / a * a;
+    const std::size_t first = static_cast<std::size_t>(std::max(skipRows, 0)) * stride +
+                              static_cast<std::size_t>(std::max(skipPixels, 0)) * pixel;
+    return first + static_cast<std::size_t>(height - 1) * stride + static_cast<std::size_t>(width) * pixel;
+}
+std::size_t texImage1DBytes(GLenum, GLint, GLint, GLsizei w, GLint, GLenum format, GLenum type, const void*) {
+    return imageBytes(w, 1, format, type);
+}
+std::size_t texImage2DBytes(GLenum, GLint, GLint, GLsizei w, GLsizei h, GLint, GLenum format, GLenum type, const void*) {
+    return imageBytes(w, h, format, type);
+}
+std::size_t texSubImage1DBytes(GLenum, GLint, GLint, GLsizei w, GLenum format, GLenum type, const void*) {
+    return imageBytes(w, 1, format, type);
+}
+std::size_t texSubImage2DBytes(GLenum, GLint, GLint, GLint, GLsizei w, GLsizei h, GLenum format, GLenum type, const void*) {
+    return imageBytes(w, h, format, type);
+}
+std::size_t namesCount(GLsizei n, const GLuint*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
+std::size_t generatedCount(GLsizei n, GLuint*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
+std::size_t priorityCount(GLsizei n, const GLuint*, const GLclampf*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
+// Values behind glTexParameter*v, glTexEnv*v and glTexGen*v: 4 for colours and planes.
+template <class T>
+std::size_t textureParameterCount(GLenum, GLenum name, const T*) {
+    return name == GL_TEXTURE_BORDER_COLOR || name == GL_TEXTURE_ENV_COLOR || name == GL_OBJECT_PLANE ||
+                   name == GL_EYE_PLANE
+               ? 4
+               : 1;
+}
+
 // Values behind the pointer of glFog*v: 4 for the colour, 1 otherwise.
 template <class T>
 std::size_t fogCount(GLenum name, const T*) { return name == GL_FOG_COLOR ? 4 : 1; }
@@ -142,7 +201,7 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
 }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, lighting, fog, polygon offset, the per-fragment operations, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, lighting, fog, polygon offset, the per-fragment operations, textures, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -168,6 +227,23 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glScissor, 0) X(glad_glAlphaFunc, 0) X(glad_glStencilFunc, 0) X(glad_glStencilOp, 0)             \
     X(glad_glStencilMask, 0) X(glad_glClearStencil, 0) X(glad_glBlendFunc, 0) X(glad_glLogicOp, 0)           \
     X(glad_glColorMask, 0) \
+    X(glad_glGenTextures, generatedCount) X(glad_glBindTexture, 0) X(glad_glDeleteTextures, namesCount)       \
+    X(glad_glPrioritizeTextures, priorityCount) X(glad_glTexImage1D, texImage1DBytes)                        \
+    X(glad_glTexImage2D, texImage2DBytes) X(glad_glTexSubImage1D, texSubImage1DBytes)                        \
+    X(glad_glTexSubImage2D, texSubImage2DBytes) X(glad_glCopyTexImage1D, 0) X(glad_glCopyTexImage2D, 0)      \
+    X(glad_glCopyTexSubImage1D, 0) X(glad_glCopyTexSubImage2D, 0) X(glad_glTexParameterf, 0)                 \
+    X(glad_glTexParameteri, 0) X(glad_glTexParameterfv, textureParameterCount<GLfloat>)                      \
+    X(glad_glTexParameteriv, textureParameterCount<GLint>) X(glad_glTexEnvf, 0) X(glad_glTexEnvi, 0)          \
+    X(glad_glTexEnvfv, textureParameterCount<GLfloat>) X(glad_glTexEnviv, textureParameterCount<GLint>)      \
+    X(glad_glTexCoord1d, 0) X(glad_glTexCoord1f, 0) X(glad_glTexCoord1i, 0) X(glad_glTexCoord1s, 0)          \
+    X(glad_glTexCoord3d, 0) X(glad_glTexCoord3f, 0) X(glad_glTexCoord3i, 0) X(glad_glTexCoord3s, 0)          \
+    X(glad_glTexCoord4d, 0) X(glad_glTexCoord4f, 0) X(glad_glTexCoord4i, 0) X(glad_glTexCoord4s, 0)          \
+    X(glad_glTexCoord1dv, 1) X(glad_glTexCoord1fv, 1) X(glad_glTexCoord1iv, 1) X(glad_glTexCoord1sv, 1)      \
+    X(glad_glTexCoord3dv, 3) X(glad_glTexCoord3fv, 3) X(glad_glTexCoord3iv, 3) X(glad_glTexCoord3sv, 3)      \
+    X(glad_glTexCoord4dv, 4) X(glad_glTexCoord4fv, 4) X(glad_glTexCoord4iv, 4) X(glad_glTexCoord4sv, 4)      \
+    X(glad_glTexGend, 0) X(glad_glTexGenf, 0) X(glad_glTexGeni, 0) X(glad_glTexGendv, textureParameterCount<GLdouble>) \
+    X(glad_glTexGenfv, textureParameterCount<GLfloat>) X(glad_glTexGeniv, textureParameterCount<GLint>)       \
+    X(glad_glPixelStoref, 0) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
     X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4) \
     X(glad_glMap1f, map1Count<GLfloat>) X(glad_glMap1d, map1Count<GLdouble>) X(glad_glMap2f, map2Count<GLfloat>) \

@@ -20,21 +20,9 @@ namespace {
 const std::vector<std::string> kStillToDo = {
     // Stipple
     "glGetPolygonStipple", "glLineStipple", "glPolygonStipple",
-    // Pixel rectangles (after the pixel unpack/pack modules)
+    // Pixel rectangles
     "glCopyPixels", "glDrawPixels", "glGetPixelMapfv", "glGetPixelMapuiv", "glGetPixelMapusv", "glPixelMapfv",
-    "glPixelMapuiv", "glPixelMapusv", "glPixelStoref", "glPixelTransferf", "glPixelTransferi", "glPixelZoom",
-    // Textures (branch texture)
-    "glAreTexturesResident", "glBindTexture", "glCopyTexImage1D", "glCopyTexImage2D", "glCopyTexSubImage1D",
-    "glCopyTexSubImage2D", "glDeleteTextures", "glGenTextures", "glGetTexEnvfv", "glGetTexEnviv",
-    "glGetTexGendv", "glGetTexGenfv", "glGetTexGeniv", "glGetTexImage", "glGetTexLevelParameterfv",
-    "glGetTexLevelParameteriv", "glGetTexParameterfv", "glGetTexParameteriv", "glIsTexture",
-    "glPrioritizeTextures", "glTexCoord1d", "glTexCoord1dv", "glTexCoord1f", "glTexCoord1fv", "glTexCoord1i",
-    "glTexCoord1iv", "glTexCoord1s", "glTexCoord1sv", "glTexCoord3d", "glTexCoord3dv", "glTexCoord3f",
-    "glTexCoord3fv", "glTexCoord3i", "glTexCoord3iv", "glTexCoord3s", "glTexCoord3sv", "glTexCoord4d",
-    "glTexCoord4dv", "glTexCoord4f", "glTexCoord4fv", "glTexCoord4i", "glTexCoord4iv", "glTexCoord4s",
-    "glTexCoord4sv", "glTexEnvf", "glTexEnvfv", "glTexEnvi", "glTexEnviv", "glTexGend", "glTexGendv",
-    "glTexGenf", "glTexGenfv", "glTexGeni", "glTexGeniv", "glTexImage1D", "glTexImage2D", "glTexParameterf",
-    "glTexParameterfv", "glTexParameteri", "glTexParameteriv", "glTexSubImage1D", "glTexSubImage2D",
+    "glPixelMapuiv", "glPixelMapusv", "glPixelTransferf", "glPixelTransferi", "glPixelZoom",
 };
 
 TEST(EntryPoints, ExactlyTheListedGl11FunctionsAreStillOnTheStub) {

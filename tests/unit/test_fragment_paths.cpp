@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -38,6 +39,13 @@ std::string describe(const FragmentKey& key) {
         text += " depth func " + std::to_string(static_cast<int>(key.depthFunc)) + (key.depthWrite ? " write" : "");
     }
     if (key.fog != FogMode::Off) text += " fog " + std::to_string(static_cast<int>(key.fog));
+    if (key.textureEnv != TextureEnv::Off) {
+        text += " texture env " + std::to_string(static_cast<int>(key.textureEnv)) + " base " +
+                std::to_string(static_cast<int>(key.textureBase)) + " filters " +
+                std::to_string(static_cast<int>(key.minFilter)) + std::to_string(static_cast<int>(key.magFilter)) +
+                std::to_string(static_cast<int>(key.mipFilter)) + " wraps " + std::to_string(static_cast<int>(key.wrapS)) +
+                std::to_string(static_cast<int>(key.wrapT));
+    }
     if (key.depthOffset) text += " offset";
     if (key.alphaFunc != CompareFunc::Always) text += " alpha " + std::to_string(static_cast<int>(key.alphaFunc));
     if (key.stencilTest) {
@@ -100,7 +108,32 @@ FragmentKey randomKey(std::mt19937& random) {
                                       static_cast<CompareFunc>(depthFunc(random)), coin(random));
     key.fog = static_cast<FogMode>(fog(random));
     key.depthOffset = key.depthTest && coin(random);
-    return withFragmentOps(key, randomFragmentOps(random));
+    key = withFragmentOps(key, randomFragmentOps(random));
+    if (coin(random)) {
+        std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2);
+        key = withTexture(key, static_cast<TextureEnv>(env(random)), coin(random), static_cast<TextureBase>(base(random)),
+                          static_cast<TextureFilter>(coin(random)), static_cast<TextureFilter>(coin(random)),
+                          static_cast<MipmapFilter>(mip(random)), static_cast<TextureWrap>(coin(random)),
+                          static_cast<TextureWrap>(coin(random)));
+    }
+    return key;
+}
+
+// A texture of 8 x 4 texels (or 6 x 4, not a power of two) and its mipmaps, random texels.
+Texture randomTexture(std::mt19937& random, bool powerOfTwo) {
+    std::uniform_int_distribution<std::uint32_t> word;
+    Texture t;
+    int width = powerOfTwo ? 8 : 6, height = 4;
+    for (; t.levelCount == 0 || width > 1 || height > 1; width = std::max(width / 2, 1), height = std::max(height / 2, 1)) {
+        const auto level = static_cast<std::size_t>(t.levelCount++);
+        t.width[level] = static_cast<std::uint32_t>(width);
+        t.height[level] = static_cast<std::uint32_t>(height);
+        t.offset[level] = static_cast<std::uint32_t>(t.texels.size());
+        for (int i = 0; i < width * height; ++i) t.texels.push_back(word(random));
+        if (width == 1 && height == 1) break;
+    }
+    t.powerOfTwoWidth = powerOfTwo;
+    return t;
 }
 
 // A plane whose values over the framebuffer lie around [low, high], now and then a special one.
@@ -174,6 +207,7 @@ WindowVertex randomVertex(std::mt19937& random, float spread) {
     v.invW = 1.0f / w(random);
     v.color = {unit(random) * 1.2f - 0.1f, unit(random), unit(random), unit(random)};
     v.fogCoord = unit(random) * 30.0f;
+    v.texCoord = {unit(random) * 3.0f - 1.0f, unit(random) * 3.0f - 1.0f, 0.0f, 0.5f + unit(random)};
     return v;
 }
 
@@ -198,6 +232,7 @@ TEST(FragmentPaths, FastKeysFindTheirPathsAndOtherKeysTheRoutineForAnyKey) {
 
 TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
     std::mt19937 random(11);
+    const Texture textures[] = {randomTexture(random, true), randomTexture(random, false)};
     std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1), shortSpan(0, 20);
     std::uniform_int_distribution<std::uint32_t> word;
     int spans = 0;
@@ -212,6 +247,10 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
             inputs.fog = randomFog(random);
             inputs.depthOffset = std::uniform_real_distribution<float>(-0.01f, 0.01f)(random);
             inputs.ops = FragmentOpsConstants::of(randomFragmentOps(random));
+            for (int k = 0; k < 2; ++k) inputs.texCoord[k] = randomPlane(random, -1.5f, 2.5f);
+            inputs.texCoord[2] = randomPlane(random, 0.5f, 2.0f);
+            inputs.texture = &textures[i % 2];
+            inputs.textureEnvColor = {0.2f, 0.4f, 0.6f, 0.8f};
             inputs.setPath({tested.anyKey ? randomKey(random) : tested.key, tested.routine});
             FragmentInputs general = inputs;
             general.routine = &generalFragmentRoutine();
@@ -240,6 +279,7 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
     std::uniform_int_distribution<int> depthFunc(0, 7), coin(0, 1), fourth(0, 3);
     std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1);
     const std::vector<const FragmentPaths*> allPaths = pathsOfThisCpu();
+    const auto texture = std::make_shared<const Texture>(randomTexture(random, true));
     int drawn = 0;
     for (int i = 0; i < 3000; ++i) {
         const float spread = i % 3 == 0 ? 3.0f : (i % 3 == 1 ? 30.0f : 400.0f);
@@ -263,6 +303,16 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         if (fourth(random) == 0) state.fog = randomFog(random);
         if (fourth(random) == 0) state.polygonOffset = {1.5f, -3.0f, true, false, false};
         state.fragmentOps = randomFragmentOps(random);
+        if (fourth(random) == 0) {
+            std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2);
+            state.texture.env = static_cast<TextureEnv>(env(random));
+            state.texture.base = static_cast<TextureBase>(base(random));
+            state.texture.minFilter = static_cast<TextureFilter>(coin(random));
+            state.texture.magFilter = static_cast<TextureFilter>(coin(random));
+            state.texture.mipFilter = static_cast<MipmapFilter>(mip(random));
+            state.texture.wrapS = static_cast<TextureWrap>(coin(random));
+            state.texture.texture = texture;
+        }
         // Every other triangle is drawn within a random rectangle, as a tile draws its part.
         PixelRect rect{0, kWidth - 1, 0, kHeight - 1};
         if (i % 2) {

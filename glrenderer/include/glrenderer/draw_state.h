@@ -7,6 +7,7 @@
 #include "glrenderer/fog.h"
 #include "glrenderer/fragment_ops.h"
 #include "glrenderer/polygon_offset.h"
+#include "glrenderer/texture.h"
 
 namespace glrenderer {
 
@@ -67,6 +68,8 @@ struct DrawState {
     PolygonOffset polygonOffset;
     // Scissor, alpha test, stencil, blending, logic op, colour mask (issue 16).
     FragmentOps fragmentOps;
+    // Texturing (issue 16): env Off when disabled.
+    TextureState texture;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }

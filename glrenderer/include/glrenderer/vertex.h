@@ -15,6 +15,7 @@ struct Vertex {
     glm::vec4 color;
     glm::vec4 backColor{0.0f};  // lit for the back face: only with DrawState::twoSidedColors
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
+    glm::vec4 texCoord{0.0f, 0.0f, 0.0f, 1.0f};
     bool edgeFlag = true;
 };
 

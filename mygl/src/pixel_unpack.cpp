@@ -1,0 +1,71 @@
+#include "pixel_unpack.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+namespace mygl {
+namespace {
+
+template <class T>
+T readComponent(const std::uint8_t* p, bool swapBytes) {
+    std::uint8_t bytes[sizeof(T)];
+    std::memcpy(bytes, p, sizeof(T));
+    if (swapBytes) std::reverse(bytes, bytes + sizeof(T));
+    T value;
+    std::memcpy(&value, bytes, sizeof(T));
+    return value;
+}
+
+// Component i of type `type` at p, as a float.
+float component(const std::uint8_t* p, GLenum type, bool swapBytes) {
+    switch (type) {
+    case GL_UNSIGNED_BYTE: return static_cast<float>(*p) / 255.0f;
+    case GL_BYTE: return std::max(static_cast<float>(static_cast<std::int8_t>(*p)) / 127.0f, -1.0f);
+    case GL_UNSIGNED_SHORT: return static_cast<float>(readComponent<std::uint16_t>(p, swapBytes)) / 65535.0f;
+    case GL_SHORT: return std::max(static_cast<float>(readComponent<std::int16_t>(p, swapBytes)) / 32767.0f, -1.0f);
+    case GL_UNSIGNED_INT: return static_cast<float>(readComponent<std::uint32_t>(p, swapBytes) / 4294967295.0);
+    case GL_INT: return static_cast<float>(std::max(readComponent<std::int32_t>(p, swapBytes) / 2147483647.0, -1.0));
+    case GL_FLOAT: return readComponent<float>(p, swapBytes);
+    default: return 0.0f;
+    }
+}
+
+// One pixel's components (in the client's order) as RGBA.
+glm::vec4 toRgba(const float* c, GLenum format) {
+    switch (format) {
+    case GL_RED: return {c[0], 0, 0, 1};
+    case GL_GREEN: return {0, c[0], 0, 1};
+    case GL_BLUE: return {0, 0, c[0], 1};
+    case GL_ALPHA: return {0, 0, 0, c[0]};
+    case GL_LUMINANCE: return {c[0], c[0], c[0], 1};
+    case GL_LUMINANCE_ALPHA: return {c[0], c[0], c[0], c[1]};
+    case GL_RGB: return {c[0], c[1], c[2], 1};
+    case GL_BGR: return {c[2], c[1], c[0], 1};
+    case GL_BGRA: return {c[2], c[1], c[0], c[3]};
+    default: return {c[0], c[1], c[2], c[3]};
+    }
+}
+
+}  // namespace
+
+std::vector<glm::vec4> unpackImage(const void* pixels, int width, int height, GLenum format, GLenum type,
+                                   const PixelStoreModes& modes) {
+    std::vector<glm::vec4> out(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    if (!pixels) return out;
+    const ClientLayout layout = clientLayout(width, format, type, modes);
+    const int components = componentsOf(format);
+    const std::size_t componentBytes = bytesOfType(type);
+    const auto* base = static_cast<const std::uint8_t*>(pixels) + layout.firstByte;
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t* p = base + static_cast<std::size_t>(y) * layout.rowStride;
+        for (int x = 0; x < width; ++x) {
+            float c[4] = {};
+            for (int i = 0; i < components; ++i, p += componentBytes) c[i] = component(p, type, modes.swapBytes);
+            out[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = toRgba(c, format);
+        }
+    }
+    return out;
+}
+
+}  // namespace mygl
