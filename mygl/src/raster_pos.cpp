@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "compiled.h"
+#include "vertex_input.h"
 
 namespace mygl {
 namespace {
@@ -34,6 +35,12 @@ void rasterPos(const glm::vec4& object) {
                          clip.z * d * s->draw.depthScale() + s->draw.depthTranslate(), clip.w};
     s->rasterDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
     s->rasterColor = s->color;
+    if (s->lightingEnabled) {  // lit by the same vertex program as a vertex (the draw module's)
+        glrenderer::Vertex lit;
+        lit.position = object, lit.normal = s->normal, lit.color = s->color;
+        lightVertex(*s, lit);
+        s->rasterColor = lit.color;
+    }
     s->rasterTexCoord = transform(s->texture.top().matrix(), s->texCoord);
     if (s->renderMode == GL_SELECT) s->selection.rasterHits.add(s->rasterPosition.z);
 }
