@@ -109,10 +109,10 @@ Frame drawTextured(const TextureCase& c) {
     return readFrame(kWidth, kHeight);
 }
 
-void expectIdentical(const TextureCase& c) {
-    const auto frames = onBothBackends<Frame>([&] { return drawTextured(c); }, kWidth, kHeight);
+// The frames identical; with DUMP set, each differing pixel printed.
+void expectIdenticalFrames(const std::string& what, const testing_support::BothResults<Frame>& frames) {
     const ColorDifference d = difference(frames.mygl, frames.osmesa);
-    EXPECT_EQ(d.pixels, 0) << describe(c) << ": max channel difference " << d.maxChannel;
+    EXPECT_EQ(d.pixels, 0) << what << ": max channel difference " << d.maxChannel;
     if (getenv("DUMP") && d.pixels) {
         for (int p = 0; p < kWidth * kHeight; ++p) {
             bool differ = false;
@@ -124,6 +124,10 @@ void expectIdentical(const TextureCase& c) {
                    frames.osmesa.color[4 * p + 3]);
         }
     }
+}
+
+void expectIdentical(const TextureCase& c) {
+    expectIdenticalFrames(describe(c), onBothBackends<Frame>([&] { return drawTextured(c); }, kWidth, kHeight));
 }
 
 TEST(Textures, NearestAndLinearMagnifiedAcrossWrapsAndEnvironments) {
@@ -271,20 +275,7 @@ Frame drawWithTexturing(const std::function<void()>& setUp) {
 }
 
 void expectIdenticalWith(const std::string& what, const std::function<void()>& setUp) {
-    const auto frames = onBothBackends<Frame>([&] { return drawWithTexturing(setUp); }, kWidth, kHeight);
-    const ColorDifference d = difference(frames.mygl, frames.osmesa);
-    EXPECT_EQ(d.pixels, 0) << what << ": max channel difference " << d.maxChannel;
-    if (getenv("DUMP") && d.pixels) {
-        for (int p = 0; p < kWidth * kHeight; ++p) {
-            bool differ = false;
-            for (int k = 0; k < 4; ++k) differ |= frames.mygl.color[4 * p + k] != frames.osmesa.color[4 * p + k];
-            if (!differ) continue;
-            printf("  (%d,%d) mygl %d %d %d %d osmesa %d %d %d %d\n", p % kWidth, p / kWidth, frames.mygl.color[4 * p],
-                   frames.mygl.color[4 * p + 1], frames.mygl.color[4 * p + 2], frames.mygl.color[4 * p + 3],
-                   frames.osmesa.color[4 * p], frames.osmesa.color[4 * p + 1], frames.osmesa.color[4 * p + 2],
-                   frames.osmesa.color[4 * p + 3]);
-        }
-    }
+    expectIdenticalFrames(what, onBothBackends<Frame>([&] { return drawWithTexturing(setUp); }, kWidth, kHeight));
 }
 
 TEST(Textures, TexGenModesPerCoordinate) {
