@@ -5,6 +5,7 @@
 #include <array>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "client_arrays.h"
@@ -91,6 +92,64 @@ private:
 
 void emitElement(const ClientArrays& arrays, std::size_t i) { ElementReader{arrays}(i); }
 
+// The arrays of a typical mesh (positions in float; colours in float or unsigned bytes; normals
+// and texture coordinates in float; no edge flags) read straight into the current attributes and
+// the pipeline's vertices. Once a draw's first element has set the vertex format through the
+// usual calls, each other element stores what those calls would store, without their lookups.
+class MeshArrays {
+public:
+    static std::optional<MeshArrays> of(const ClientArrays& a) {
+        const auto is = [](const ClientArray& array, GLenum type) { return !array.enabled || array.type == type; };
+        if (!a.vertex.enabled || a.vertex.type != GL_FLOAT || a.edgeFlag.enabled || !is(a.normal, GL_FLOAT) ||
+            !is(a.texCoord, GL_FLOAT) || !(is(a.color, GL_FLOAT) || is(a.color, GL_UNSIGNED_BYTE))) {
+            return std::nullopt;
+        }
+        return MeshArrays(a);
+    }
+
+    void emit(Context::State& s, std::size_t i) const {
+        float v[4];
+        if (texCoord_.size) s.texCoord = texCoord_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f});
+        if (color_.size) {
+            const glm::vec4 c = colorBytes_ ? colorFromBytes(i) : color_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f});
+            s.color = c;
+            s.vertexColor = saturate(c);
+        }
+        if (normal_.size) s.normal = glm::vec3(normal_.read(i, v, {}));
+        pushVertex(s, vertex_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f}));
+    }
+
+private:
+    struct Source {
+        const unsigned char* base = nullptr;
+        std::size_t step = 0;
+        int size = 0;  // 0: not enabled
+        // Element i's components, the missing ones taken from `rest`.
+        glm::vec4 read(std::size_t i, float (&v)[4], glm::vec4 rest) const {
+            std::memcpy(v, base + i * step, static_cast<std::size_t>(size) * sizeof(float));
+            for (int k = 0; k < size; ++k) rest[k] = v[k];
+            return rest;
+        }
+    };
+    static Source sourceOf(const ClientArray& a) {
+        if (!a.enabled) return {};
+        const std::size_t step = a.stride ? static_cast<std::size_t>(a.stride) : static_cast<std::size_t>(a.size) * componentBytes(a.type);
+        return {static_cast<const unsigned char*>(a.pointer), step, a.size};
+    }
+    explicit MeshArrays(const ClientArrays& a)
+        : vertex_(sourceOf(a.vertex)), color_(sourceOf(a.color)), normal_(sourceOf(a.normal)),
+          texCoord_(sourceOf(a.texCoord)), colorBytes_(a.color.type == GL_UNSIGNED_BYTE) {}
+
+    glm::vec4 colorFromBytes(std::size_t i) const {
+        GLubyte b[4] = {0, 0, 0, 0};
+        std::memcpy(b, color_.base + i * color_.step, static_cast<std::size_t>(color_.size));
+        return {toFloat(b[0]), toFloat(b[1]), toFloat(b[2]), color_.size > 3 ? toFloat(b[3]) : 1.0f};
+    }
+
+    Source vertex_, color_, normal_, texCoord_;
+    bool colorBytes_;
+};
+
 std::size_t readIndex(GLenum type, const void* indices, std::size_t k) {
     const auto* bytes = static_cast<const unsigned char*>(indices);
     if (type == GL_UNSIGNED_BYTE) return bytes[k];
@@ -151,7 +210,11 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
     endBatch(s);
     begin(mode, quadSplitOf(s, indexed));
     const ElementReader element(arrays);
-    for (std::size_t k = 0; k < elements.count; ++k) element(elements[k]);
+    const std::optional<MeshArrays> mesh = MeshArrays::of(arrays);
+    for (std::size_t k = 0; k < elements.count; ++k) {
+        if (k > 0 && mesh) mesh->emit(s, elements[k]);
+        else element(elements[k]);
+    }
     end();
     endBatch(s);
     s.color = color, s.vertexColor = vertexColor, s.texCoord = texCoord, s.normal = normal, s.edgeFlag = edgeFlag;
