@@ -10,6 +10,9 @@
 namespace glrenderer {
 namespace {
 
+// The vertices of a segment in which the reference's draw module takes a long draw of quads.
+constexpr std::uint32_t kQuadSegmentVertices = 4096;
+
 // Window coordinates beyond this are only reachable through degenerate w; such triangles are
 // dropped rather than fed to the fixed-point conversion.
 constexpr float kMaxWindowCoordinate = 1 << 24;
@@ -76,17 +79,36 @@ Batch BatchSetup::stage(const SubmittedBatch& batch) {
 void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stats& stats) {
     const Outcode anyOutside = run(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
-    const DecompositionPath path = anyOutside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
-    const Call call{batch, batch.vertices, assembled, &target, stats, &fragments,
-                    path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
-                        batch.methods.culling == CullMethod::WindowArea};
-    decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), path, v1v3Quads,
-                       [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
+    // The vertices first .. first + count, on the direct path or through the draw module.
+    const auto decompose = [&](std::uint32_t first, std::uint32_t count, Outcode outside) {
+        const DecompositionPath path = outside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
+        const Call call{batch, batch.vertices, assembled, &target, stats, &fragments,
+                        path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
+                            batch.methods.culling == CullMethod::WindowArea};
+        decomposeTriangles(batch.mode, count, path, v1v3Quads, [&](TriangleIndices t) {
+            for (std::uint32_t& v : t.v) v += first;
+            setUpTriangle(call, t, viewport);
+        });
+    };
+    const auto count = static_cast<std::uint32_t>(batch.vertices.size());
+    if (batch.mode != PrimitiveMode::Quads || anyOutside == 0 || count <= kQuadSegmentVertices) {
+        return decompose(0, count, anyOutside);
+    }
+    // The reference's draw module takes a long draw of quads in segments of 4096 vertices and
+    // chooses the path per segment: one without a vertex to clip goes the direct way, and its
+    // quads are split along the other diagonal (measured with OSMesa).
+    const std::span<const Outcode> outcodes = vertexStage_.outcodes();
+    for (std::uint32_t first = 0; first < count; first += kQuadSegmentVertices) {
+        const std::uint32_t size = std::min(kQuadSegmentVertices, count - first);
+        Outcode segmentOutside = 0;
+        for (std::uint32_t i = first; i < first + size; ++i) segmentOutside |= outcodes[i];
+        decompose(first, size, segmentOutside);
+    }
 }
 
 void BatchSetup::select(const SubmittedBatch& batch, HitRange& hits, FeedbackOutput* feedback, Stats& stats) {

@@ -114,3 +114,31 @@ TEST(DrawModuleCulling, ACulledFaceTakesTheOtherFacesPolygonMode) {
         }
     }
 }
+
+// A long draw of quads reaches the reference's draw module in segments of 4096 vertices, and each
+// segment takes its own path: with a vertex to clip, through the draw module (quads split v1-v3),
+// otherwise the direct way (split v0-v2). 1400 smooth quads, one of them crossing the window's
+// left edge in the first segment, in the second, or nowhere.
+TEST(DrawModuleCulling, LongQuadDrawsChooseThePathPerSegment) {
+    constexpr int kWidth = 400, kHeight = 300, kQuads = 1400, kColumns = 40;
+    for (const int clippedQuad : {0, 1200, -1}) {
+        const auto frames = onBothBackends<Frame>([&] {
+            glClearColor(0, 0, 0, 0);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glMatrixMode(GL_PROJECTION);
+            glOrtho(0, kWidth, 0, kHeight, -1, 1);
+            glBegin(GL_QUADS);
+            for (int q = 0; q < kQuads; ++q) {
+                const float x = static_cast<float>(q % kColumns) * 10.0f + (q == clippedQuad ? -5.0f : 0.3f);
+                const float y = static_cast<float>(q / kColumns) * 8.0f + 0.2f, c = static_cast<float>(q % 7) / 7.0f;
+                glColor3f(1, c, 0), glVertex2f(x, y);
+                glColor3f(0, 1, c), glVertex2f(x + 9, y);
+                glColor3f(c, 0, 1), glVertex2f(x + 9, y + 7);
+                glColor3f(1, 1, c), glVertex2f(x, y + 7);
+            }
+            glEnd();
+            return readFrame(kWidth, kHeight);
+        }, kWidth, kHeight);
+        EXPECT_EQ(frames.mygl, frames.osmesa) << "clipped quad " << clippedQuad;
+    }
+}
