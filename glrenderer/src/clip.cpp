@@ -39,7 +39,7 @@ Outcode userClipOutcode(const glm::vec4& p, const UserClipPlanes& user) {
     Outcode code = 0;
     for (int plane = kViewVolumePlanes; plane < kClipPlaneCount; ++plane) {
         const bool enabled = (user.enabled >> (plane - kViewVolumePlanes) & 1u) != 0;
-        if (enabled && 0.0f > clipPlaneDistance(p, plane, user)) code |= static_cast<Outcode>(1u << plane);
+        if (enabled && !(clipPlaneDistance(p, plane, user) >= 0.0f)) code |= static_cast<Outcode>(1u << plane);
     }
     return code;
 }

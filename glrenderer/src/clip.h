@@ -37,8 +37,8 @@ inline float clipPlaneDistance(const glm::vec4& p, int plane, const UserClipPlan
 // Bit `plane` set for each view-volume plane the position is outside of. A non-finite position
 // is outside all.
 Outcode clipOutcode(const glm::vec4& position);
-// The bits of the program's enabled planes the position is outside of (by a negative distance:
-// NaN is inside, as in the reference's cliptest).
+// The bits of the program's enabled planes the position is outside of: a negative distance, or
+// NaN (llvmpipe's generated cliptest compares unordered).
 Outcode userClipOutcode(const glm::vec4& position, const UserClipPlanes& user);
 inline Outcode clipOutcode(const glm::vec4& position, const UserClipPlanes& user) {
     return user.enabled ? clipOutcode(position) | userClipOutcode(position, user) : clipOutcode(position);

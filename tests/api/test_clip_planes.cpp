@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
+
+#include <limits>
 #include <mygl/glu.h>
 
 #include <cmath>
@@ -193,4 +195,27 @@ TEST(ClipPlanes, StateAndErrorsMatchTheReference) {
         return out;
     });
     EXPECT_EQ(answers.mygl, answers.osmesa);
+}
+
+// A plane with a NaN (here given under a modelview holding an infinity, whose inverse is NaN)
+// puts every vertex outside: nothing is drawn, whatever the primitive.
+TEST(ClipPlanes, ANanPlaneDrawsNothing) {
+    for (const GLenum mode : {GL_POINTS, GL_LINES, GL_TRIANGLES}) {
+        const auto frames = onBothBackends<Frame>([&] {
+            glClearColor(0, 0, 0, 0);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            const GLfloat infinite[16] = {1, 1, 0, 0, 1, 0, 1, 1, std::numeric_limits<float>::infinity(), 0, 0, 0, 0, 1, 1, 0};
+            glLoadMatrixf(infinite);
+            const GLdouble plane[] = {0.0, 0.0, 0.0, 1.0};
+            glClipPlane(GL_CLIP_PLANE3, plane);
+            glEnable(GL_CLIP_PLANE3);
+            glLoadIdentity();
+            glPointSize(3);
+            glBegin(mode);
+            glVertex3d(-0.5, -0.5, 0), glVertex3d(0.5, -0.4, 0), glVertex3d(0.1, 0.6, 0);
+            glEnd();
+            return readFrame(16, 16);
+        });
+        EXPECT_EQ(frames.mygl, frames.osmesa) << "mode " << mode;
+    }
 }
