@@ -79,6 +79,22 @@ void gear(float inner, float outer, float width, int teeth, float toothDepth) {
     glEnd();
 }
 
+// bench-cubes' 1000 cubes in a 10 x 10 x 10 block, turning with the frame, each drawn by `drawOne`.
+template <class DrawOne>
+void drawCubeField(int width, int height, int frame, DrawOne drawOne) {
+    perspectiveView(width, height, 30.0f);
+    glRotatef(25.0f + static_cast<float>(frame), 1.0f, 1.0f, 0.0f);
+    for (int i = 0; i < 1000; ++i) {
+        glPushMatrix();
+        glTranslatef(static_cast<float>(i % 10) * 2.2f - 9.9f, static_cast<float>(i / 10 % 10) * 2.2f - 9.9f,
+                     static_cast<float>(i / 100) * 2.2f - 9.9f);
+        glRotatef(static_cast<float>(i * 37 % 360), 0.3f, 1.0f, 0.2f);
+        glScalef(0.6f, 0.6f, 0.6f);
+        drawOne();
+        glPopMatrix();
+    }
+}
+
 }  // namespace
 
 void drawBenchTorus(int width, int height, int frame) {
@@ -133,17 +149,7 @@ void drawBenchCubes(int width, int height, int frame) {
     static const float colors[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.25f, 0.35f, 0.95f},
                                        {0.95f, 0.85f, 0.2f}, {0.85f, 0.3f, 0.85f}, {0.2f, 0.85f, 0.85f}};
     beginFrame(width, height, true, true);
-    perspectiveView(width, height, 30.0f);
-    glRotatef(25.0f + static_cast<float>(frame), 1.0f, 1.0f, 0.0f);
-    for (int i = 0; i < 1000; ++i) {
-        glPushMatrix();
-        glTranslatef(static_cast<float>(i % 10) * 2.2f - 9.9f, static_cast<float>(i / 10 % 10) * 2.2f - 9.9f,
-                     static_cast<float>(i / 100) * 2.2f - 9.9f);
-        glRotatef(static_cast<float>(i * 37 % 360), 0.3f, 1.0f, 0.2f);
-        glScalef(0.6f, 0.6f, 0.6f);
-        drawCube(colors);
-        glPopMatrix();
-    }
+    drawCubeField(width, height, frame, [] { drawCube(colors); });
 }
 
 namespace {
@@ -200,17 +206,7 @@ void drawBenchTexturedCubes(int width, int height, int frame) {
     beginFrame(width, height, true, true);
     bindBenchTexture();
     glEnable(GL_TEXTURE_2D);
-    perspectiveView(width, height, 30.0f);
-    glRotatef(25.0f + static_cast<float>(frame), 1.0f, 1.0f, 0.0f);
-    for (int i = 0; i < 1000; ++i) {
-        glPushMatrix();
-        glTranslatef(static_cast<float>(i % 10) * 2.2f - 9.9f, static_cast<float>(i / 10 % 10) * 2.2f - 9.9f,
-                     static_cast<float>(i / 100) * 2.2f - 9.9f);
-        glRotatef(static_cast<float>(i * 37 % 360), 0.3f, 1.0f, 0.2f);
-        glScalef(0.6f, 0.6f, 0.6f);
-        drawTexturedCube(colors);
-        glPopMatrix();
-    }
+    drawCubeField(width, height, frame, [] { drawTexturedCube(colors); });
     glDisable(GL_TEXTURE_2D);
 }
 
