@@ -152,6 +152,25 @@ TEST(LineStipple, CutsLinesIntoFewerPixels) {
     EXPECT_LT(frames.mygl[1], frames.mygl[0] * 3 / 4);  // a half-on pattern drops about half
 }
 
+// A strip whose first segment is clipped away never restarts the counter: the reference's stage
+// keeps counting from the draw before (here a GL_LINES line of 37 pixels).
+TEST(LineStipple, AStripWhoseFirstSegmentIsClippedAwayContinuesTheCounter) {
+    const auto frames = onBothBackends<Frame>([] {
+        clear();
+        orthoView();
+        glEnable(GL_LINE_STIPPLE);
+        glLineStipple(2, 0x0F3F);
+        glBegin(GL_LINES);
+        glVertex2f(2.5f, 5.5f), glVertex2f(39.5f, 5.5f);
+        glEnd();
+        glBegin(GL_LINE_STRIP);
+        glVertex2f(-50.0f, -40.0f), glVertex2f(-10.0f, -30.0f), glVertex2f(5.5f, 20.5f), glVertex2f(80.5f, 50.5f);
+        glEnd();
+        return readFrame(kWidth, kHeight);
+    }, kWidth, kHeight);
+    EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0);
+}
+
 // The counter restarts at each polygon drawn as lines (GL_LINE_RESET_TOKEN's rule), continues
 // along its edges; clipped polygons and quads, strips and fans alike.
 TEST(LineStipple, PolygonEdgesInLineModeMatchTheReference) {
