@@ -309,7 +309,8 @@ void addSmoothAndStippleCases(std::vector<Case>& out) {
                                         {"line_stipple", GL_LINE_STIPPLE, GL_LINE_STRIP},
                                         {"polygon_stipple", GL_POLYGON_STIPPLE, GL_TRIANGLES}};
     for (const Feature& f : kFeatures) {
-        out.push_back({"smooth-stipple", f.name, true, [f](int, int) {
+        out.push_back({"smooth-stipple", f.name, true, [f](int width, int height) {
+                           scenes::resetState(width, height);  // a cleared frame: no earlier case shows through
                            GLubyte pattern[128];
                            for (int i = 0; i < 128; ++i) pattern[i] = (i / 4) % 2 ? 0xAA : 0x55;
                            glPolygonStipple(pattern);

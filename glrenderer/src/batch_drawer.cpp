@@ -44,7 +44,7 @@ void BatchDrawer::draw(const SubmittedBatch& submitted) {
         drawUnfilled(batch);
     } else {
         flush();  // points and lines are drawn at once: queued triangles first
-        drawPointsAndLines(batch.mode, batch.vertices, batch.state, framebuffer_, stats_);
+        drawPointsAndLines(batch.mode, batch.vertices, batch.state, stippler_, framebuffer_, stats_);
         tiles_.forgetClearedTiles();
     }
 }
@@ -95,7 +95,7 @@ void BatchDrawer::drawUnfilled(const Batch& batch) {
         [&](const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const glm::vec4& flatColor) {
             setup_.setUpTriangle(batch, v0, v1, v2, flatColor, tiles_, stats_);
         },
-        [&] { flush(); }};
+        [&] { flush(); }, nullptr, &stippler_};
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
                       ViewportTransform(batch.state, framebuffer_.height()), batch.state, anyEdgeShown(batch),
                       framebuffer_, stats_, target);

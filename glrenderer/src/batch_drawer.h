@@ -6,6 +6,7 @@
 
 #include "batch.h"
 #include "batch_setup.h"
+#include "line_stipple.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
@@ -77,6 +78,7 @@ private:
     HitRange hits_;
     FeedbackPrimitives feedback_;
     bool feedbackLineReset_ = false;
+    LineStippler stippler_;  // its counter runs from draw to draw, as the reference's
     // The textures queued triangles read, released when the tiles are drawn.
     std::vector<std::shared_ptr<const Texture>> texturesInUse_;
 };

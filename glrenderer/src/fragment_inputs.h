@@ -74,6 +74,7 @@ struct FragmentInputs {
     AttributePlane fogCoord;
     FogState fog;
     float depthOffset = 0.0f;  // polygon offset, with a key that has it
+    const PolygonStipplePattern* polygonStipple = nullptr;  // with a key that has it (interned)
     FragmentOpsConstants ops;  // (issue 16)
     // Texturing (issue 16), with a key that has it: planes of s, t and q divided by w (invW is
     // set too) and the draw's texture.

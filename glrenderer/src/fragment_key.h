@@ -29,6 +29,9 @@ struct FragmentKey {
     // Polygon offset of filled triangles (issue 16): a depth offset per primitive added to each
     // fragment's z (FragmentInputs::depthOffset), with the depth test only.
     bool depthOffset = false;
+    // Polygon stipple of filled triangles (issue 16): lanes off the pattern
+    // (FragmentInputs::polygonStipple) are dropped before every test.
+    bool polygonStipple = false;
     // Per-fragment operations (issue 16), each at its default when off; their constants are in
     // FragmentInputs::ops. Kept together here; the stage runs the alpha and stencil tests before
     // the depth test, as GL orders them. The scissor is no step: it cuts the primitives' bounds.

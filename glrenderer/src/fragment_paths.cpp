@@ -17,6 +17,7 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, cons
     polygonOffset = state.polygonOffset;
     ops = FragmentOpsConstants::of(state.fragmentOps);
     scissor = state.fragmentOps.scissor;
+    polygonStipple = state.polygonStipple.pattern;
     texture = state.texture.texture.get();
     textureEnvColor = state.texture.envColor;
 }

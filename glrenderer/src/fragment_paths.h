@@ -103,6 +103,7 @@ struct FragmentChoice {
     FogState fog;  // the draw's, for the primitives' inputs when the key has fog
     PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
     FragmentOpsConstants ops;     // the draw's (issue 16), for every primitive's inputs
+    const PolygonStipplePattern* polygonStipple = nullptr;  // the draw's, for filled triangles
     ScissorBox scissor;           // the draw's, for the bounds of lines (drawableRect)
     // The draw's texture (kept alive by the batch drawer until its triangles are drawn) and
     // environment colour, when the key has texturing.

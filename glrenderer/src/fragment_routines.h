@@ -45,7 +45,7 @@ template <class L>
 template <class L>
 [[gnu::always_inline]] inline void shadeRows(FragmentKey key, const RasterTriangle& t, const PixelRect& area,
                                              bool coveredWhole, Framebuffer& fb, FragmentCounts& counts) {
-    const FragmentLanes<L> lanes(t.fragment);
+    const FragmentLanes<L> lanes(t.fragment, fb.height());
     for (int row = area.minY; row <= area.maxY; ++row) {
         const Span span = coveredWhole ? Span{area.minX, area.maxX} : coveredSpan(t, row, area.minX, area.maxX);
         if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
@@ -140,7 +140,7 @@ template <class L>
     }
     const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
-    const FragmentLanes<L> lanes(t.fragment);
+    const FragmentLanes<L> lanes(t.fragment, fb.height());
     std::uint64_t fragments = 0, passed = 0;
     for (int top = area.minY; top <= area.maxY; top += blockRows) {
         const int rows = std::min(blockRows, area.maxY - top + 1);
@@ -170,11 +170,11 @@ template <class L>
 struct RoutinesOf {
     template <FragmentKey Key>
     static void span(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb, FragmentCounts& counts) {
-        shadeSpan<L>(Key, FragmentLanes<L>(in), row, begin, end, fb, counts);
+        shadeSpan<L>(Key, FragmentLanes<L>(in, fb.height()), row, begin, end, fb, counts);
     }
     static void anyKeySpan(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb,
                            FragmentCounts& counts) {
-        shadeSpan<L>(in.key, FragmentLanes<L>(in), row, begin, end, fb, counts);
+        shadeSpan<L>(in.key, FragmentLanes<L>(in, fb.height()), row, begin, end, fb, counts);
     }
     template <FragmentKey Key>
     static void rows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole, Framebuffer& fb,

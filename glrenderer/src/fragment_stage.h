@@ -38,13 +38,14 @@ public:
     using Float = typename L::Float;
     using Int = typename L::Int;
 
-    explicit FragmentLanes(const FragmentInputs& in)
+    // `framebufferHeight` turns internal rows into the window rows the polygon stipple reads.
+    FragmentLanes(const FragmentInputs& in, int framebufferHeight)
         : depth_(in.depth), invW_(in.invW), red_(in.color[0]), green_(in.color[1]), blue_(in.color[2]),
           alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
           depthOffset_(L::floats(in.depthOffset)), alphaRef_(L::ints(in.ops.alphaRef)),
           stencilRef_(L::ints(in.ops.stencilRef)), stencilValueMask_(L::ints(in.ops.stencilValueMask)),
           stencilWriteMask_(L::ints(in.ops.stencilWriteMask)), colorMask_(L::ints(static_cast<int>(in.ops.colorMask))),
-          texture_(in) {}
+          texture_(in), polygonStipple_(in.polygonStipple), lastRow_(framebufferHeight - 1) {}
 
     // The per-fragment operations' constants (issue 16).
     Int alphaRef() const { return alphaRef_; }
@@ -52,6 +53,19 @@ public:
     Int stencilValueMask() const { return stencilValueMask_; }
     Int stencilWriteMask() const { return stencilWriteMask_; }
     Int colorMask() const { return colorMask_; }
+
+    // The lanes of `live` the polygon stipple keeps: bit 31 - (x & 31) of the pattern's row
+    // (window y & 31), y counted from the bottom. One lane at a time: only stippled draws pay.
+    typename L::Mask polygonStippled(Float x, Float y, typename L::Mask live) const {
+        float xs[L::kCount], ys[L::kCount], kept[L::kCount];
+        L::storeFloats(xs, x), L::storeFloats(ys, y);
+        for (int i = 0; i < L::kCount; ++i) {
+            const int windowY = lastRow_ - static_cast<int>(ys[i]);
+            const std::uint32_t row = (*polygonStipple_)[static_cast<std::size_t>(windowY & 31)];
+            kept[i] = (row >> (31 - (static_cast<int>(xs[i]) & 31))) & 1u ? 1.0f : 0.0f;
+        }
+        return L::both(live, L::lessThan(L::floats(0.5f), L::loadFloats(kept)));
+    }
 
     // 24-bit window depth: round(clamp(z) * (2^24 - 1)), ties to even.
     // Polygon offset adds the primitive's depth offset to z first.
@@ -95,6 +109,8 @@ private:
     Float depthOffset_;
     Int alphaRef_, stencilRef_, stencilValueMask_, stencilWriteMask_, colorMask_;
     TextureLanes<L> texture_;
+    const PolygonStipplePattern* polygonStipple_;
+    int lastRow_;
 };
 
 // Lanes on consecutive pixels of a row: lane i is pixel first + i of the buffers. A whole
@@ -171,7 +187,7 @@ template <class L, class Block>
                                                typename L::Float x, typename L::Float y, typename L::Mask covered,
                                                const Block& block, const PixelBuffers& buffers) {
     using Int = typename L::Int;
-    typename L::Mask live = covered;
+    typename L::Mask live = key.polygonStipple ? in.polygonStippled(x, y, covered) : covered;
     // The texture environment, then fog (FragmentLanes::rgba) make the colour.
     // The scissor test was done on the primitive's bounds (drawableRect).
     Int rgba{};

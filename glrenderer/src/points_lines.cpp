@@ -12,12 +12,13 @@ namespace {
 
 // Visits the primitives of a points or lines batch as the reference draws them: each point
 // inside the view volume, point(window vertex); each segment clipped, segment(window a, window b,
-// the colour of its second vertex, which flat lines take even when that end was clipped).
+// the colour of its second vertex, which flat lines take even when that end was clipped, whether
+// the line stipple restarts: each of GL_LINES, the first of a strip or loop).
 template <class Point, class Segment>
 void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                       const ViewportTransform& viewport, Point&& point, Segment&& segment) {
     const UserClipPlanes& user = state.clipPlanes;
-    const auto clipped = [&](const ClipVertex& start, const ClipVertex& end) {
+    const auto clipped = [&](const ClipVertex& start, const ClipVertex& end, bool restart) {
         ClipVertex a = start, b = end;
         const Outcode outcodeA = clipOutcode(a.position, user), outcodeB = clipOutcode(b.position, user);
         if (!clipLine(a, b, outcodeA, outcodeB, user)) return;
@@ -25,7 +26,7 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
         const auto toWindow = [&](const ClipVertex& v, Outcode outcode) {
             return outcode == 0 ? viewport.apply(v) : viewport.applyToClipped(v);
         };
-        segment(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color);
+        segment(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color, restart);
     };
     const std::size_t n = vertices.size();
     switch (mode) {
@@ -35,12 +36,12 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
         }
         break;
     case PrimitiveMode::Lines:
-        for (std::size_t i = 0; i + 1 < n; i += 2) clipped(vertices[i], vertices[i + 1]);
+        for (std::size_t i = 0; i + 1 < n; i += 2) clipped(vertices[i], vertices[i + 1], true);
         break;
     case PrimitiveMode::LineStrip:
     case PrimitiveMode::LineLoop:
-        for (std::size_t i = 0; i + 1 < n; ++i) clipped(vertices[i], vertices[i + 1]);
-        if (mode == PrimitiveMode::LineLoop && n >= 2) clipped(vertices[n - 1], vertices[0]);
+        for (std::size_t i = 0; i + 1 < n; ++i) clipped(vertices[i], vertices[i + 1], i == 0);
+        if (mode == PrimitiveMode::LineLoop && n >= 2) clipped(vertices[n - 1], vertices[0], false);
         break;
     default:
         break;
@@ -50,15 +51,20 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
 }  // namespace
 
 void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
-                        Framebuffer& framebuffer, Stats& stats) {
+                        LineStippler& stippler, Framebuffer& framebuffer, Stats& stats) {
     // Points are drawn flat; lines as the state says.
     const FragmentChoice fragments(bestFragmentPaths(),
                                    mode == PrimitiveMode::Points ? flatFragmentKey(state) : fragmentKey(state), state);
     forEachPrimitive(
         mode, vertices, state, ViewportTransform(state, framebuffer.height()),
         [&](const WindowVertex& v) { rasterizePoint(v, state, fragments, framebuffer, stats); },
-        [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4& flatColor) {
-            rasterizeLine(a, b, flatColor, state.lineWidth, fragments, framebuffer, stats);
+        [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4& flatColor, bool restart) {
+            const auto draw = [&](const WindowVertex& from, const WindowVertex& to) {
+                rasterizeLine(from, to, flatColor, state.lineWidth, fragments, framebuffer, stats);
+            };
+            if (!state.lineStipple.enabled) return draw(a, b);
+            if (restart) stippler.restart();
+            stippler.cut(state.lineStipple, a, b, draw);
         });
 }
 
@@ -68,12 +74,12 @@ void selectPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertic
     if (feedback) {
         forEachPrimitive(
             mode, vertices, state, viewport, [&](const WindowVertex& v) { feedback->point(v); },
-            [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4&) { feedback->line(a, b); });
+            [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4&, bool) { feedback->line(a, b); });
         return;
     }
     forEachPrimitive(
         mode, vertices, state, viewport, [&](const WindowVertex& v) { hits.add(v.z); },
-        [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4&) { hits.add(a.z), hits.add(b.z); });
+        [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4&, bool) { hits.add(a.z), hits.add(b.z); });
 }
 
 }  // namespace glrenderer

@@ -31,6 +31,7 @@ FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods) 
         key.stencilDepthFail = StencilOp::Keep;
     }
     key.depthOffset = key.depthTest && state.polygonOffset.fill;
+    key.polygonStipple = state.polygonStipple.active();
     if (key.shading == Shading::Perspective && methods.interpolation == Interpolation::ScreenLinear) {
         key.shading = Shading::Linear;
     }
@@ -65,6 +66,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     const FragmentKey& key = fragments.varyingW.key;
     in.setPath(fragments.varyingW);
     in.ops = fragments.ops;
+    in.polygonStipple = fragments.polygonStipple;
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
         in.setFlatColor(t.flatColor);

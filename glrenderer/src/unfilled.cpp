@@ -147,6 +147,9 @@ public:
         const bool useFront = det == 0.0f ? !state_.cullEnabled && !state_.frontFaceCCW : front;
         const PolygonMode mode = useFront ? state_.polygonFront : state_.polygonBack;
         const PolygonOffset& offset = offsetFor(mode);
+        // The stipple stage restarts its counter at each face that reaches it, but for the
+        // edges of one polygon drawn as lines.
+        if (stippling_ && (mode != PolygonMode::Line || (edges & kResetStipple))) target_.stippler->restart();
         if (mode == PolygonMode::Fill) {
             target_.fill(w0, w1, w2, flatColor);
             return;
@@ -185,7 +188,11 @@ private:
 
     void line(const WindowVertex& from, const WindowVertex& to, const glm::vec4& flatColor) {
         if (target_.feedback) return target_.feedback->line(flatColored(from, flatColor), flatColored(to, flatColor));
-        rasterizeLine(from, to, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
+        const auto draw = [&](const WindowVertex& a, const WindowVertex& b) {
+            rasterizeLine(a, b, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
+        };
+        if (stippling_) return target_.stippler->cut(state_.lineStipple, from, to, draw);
+        draw(from, to);
     }
     void point(const WindowVertex& p, bool flat, const glm::vec4& flatColor) {
         if (target_.feedback) return target_.feedback->point(flatColored(p, flatColor));
@@ -213,6 +220,7 @@ private:
     Framebuffer& framebuffer_;
     Stats& stats_;
     const UnfilledTarget& target_;
+    const bool stippling_ = state_.lineStipple.enabled && target_.stippler;
     const FragmentChoice lineFragments_, pointFragments_;  // the batch's, chosen once
 };
 

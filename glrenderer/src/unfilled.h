@@ -11,6 +11,7 @@
 #include "clip.h"
 #include "clip_vertex.h"
 #include "feedback_output.h"
+#include "line_stipple.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -23,6 +24,8 @@ struct UnfilledTarget {
     std::function<void()> beforeLinesOrPoints;
     // GL_FEEDBACK: lines and points go there instead of being drawn.
     FeedbackOutput* feedback = nullptr;
+    // Cuts the lines under the line stipple (the pipeline's; drawing only).
+    LineStippler* stippler = nullptr;
 };
 
 // Draws a batch of a triangle mode under glPolygonMode LINE/POINT for at least one face, as the

@@ -120,7 +120,10 @@ const AttribGroup kServerGroups[] = {
          return std::tie(s.shadeModel, s.draw.shadeModel, l.lights, l.modelAmbient, l.localViewer, l.twoSide,
                          l.separateSpecular, l.materials, l.colorMaterial, s.colorMaterialFace, s.colorMaterialMode);
      }>},
-    {GL_LINE_BIT, kLineCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.lineWidth); }>},
+    {GL_LINE_BIT, kLineCapabilities, saveFields<[](auto& s) {
+         return std::tie(s.draw.lineWidth, s.draw.lineStipple.pattern, s.draw.lineStipple.factor);
+     }>},
+    {GL_POLYGON_STIPPLE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.draw.polygonStipple.pattern); }>},
     {GL_POINT_BIT, kPointCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.pointSize); }>},
     {GL_POLYGON_BIT, kPolygonCapabilities, saveFields<[](auto& s) {
          return std::tie(s.cullFaceMode, s.draw.cullFace, s.frontFace, s.draw.frontFaceCCW, s.polygonModeFront,

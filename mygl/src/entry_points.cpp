@@ -19,7 +19,7 @@ const std::vector<EntryPoint>& implementedTable() {
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
                           clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
-                          polygonOffsetEntryPoints(), accumulationEntryPoints(), colorIndexEntryPoints(),
+                          polygonOffsetEntryPoints(), stippleEntryPoints(), accumulationEntryPoints(), colorIndexEntryPoints(),
                           drawBufferEntryPoints(), feedbackEntryPoints(), fragmentOpsEntryPoints(),
                           textureEntryPoints(), textureParameterEntryPoints(), textureGenEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());

@@ -33,6 +33,7 @@ std::span<const EntryPoint> attribStackEntryPoints();
 std::span<const EntryPoint> clipPlaneEntryPoints();
 std::span<const EntryPoint> fogEntryPoints();
 std::span<const EntryPoint> polygonOffsetEntryPoints();
+std::span<const EntryPoint> stippleEntryPoints();
 std::span<const EntryPoint> fragmentOpsEntryPoints();
 // The colour bits draws write: glColorMask's, none with glDrawBuffer(GL_NONE).
 void updateColorWrites(Context::State& state);

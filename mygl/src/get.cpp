@@ -56,6 +56,8 @@ Value query(const Context::State& s, GLenum name) {
     case GL_SHADE_MODEL: return one(s.shadeModel);
     case GL_POLYGON_MODE: return Value{{double(s.polygonModeFront), double(s.polygonModeBack)}};
     case GL_LINE_WIDTH: return one(d.lineWidth);
+    case GL_LINE_STIPPLE_PATTERN: return one(d.lineStipple.pattern);
+    case GL_LINE_STIPPLE_REPEAT: return one(d.lineStipple.factor);
     // The reference's limits for points and lines, smooth or not.
     case GL_POINT_SIZE_RANGE: case GL_LINE_WIDTH_RANGE: return Value{{1.0, 255.0}};
     case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: return one(0.1f);

@@ -101,6 +101,21 @@ std::size_t bitmapBytes(GLsizei width, GLsizei height, GLfloat, GLfloat, GLfloat
     return ((static_cast<std::size_t>(width) + 7) / 8 + a - 1) / a * a * static_cast<std::size_t>(height);
 }
 
+// Bytes glPolygonStipple reads: 32 rows of 32 bits under the unpack modes.
+std::size_t polygonStippleBytes(const GLubyte*) {
+    if (!glad_glGetIntegerv) return 0;
+    GLint alignment = 4, rowLength = 0, skipPixels = 0, skipRows = 0;
+    glad_glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+    glad_glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+    glad_glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
+    glad_glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
+    const std::size_t a = alignment > 0 ? static_cast<std::size_t>(alignment) : 1;
+    const std::size_t rowBits = rowLength > 0 ? static_cast<std::size_t>(rowLength) : 32;
+    const std::size_t stride = (rowBits + 8 * a - 1) / (8 * a) * a;
+    const std::size_t firstBit = static_cast<std::size_t>(std::max(skipPixels, 0));
+    return (static_cast<std::size_t>(std::max(skipRows, 0)) + 31) * stride + (firstBit + 32 + 7) / 8;
+}
+
 // Bytes of glCallLists' names and glDrawElements' indices.
 std::size_t bytesOf(GLenum type, GLsizei n) {
     const std::size_t count = n > 0 ? static_cast<std::size_t>(n) : 0;
@@ -201,7 +216,7 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
 }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, lighting, fog, polygon offset, the per-fragment operations, textures, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, lighting, fog, polygon offset, stipple, the per-fragment operations, textures, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -223,7 +238,7 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glLightModelfv, lightModelCount<GLfloat>) X(glad_glLightModeliv, lightModelCount<GLint>) \
     X(glad_glColorMaterial, 0) \
     X(glad_glFogf, 0) X(glad_glFogi, 0) X(glad_glFogfv, fogCount<GLfloat>) X(glad_glFogiv, fogCount<GLint>) \
-    X(glad_glPolygonOffset, 0) \
+    X(glad_glPolygonOffset, 0) X(glad_glLineStipple, 0) X(glad_glPolygonStipple, polygonStippleBytes) \
     X(glad_glScissor, 0) X(glad_glAlphaFunc, 0) X(glad_glStencilFunc, 0) X(glad_glStencilOp, 0)             \
     X(glad_glStencilMask, 0) X(glad_glClearStencil, 0) X(glad_glBlendFunc, 0) X(glad_glLogicOp, 0)           \
     X(glad_glColorMask, 0) \

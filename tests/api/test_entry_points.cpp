@@ -18,8 +18,6 @@ namespace {
 
 // The GL 1.1 functions still to do, by area.
 const std::vector<std::string> kStillToDo = {
-    // Stipple
-    "glGetPolygonStipple", "glLineStipple", "glPolygonStipple",
     // Pixel rectangles
     "glCopyPixels", "glDrawPixels", "glGetPixelMapfv", "glGetPixelMapuiv", "glGetPixelMapusv", "glPixelMapfv",
     "glPixelMapuiv", "glPixelMapusv", "glPixelTransferf", "glPixelTransferi", "glPixelZoom",

@@ -7,6 +7,7 @@
 #include "glrenderer/fog.h"
 #include "glrenderer/fragment_ops.h"
 #include "glrenderer/polygon_offset.h"
+#include "glrenderer/stipple.h"
 #include "glrenderer/texture.h"
 
 namespace glrenderer {
@@ -70,6 +71,9 @@ struct DrawState {
     FragmentOps fragmentOps;
     // Texturing (issue 16): env Off when disabled.
     TextureState texture;
+    // Line and polygon stipple (issue 16).
+    LineStipple lineStipple;
+    PolygonStipple polygonStipple;
     bool operator==(const DrawState&) const = default;
 
     float depthScale() const { return static_cast<float>(0.5 * (double(depthFar) - double(depthNear))); }
