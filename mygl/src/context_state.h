@@ -106,6 +106,7 @@ struct Context::State {
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
     PixelStoreModes pack, unpack;  // glPixelStore
+    float zoomX = 1.0f, zoomY = 1.0f;  // glPixelZoom
     TextureUnit textures;  // (issue 16)
     DisplayLists lists;
     ClientArrays arrays;

@@ -27,6 +27,7 @@ std::span<const EntryPoint> bufferEntryPoints();
 std::span<const EntryPoint> listEntryPoints();
 std::span<const EntryPoint> arrayEntryPoints();
 std::span<const EntryPoint> rasterPosEntryPoints();
+std::span<const EntryPoint> pixelRectangleEntryPoints();
 std::span<const EntryPoint> lightingEntryPoints();
 std::span<const EntryPoint> selectionEntryPoints();
 std::span<const EntryPoint> attribStackEntryPoints();

@@ -74,6 +74,8 @@ Value query(const Context::State& s, GLenum name) {
     case GL_STENCIL_BITS: return one(0);
     case GL_SUBPIXEL_BITS: return one(8);
     case GL_PACK_ALIGNMENT: return one(s.pack.alignment);
+    case GL_ZOOM_X: return one(s.zoomX);
+    case GL_ZOOM_Y: return one(s.zoomY);
     case GL_UNPACK_ALIGNMENT: return one(s.unpack.alignment);
     case GL_PACK_ROW_LENGTH: return one(s.pack.rowLength);
     case GL_UNPACK_ROW_LENGTH: return one(s.unpack.rowLength);

@@ -11,6 +11,7 @@
 #include "glrenderer/hit_range.h"
 #include "glrenderer/immediate_buffer.h"
 #include "glrenderer/lighting.h"
+#include "glrenderer/pixel_image.h"
 #include "glrenderer/methods.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
@@ -84,6 +85,8 @@ public:
     // Draws a bitmap's fragments with the depth test and colour conversion of `state`, after
     // everything submitted before it. Bitmaps outside the framebuffer are cut to it.
     void drawBitmap(const DrawState& state, const Bitmap& bitmap);
+    // Draws a glDrawPixels image's fragments likewise (see PixelImage for which pixels).
+    void drawPixels(const DrawState& state, const PixelImage& image);
 
     // Clears with colors/depth already converted by the caller's rules (see color_convert.h).
     void clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);

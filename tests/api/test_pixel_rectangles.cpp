@@ -1,0 +1,369 @@
+// Pixel rectangles: glReadPixels in every GL 1.1 format and type under generated pack states,
+// glDrawPixels in every colour format and type under generated zooms, raster positions and
+// fragment states, and glCopyPixels, each compared with OSMesa running the same calls.
+#include <gtest/gtest.h>
+
+#include <glad/gl.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "backends.h"
+#include "color_difference.h"
+
+using testing_support::difference;
+using testing_support::Frame;
+using testing_support::onBothBackends;
+using testing_support::readFrame;
+
+namespace {
+
+// GL 1.2's BGR orders, which the reference accepts and the 1.1 loader does not name.
+constexpr GLenum GL_BGR = 0x80E0, GL_BGRA = 0x80E1;
+
+constexpr int kWidth = 40, kHeight = 30;
+
+// Smooth-coloured triangles at different depths (every byte value of a channel somewhere, alpha
+// too), so that every conversion meets many values.
+void colorfulScene() {
+    glClearColor(0.3f, 0.0f, 1.0f, 0.5f);
+    glClearDepth(0.8);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_TRIANGLES);
+    glColor4f(1, 0, 0, 0);
+    glVertex3f(-1.0f, -1.0f, -0.9f);
+    glColor4f(0, 1, 0.5f, 1);
+    glVertex3f(1.0f, -0.8f, 0.3f);
+    glColor4f(0.2f, 0.7f, 1, 0.6f);
+    glVertex3f(-0.7f, 1.0f, 0.95f);
+    glColor4f(1, 1, 1, 1);
+    glVertex3f(0.9f, 0.9f, -0.5f);
+    glColor4f(0, 0, 0, 0.25f);
+    glVertex3f(-0.2f, 0.1f, 0.6f);
+    glColor4f(0.9f, 0.5f, 0.1f, 0.9f);
+    glVertex3f(0.95f, -0.95f, 0.0f);
+    glEnd();
+}
+
+struct PackState {
+    int alignment, rowLength, skipPixels, skipRows;
+    bool swapBytes;
+};
+
+void applyPack(const PackState& p) {
+    glPixelStorei(GL_PACK_ALIGNMENT, p.alignment);
+    glPixelStorei(GL_PACK_ROW_LENGTH, p.rowLength);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, p.skipPixels);
+    glPixelStorei(GL_PACK_SKIP_ROWS, p.skipRows);
+    glPixelStorei(GL_PACK_SWAP_BYTES, p.swapBytes);
+}
+
+const GLenum kColorFormats[] = {GL_RGBA, GL_RGB, GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA,
+                                GL_BGR, GL_BGRA};
+const GLenum kTypes[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT, GL_UNSIGNED_INT, GL_INT, GL_FLOAT};
+const PackState kPackStates[] = {{4, 0, 0, 0, false}, {1, 0, 0, 0, false}, {8, 45, 3, 2, false}, {2, 0, 1, 0, true},
+                                 {4, 41, 0, 3, true}};
+
+struct Rectangle {
+    int x, y, width, height;
+};
+// The whole window, a part inside, and parts hanging over each edge.
+const Rectangle kRectangles[] = {{0, 0, kWidth, kHeight}, {5, 7, 13, 9}, {-3, -2, 9, 7}, {kWidth - 4, kHeight - 3, 9, 8}};
+
+std::string describe(GLenum format, GLenum type, const PackState& p, const Rectangle& r) {
+    return "format " + std::to_string(format) + " type " + std::to_string(type) + " alignment " +
+           std::to_string(p.alignment) + " row length " + std::to_string(p.rowLength) + " skips " +
+           std::to_string(p.skipPixels) + "," + std::to_string(p.skipRows) + (p.swapBytes ? " swapped" : "") +
+           " rectangle " + std::to_string(r.x) + "," + std::to_string(r.y) + " " + std::to_string(r.width) + "x" +
+           std::to_string(r.height);
+}
+
+// Every read of one format, as the bytes each backend wrote into memory filled with a marker
+// (so what a read leaves alone counts too), and the error after each.
+std::vector<std::uint8_t> readEverything(GLenum format) {
+    std::vector<std::uint8_t> all;
+    colorfulScene();
+    for (GLenum type : kTypes) {
+        for (const PackState& p : kPackStates) {
+            applyPack(p);
+            for (const Rectangle& r : kRectangles) {
+                std::vector<std::uint8_t> memory(64 * 64 * 4 * 4 + 256, 0xA5);
+                glReadPixels(r.x, r.y, r.width, r.height, format, type, memory.data());
+                memory.push_back(static_cast<std::uint8_t>(glGetError()));
+                all.insert(all.end(), memory.begin(), memory.end());
+            }
+        }
+    }
+    return all;
+}
+
+// Names the first read of `format` whose bytes differ.
+void expectSameReads(GLenum format) {
+    const auto bytes = onBothBackends<std::vector<std::uint8_t>>([format] { return readEverything(format); }, kWidth, kHeight);
+    ASSERT_EQ(bytes.mygl.size(), bytes.osmesa.size());
+    const std::size_t perRead = 64 * 64 * 4 * 4 + 257;
+    for (std::size_t i = 0; i < bytes.mygl.size(); ++i) {
+        if (bytes.mygl[i] == bytes.osmesa[i]) continue;
+        const std::size_t read = i / perRead;
+        const std::size_t perType = std::size(kPackStates) * std::size(kRectangles);
+        const PackState& p = kPackStates[(read % perType) / std::size(kRectangles)];
+        const Rectangle& r = kRectangles[read % std::size(kRectangles)];
+        FAIL() << describe(format, kTypes[read / perType], p, r) << ": byte " << i % perRead << " is "
+               << int{bytes.mygl[i]} << ", the reference's " << int{bytes.osmesa[i]};
+    }
+}
+
+}  // namespace
+
+TEST(PixelRectangles, ReadPixelsOfEveryColourFormatAndTypeEqualsTheReference) {
+    for (GLenum format : kColorFormats) expectSameReads(format);
+}
+
+TEST(PixelRectangles, ReadPixelsOfDepthInEveryTypeEqualsTheReference) { expectSameReads(GL_DEPTH_COMPONENT); }
+
+TEST(PixelRectangles, ReadPixelsErrorsEqualTheReference) {
+    const auto errors = onBothBackends<std::vector<GLenum>>([] {
+        std::vector<GLenum> e;
+        std::vector<std::uint8_t> memory(4096);
+        // (An unknown format: GL_INVALID_ENUM by the spec, the reference's departure is in test_errors.cpp.)
+        const GLenum formats[] = {GL_RGBA, GL_LUMINANCE, GL_DEPTH_COMPONENT, GL_COLOR_INDEX, GL_STENCIL_INDEX};
+        const GLenum types[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_BITMAP, 0x1234};
+        for (GLenum format : formats) {
+            for (GLenum type : types) {
+                glReadPixels(0, 0, 2, 2, format, type, memory.data());
+                e.push_back(glGetError());
+                glReadPixels(0, 0, -1, 2, format, type, memory.data());
+                e.push_back(glGetError());
+            }
+        }
+        return e;
+    });
+    ASSERT_EQ(errors.mygl.size(), errors.osmesa.size());
+    for (std::size_t i = 0; i < errors.mygl.size(); ++i) EXPECT_EQ(errors.mygl[i], errors.osmesa[i]) << "call " << i;
+}
+
+namespace {
+
+// A test image of `format` and `type`: components spread over the type's range (negative
+// values too for signed types, beyond [0, 1] for floats), unpack alignment 1.
+std::vector<std::uint8_t> testImage(int width, int height, GLenum format, GLenum type) {
+    int components = 4;
+    if (format == GL_RGB || format == GL_BGR) components = 3;
+    if (format == GL_LUMINANCE_ALPHA) components = 2;
+    if (format == GL_RED || format == GL_GREEN || format == GL_BLUE || format == GL_ALPHA || format == GL_LUMINANCE) components = 1;
+    const std::size_t count = static_cast<std::size_t>(width * height * components);
+    std::vector<std::uint8_t> bytes;
+    for (std::size_t i = 0; i < count; ++i) {
+        const double unit = static_cast<double>((i * 37 + i / 7 * 11) % 101) / 100.0;  // in [0, 1]
+        const auto append = [&bytes](auto value) {
+            const auto* p = reinterpret_cast<const std::uint8_t*>(&value);
+            bytes.insert(bytes.end(), p, p + sizeof value);
+        };
+        switch (type) {
+        case GL_UNSIGNED_BYTE: append(static_cast<std::uint8_t>(unit * 255)); break;
+        case GL_BYTE: append(static_cast<std::int8_t>(unit * 255 - 128)); break;
+        case GL_UNSIGNED_SHORT: append(static_cast<std::uint16_t>(unit * 65535)); break;
+        case GL_SHORT: append(static_cast<std::int16_t>(unit * 65535 - 32768)); break;
+        case GL_UNSIGNED_INT: append(static_cast<std::uint32_t>(unit * 4294967295.0)); break;
+        case GL_INT: append(static_cast<std::int32_t>(unit * 4294967295.0 - 2147483648.0)); break;
+        default: append(static_cast<float>(unit * 1.4 - 0.2)); break;
+        }
+    }
+    return bytes;
+}
+
+void flatView() {
+    glClearColor(0.1f, 0.2f, 0.3f, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, kWidth, 0, kHeight, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+}
+
+void expectSameFrames(const testing_support::BothResults<Frame>& frames, const std::string& what) {
+    const auto d = difference(frames.mygl, frames.osmesa);
+    EXPECT_EQ(d.pixels, 0) << what << ": largest channel difference " << d.maxChannel;
+    EXPECT_EQ(frames.mygl.depth, frames.osmesa.depth) << what;
+}
+
+}  // namespace
+
+TEST(PixelRectangles, DrawPixelsOfEveryColourFormatAndTypeEqualsTheReference) {
+    for (GLenum format : kColorFormats) {
+        for (GLenum type : kTypes) {
+            const auto image = testImage(9, 7, format, type);
+            const auto frames = onBothBackends<Frame>([&] {
+                flatView();
+                glRasterPos2i(3, 4);
+                glDrawPixels(9, 7, format, type, image.data());
+                return readFrame(kWidth, kHeight);
+            }, kWidth, kHeight);
+            expectSameFrames(frames, "format " + std::to_string(format) + " type " + std::to_string(type));
+        }
+    }
+}
+
+TEST(PixelRectangles, ZoomedImagesCoverThePixelsTheReferenceCovers) {
+    const float zooms[][2] = {{1, 1},     {2, 3},       {-1, 1},     {1, -1},   {0.5f, 0.5f}, {2.5f, 1.5f},
+                              {-1.5f, -2}, {0.3f, 0.7f}, {3.7f, -0.6f}, {1.25f, 0.75f}, {-0.5f, 2.25f}, {0.1f, 5}};
+    const float positions[][2] = {{10, 8}, {10.5f, 8.5f}, {10.49f, 7.51f}, {0.2f, 0.7f}, {35.3f, 26.6f}, {-0.4f, 29.9f}};
+    const auto image = testImage(11, 9, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (const auto& zoom : zooms) {
+        for (const auto& position : positions) {
+            const auto frames = onBothBackends<Frame>([&] {
+                flatView();
+                glPixelZoom(zoom[0], zoom[1]);
+                glRasterPos2f(position[0], position[1]);
+                glDrawPixels(11, 9, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+                return readFrame(kWidth, kHeight);
+            }, kWidth, kHeight);
+            expectSameFrames(frames, "zoom " + std::to_string(zoom[0]) + "," + std::to_string(zoom[1]) + " at " +
+                                         std::to_string(position[0]) + "," + std::to_string(position[1]));
+        }
+    }
+}
+
+TEST(PixelRectangles, ImagesAreDepthTestedAndFoggedAtTheRasterPosition) {
+    // (Bytes: a float image beyond [0, 1] would be fogged unclamped by the reference, see
+    // tests/conformance/expected_differences.txt.)
+    const auto image = testImage(16, 12, GL_RGB, GL_UNSIGNED_BYTE);
+    const GLenum funcs[] = {GL_LESS, GL_GREATER, GL_EQUAL, GL_ALWAYS};
+    for (GLenum func : funcs) {
+        for (int fog = 0; fog < 2; ++fog) {
+            const auto frames = onBothBackends<Frame>([&] {
+                flatView();
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_LESS);
+                glBegin(GL_TRIANGLES);  // a slanted triangle for the image to meet
+                glColor3f(0.8f, 0.8f, 0.1f);
+                glVertex3f(0, 0, 0.9f);
+                glVertex3f(40, 5, -0.9f);
+                glVertex3f(10, 30, 0.1f);
+                glEnd();
+                glDepthFunc(func);
+                if (fog) {
+                    glEnable(GL_FOG);
+                    glFogi(GL_FOG_MODE, GL_LINEAR);
+                    glFogf(GL_FOG_START, -1.0f);
+                    glFogf(GL_FOG_END, 2.0f);
+                }
+                glPixelZoom(1.5f, 1.5f);
+                glRasterPos3f(6, 5, 0.2f);
+                glDrawPixels(16, 12, GL_RGB, GL_UNSIGNED_BYTE, image.data());
+                return readFrame(kWidth, kHeight);
+            }, kWidth, kHeight);
+            expectSameFrames(frames, "depth function " + std::to_string(func) + (fog ? " with fog" : ""));
+        }
+    }
+}
+
+TEST(PixelRectangles, NothingIsDrawnAtAnInvalidRasterPositionOrInSelection) {
+    const auto image = testImage(4, 4, GL_RGBA, GL_UNSIGNED_BYTE);
+    const auto frames = onBothBackends<Frame>([&] {
+        flatView();
+        glRasterPos2f(-5, 3);  // outside the view volume: invalid
+        glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+        glCopyPixels(0, 0, 8, 8, GL_COLOR);
+        GLuint hits[16];
+        glSelectBuffer(16, hits);
+        glRenderMode(GL_SELECT);
+        glRasterPos2f(5, 3);
+        glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+        glRenderMode(GL_RENDER);
+        return readFrame(kWidth, kHeight);
+    }, kWidth, kHeight);
+    expectSameFrames(frames, "invalid raster position and selection");
+}
+
+TEST(PixelRectangles, CopyPixelsOfOverlappingZoomedAndClippedRectanglesEqualsTheReference) {
+    const int copies[][4] = {{0, 0, 20, 15}, {5, 5, 20, 20}, {-4, -3, 12, 10}, {30, 20, 20, 20}, {2, 3, 40, 30}};
+    const float targets[][4] = {{8, 6, 1, 1}, {3.5f, 2.5f, 1, 1}, {20, 10, -1, 2}, {1, 1, 0.5f, 1.5f}, {39, 29, -2, -0.75f}};
+    for (const auto& copy : copies) {
+        for (const auto& target : targets) {
+            const auto frames = onBothBackends<Frame>([&] {
+                flatView();
+                colorfulScene();
+                glDisable(GL_DEPTH_TEST);
+                glMatrixMode(GL_PROJECTION);
+                glLoadIdentity();
+                glOrtho(0, kWidth, 0, kHeight, -1, 1);
+                glMatrixMode(GL_MODELVIEW);
+                glLoadIdentity();
+                glRasterPos2f(target[0], target[1]);
+                glPixelZoom(target[2], target[3]);
+                glCopyPixels(copy[0], copy[1], copy[2], copy[3], GL_COLOR);
+                return readFrame(kWidth, kHeight);
+            }, kWidth, kHeight);
+            expectSameFrames(frames, "copy " + std::to_string(copy[0]) + "," + std::to_string(copy[1]) + " to " +
+                                         std::to_string(target[0]) + "," + std::to_string(target[1]));
+        }
+    }
+}
+
+TEST(PixelRectangles, DisplayListsKeepTheImageUnpackedAtCompileTime) {
+    auto image = testImage(6, 5, GL_RGBA, GL_UNSIGNED_BYTE);
+    const auto frames = onBothBackends<Frame>([&image] {
+        auto copy = image;
+        flatView();
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, 1);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, 6);
+        const GLuint list = glGenLists(1);
+        glNewList(list, GL_COMPILE);
+        glPixelZoom(2, 2);
+        glRasterPos2i(4, 4);
+        glDrawPixels(5, 5, GL_RGBA, GL_UNSIGNED_BYTE, copy.data());
+        glCopyPixels(4, 4, 6, 6, GL_COLOR);
+        glEndList();
+        std::fill(copy.begin(), copy.end(), std::uint8_t{0});  // changed after compiling
+        glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+        glPixelZoom(1, 1);
+        glRasterPos2i(20, 2);
+        glCallList(list);
+        return readFrame(kWidth, kHeight);
+    }, kWidth, kHeight);
+    expectSameFrames(frames, "display list");
+}
+
+TEST(PixelRectangles, DrawAndCopyErrorsAndZoomQueriesEqualTheReference) {
+    const auto values = onBothBackends<std::vector<GLfloat>>([] {
+        std::vector<GLfloat> v;
+        const std::uint8_t pixels[64] = {};
+        const GLenum formats[] = {GL_RGBA, GL_LUMINANCE, 0x1234};
+        const GLenum types[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_BITMAP, 0x1234};
+        for (GLenum format : formats) {
+            for (GLenum type : types) {
+                glDrawPixels(1, 1, format, type, pixels);
+                v.push_back(static_cast<GLfloat>(glGetError()));
+                glDrawPixels(-1, 1, format, type, pixels);
+                v.push_back(static_cast<GLfloat>(glGetError()));
+            }
+        }
+        const GLenum copyTypes[] = {GL_COLOR, GL_RGBA, 0x1234};
+        for (GLenum type : copyTypes) {
+            glCopyPixels(0, 0, 2, 2, type);
+            v.push_back(static_cast<GLfloat>(glGetError()));
+            glCopyPixels(0, 0, -2, 2, type);
+            v.push_back(static_cast<GLfloat>(glGetError()));
+        }
+        glBegin(GL_POINTS);
+        glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+        glCopyPixels(0, 0, 1, 1, GL_COLOR);
+        glPixelZoom(2, 2);
+        glEnd();
+        v.push_back(static_cast<GLfloat>(glGetError()));
+        glPixelZoom(-2.5f, 0.25f);
+        GLfloat zoom[2];
+        glGetFloatv(GL_ZOOM_X, &zoom[0]);
+        glGetFloatv(GL_ZOOM_Y, &zoom[1]);
+        v.insert(v.end(), zoom, zoom + 2);
+        return v;
+    });
+    EXPECT_EQ(values.mygl, values.osmesa);
+}
