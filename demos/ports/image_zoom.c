@@ -2,7 +2,8 @@
  * colour gradient, made in the program, drawn with glDrawPixels at the lower left; glPixelZoom
  * grows it frame by frame (or follows the mouse while a button is held); glCopyPixels copies
  * the image's lower-left quarter to the right, mirrored by a negative zoom, and a small part of
- * the window onto itself, overlapping. A grey bar behind the image shows the depth test. */
+ * the image onto itself, overlapping. A grey bar in front of the image shows the depth test
+ * at the raster position's depth. */
 #include <mygl/glut.h>
 #include <mygl/glu.h>
 
@@ -29,7 +30,7 @@ static void makeImage(void) {
 }
 
 static void init(void) {
-    glClearColor(0.1f, 0.1f, 0.15f, 0.0f);
+    glClearColor(0.1f, 0.1f, 0.15f, 1.0f);
     glShadeModel(GL_FLAT);
     glEnable(GL_DEPTH_TEST);
     makeImage();
@@ -53,10 +54,10 @@ static void display(void) {
     glPixelZoom(-1.5f, 2.0f);
     glRasterPos2i(240, 120);
     glCopyPixels(4, 4, 32, 32, GL_COLOR);
-    /* An overlapping copy, shifted by a few pixels. */
+    /* The image's top band copied onto itself, shifted up and right: the rectangles overlap. */
     glPixelZoom(1.0f, 1.0f);
-    glRasterPos2i(150, 20);
-    glCopyPixels(140, 10, 60, 40, GL_COLOR);
+    glRasterPos2i(20, 70);
+    glCopyPixels(4, 60, 60, 40, GL_COLOR);
     glutSwapBuffers();
 }
 
