@@ -1,6 +1,5 @@
 // What glPushAttrib and glPushClientAttrib save of each attribute group (GL 1.1's state tables),
-// over the state MyGL has. Groups MyGL has no state of yet (GL_ACCUM_BUFFER_BIT,
-// GL_PIXEL_MODE_BIT) save nothing.
+// over the state MyGL has. Groups MyGL has no state of yet (GL_ACCUM_BUFFER_BIT) save nothing.
 #include <tuple>
 
 #include "attrib_stack.h"
@@ -96,6 +95,7 @@ const AttribGroup kServerGroups[] = {
      }>},
     {GL_HINT_BIT, {}, saveFields<[](auto& s) { return std::tie(s.hints); }>},
     {GL_LIST_BIT, {}, saveFields<[](auto& s) { return std::tie(s.lists.base); }>},
+    {GL_PIXEL_MODE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.pixelModes); }>},
 };
 
 const AttribGroup kClientGroups[] = {

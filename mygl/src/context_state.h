@@ -18,6 +18,7 @@
 #include "selection.h"
 #include "stack_matrix.h"
 #include "mygl/context.h"
+#include "pixel_modes.h"
 #include "pixel_store.h"
 #include "texture_state.h"
 
@@ -106,7 +107,8 @@ struct Context::State {
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
     PixelStoreModes pack, unpack;  // glPixelStore
-    float zoomX = 1.0f, zoomY = 1.0f;  // glPixelZoom
+    PixelModes pixelModes;  // glPixelTransfer, glPixelZoom
+    PixelMaps pixelMaps;    // glPixelMap
     TextureUnit textures;  // (issue 16)
     DisplayLists lists;
     ClientArrays arrays;

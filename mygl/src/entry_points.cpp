@@ -17,7 +17,7 @@ const std::vector<EntryPoint>& implementedTable() {
         std::vector<EntryPoint> all;
         for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
-                          pixelRectangleEntryPoints(),
+                          pixelRectangleEntryPoints(), pixelModeEntryPoints(),
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
                           clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
                           polygonOffsetEntryPoints(), textureEntryPoints(), textureParameterEntryPoints(),

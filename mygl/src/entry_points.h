@@ -28,6 +28,7 @@ std::span<const EntryPoint> listEntryPoints();
 std::span<const EntryPoint> arrayEntryPoints();
 std::span<const EntryPoint> rasterPosEntryPoints();
 std::span<const EntryPoint> pixelRectangleEntryPoints();
+std::span<const EntryPoint> pixelModeEntryPoints();
 std::span<const EntryPoint> lightingEntryPoints();
 std::span<const EntryPoint> selectionEntryPoints();
 std::span<const EntryPoint> attribStackEntryPoints();

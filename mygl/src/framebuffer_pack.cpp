@@ -34,35 +34,42 @@ void putByteComponent(std::uint8_t* p, std::uint32_t c, GLenum type, bool swap) 
     }
 }
 
-// A float component (luminance formats go through floats) as `type`: v * max in float, rounded
-// to nearest; 32-bit results wrap as the reference's do (luminance 1 reads as INT_MIN and 0).
+// A float component (luminance formats and transferred colours go through floats) as `type`:
+// unsigned types clamp below 0 and above 1, signed ones below -1 and above 1, floats keep
+// it; in range, v * max in float rounded to nearest, 32-bit results wrapping as the
+// reference's do (1 reads as INT_MIN and 0).
 void putFloatComponent(std::uint8_t* p, float v, GLenum type, bool swap) {
-    const auto scaled = [v](float max) { return std::llrint(v * max); };
+    const bool isSigned = type == GL_BYTE || type == GL_SHORT || type == GL_INT;
+    const float low = isSigned ? -1.0f : 0.0f;
+    const auto scaled = [v, low](float max) {
+        if (v < low) return std::llrint(low * max);
+        return v > 1.0f ? static_cast<long long>(max) : std::llrint(v * max);
+    };
     switch (type) {
     case GL_UNSIGNED_BYTE: return put(p, static_cast<std::uint8_t>(scaled(255.0f)), swap);
     case GL_BYTE: return put(p, static_cast<std::int8_t>(scaled(127.0f)), swap);
     case GL_UNSIGNED_SHORT: return put(p, static_cast<std::uint16_t>(scaled(65535.0f)), swap);
     case GL_SHORT: return put(p, static_cast<std::int16_t>(scaled(32767.0f)), swap);
-    case GL_UNSIGNED_INT: return put(p, static_cast<std::uint32_t>(scaled(4294967295.0f)), swap);
-    case GL_INT: return put(p, static_cast<std::int32_t>(scaled(2147483647.0f)), swap);
+    case GL_UNSIGNED_INT:
+        return put(p, v > 1.0f ? 4294967295u : static_cast<std::uint32_t>(scaled(4294967295.0f)), swap);
+    case GL_INT: return put(p, v > 1.0f ? 2147483647 : static_cast<std::int32_t>(scaled(2147483647.0f)), swap);
     case GL_FLOAT: return put(p, v, swap);
     default: return;
     }
 }
 
-// A 24-bit depth as `type`, with the reference's depth packing: truncation for bytes and
-// shorts (signed ones as (trunc(z * 2^n - 1) - 1) / 2), rounding for unsigned shorts, the 24
-// bits replicated into 32 for unsigned ints (its fast path; with swapped bytes it goes through
-// the float, truncated).
-void putDepth(std::uint8_t* p, std::uint32_t depth24, GLenum type, bool swap) {
-    const float z = static_cast<float>(depth24) / static_cast<float>(glrenderer::kDepthMax24);
+// A depth as `type`, with the reference's depth packing: truncation for bytes and shorts
+// (signed ones as (trunc(z * 2^n - 1) - 1) / 2), rounding for unsigned shorts, the 24 bits
+// replicated into 32 for unsigned ints (its fast path: without swapped bytes or a depth
+// transfer; otherwise through the float, truncated). `z` is the depth24's float, transferred.
+void putDepth(std::uint8_t* p, std::uint32_t depth24, float z, bool fastPath, GLenum type, bool swap) {
     switch (type) {
     case GL_UNSIGNED_BYTE: return put(p, static_cast<std::uint8_t>(static_cast<int>(z * 255.0f)), swap);
     case GL_BYTE: return put(p, static_cast<std::int8_t>((static_cast<int>(z * 255.0f) - 1) / 2), swap);
     case GL_UNSIGNED_SHORT: return put(p, static_cast<std::uint16_t>(std::lrint(z * 65535.0f)), swap);
     case GL_SHORT: return put(p, static_cast<std::int16_t>((static_cast<int>(z * 65535.0f) - 1) / 2), swap);
     case GL_UNSIGNED_INT:
-        if (swap) return put(p, static_cast<std::uint32_t>(static_cast<double>(z) * 4294967295.0), swap);
+        if (!fastPath) return put(p, static_cast<std::uint32_t>(static_cast<double>(z) * 4294967295.0), swap);
         return put(p, (depth24 << 8) | (depth24 >> 16), swap);
     case GL_INT: return put(p, static_cast<std::int32_t>(2147483647.0 * static_cast<double>(z)), swap);
     case GL_FLOAT: return put(p, z, swap);
@@ -103,9 +110,30 @@ std::array<int, 4> byteOrderOf(GLenum format) {
 }  // namespace
 
 void packColors(std::span<const std::uint32_t> rgba8, int width, int height, GLenum format, GLenum type,
-                const PixelStoreModes& modes, const PackTarget& target) {
+                const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps,
+                const PackTarget& target) {
     const bool swap = modes.swapBytes;
     const std::size_t step = bytesOfType(type);
+    if (pixel.transfersColor()) {
+        // Through floats (each byte times 1/255) and the transfer, unclamped; luminance as the
+        // sum of the components clamped to [0, 1], clamped again.
+        const std::array<int, 4> order = byteOrderOf(format);
+        packRows(width, height, format, type, modes, target, [&](std::uint8_t* p, std::size_t i) {
+            glm::vec4 c;
+            for (int k = 0; k < 4; ++k) c[k] = static_cast<float>((rgba8[i] >> (8 * k)) & 0xFFu) * (1.0f / 255.0f);
+            c = pixel.transferColor(c, maps);
+            if (format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA) {
+                const auto unit = [](float v) { return std::clamp(v, 0.0f, 1.0f); };
+                putFloatComponent(p, std::min(unit(c.r) + unit(c.g) + unit(c.b), 1.0f), type, swap);
+                if (format == GL_LUMINANCE_ALPHA) putFloatComponent(p + step, c.a, type, swap);
+                return;
+            }
+            for (int k = 0; k < 4 && order[static_cast<std::size_t>(k)] >= 0; ++k, p += step) {
+                putFloatComponent(p, c[order[static_cast<std::size_t>(k)]], type, swap);
+            }
+        });
+        return;
+    }
     if (format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA) {
         // The reference goes through floats (each byte times 1/255, summed red first, clamped).
         packRows(width, height, format, type, modes, target, [&](std::uint8_t* p, std::size_t i) {
@@ -124,9 +152,14 @@ void packColors(std::span<const std::uint32_t> rgba8, int width, int height, GLe
 }
 
 void packDepths(std::span<const std::uint32_t> depth24, int width, int height, GLenum type,
-                const PixelStoreModes& modes, const PackTarget& target) {
-    packRows(width, height, GL_DEPTH_COMPONENT, type, modes, target,
-             [&](std::uint8_t* p, std::size_t i) { putDepth(p, depth24[i], type, modes.swapBytes); });
+                const PixelStoreModes& modes, const PixelModes& pixel, const PackTarget& target) {
+    const bool transfer = pixel.transfersDepth();
+    const bool fastPath = !transfer && !modes.swapBytes;
+    packRows(width, height, GL_DEPTH_COMPONENT, type, modes, target, [&](std::uint8_t* p, std::size_t i) {
+        float z = static_cast<float>(depth24[i]) / static_cast<float>(glrenderer::kDepthMax24);
+        if (transfer) z = pixel.transferDepth(z);
+        putDepth(p, depth24[i], z, fastPath, type, modes.swapBytes);
+    });
 }
 
 }  // namespace mygl

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <span>
 
+#include "pixel_modes.h"
 #include "pixel_store.h"
 
 namespace mygl {
@@ -17,12 +18,14 @@ struct PackTarget {
     std::size_t skipColumns, skipRows;
 };
 
-// width x height RGBA8 words (red in the low byte), bottom row first. `format` is a colour
-// format other than GL_COLOR_INDEX, `type` not GL_BITMAP.
+// width x height RGBA8 words (red in the low byte), bottom row first, through the pixel
+// transfer of `pixel`. `format` is a colour format other than GL_COLOR_INDEX, `type` not GL_BITMAP.
 void packColors(std::span<const std::uint32_t> rgba8, int width, int height, GLenum format, GLenum type,
-                const PixelStoreModes& modes, const PackTarget& target);
-// width x height 24-bit depths, bottom row first; `type` not GL_BITMAP.
+                const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps,
+                const PackTarget& target);
+// width x height 24-bit depths, bottom row first, through the depth scale and bias; `type` not
+// GL_BITMAP.
 void packDepths(std::span<const std::uint32_t> depth24, int width, int height, GLenum type,
-                const PixelStoreModes& modes, const PackTarget& target);
+                const PixelStoreModes& modes, const PixelModes& pixel, const PackTarget& target);
 
 }  // namespace mygl

@@ -8,6 +8,7 @@
 #include "entry_points.h"
 #include "fog_state.h"
 #include "polygon_offset_state.h"
+#include "pixel_modes.h"
 #include "textures.h"
 #include "gl12_lighting_enums.h"
 
@@ -74,8 +75,6 @@ Value query(const Context::State& s, GLenum name) {
     case GL_STENCIL_BITS: return one(0);
     case GL_SUBPIXEL_BITS: return one(8);
     case GL_PACK_ALIGNMENT: return one(s.pack.alignment);
-    case GL_ZOOM_X: return one(s.zoomX);
-    case GL_ZOOM_Y: return one(s.zoomY);
     case GL_UNPACK_ALIGNMENT: return one(s.unpack.alignment);
     case GL_PACK_ROW_LENGTH: return one(s.pack.rowLength);
     case GL_UNPACK_ROW_LENGTH: return one(s.unpack.rowLength);
@@ -149,6 +148,9 @@ Value query(const Context::State& s, GLenum name) {
         if (const std::optional<bool> enabled = textureCapability(s, name)) return flag(*enabled);
         if (const std::optional<bool> enabled = texGenCapability(s, name)) return flag(*enabled);
         if (std::optional<std::vector<double>> texture = textureQuery(s, name)) return Value{*texture};
+        if (const std::optional<double> pixel = pixelModeValue(s.pixelModes, s.pixelMaps, name)) {
+            return name == GL_MAP_COLOR || name == GL_MAP_STENCIL ? flag(*pixel != 0.0) : one(*pixel);
+        }
         return {};
     }
 }

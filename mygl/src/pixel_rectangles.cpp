@@ -21,6 +21,30 @@ bool imageCorner(const Context::State& s, int& x, int& y) {
     return true;
 }
 
+// The image's colours through the pixel transfer, as the reference's drawing program applies
+// it. With GL_MAP_COLOR its blue and alpha lookup samples the image itself (the texture unit of
+// the image, not of the maps: measured): blue takes the red and alpha the green of the image's
+// texel at (floor(b * width), floor(a * height)), clamped, rows counted as its texture stores them.
+std::vector<glm::vec4> transferredImage(const Context::State& s, int width, int height,
+                                        const std::vector<glm::vec4>& colors, bool topRowFirst) {
+    std::vector<glm::vec4> out(colors.size());
+    std::transform(colors.begin(), colors.end(), out.begin(),
+                   [&s](const glm::vec4& c) { return s.pixelModes.transferDrawnColor(c, s.pixelMaps); });
+    if (!s.pixelModes.mapColor) return out;
+    const auto texel = [](float c, int size) {
+        return static_cast<int>(std::clamp(std::floor(c * static_cast<float>(size)), 0.0f, static_cast<float>(size - 1)));
+    };
+    for (glm::vec4& c : out) {
+        const int column = texel(c.b, width), row = texel(c.a, height);
+        const int storedRow = topRowFirst ? height - 1 - row : row;
+        const glm::vec4& sampled = colors[static_cast<std::size_t>(storedRow) * static_cast<std::size_t>(width) +
+                                          static_cast<std::size_t>(column)];
+        c.b = sampled.r;
+        c.a = sampled.g;
+    }
+    return out;
+}
+
 // Draws width x height colours (bottom row first) at the raster position, zoomed.
 void drawColors(Context::State& s, int width, int height, const std::vector<glm::vec4>& colors,
                 bool topRowFirst = false) {
@@ -29,9 +53,11 @@ void drawColors(Context::State& s, int width, int height, const std::vector<glm:
     if (!imageCorner(s, image.x, image.y)) return;
     image.width = width;
     image.height = height;
-    image.zoomX = s.zoomX;
-    image.zoomY = s.zoomY;
-    image.colors = colors;
+    std::vector<glm::vec4> transferred;
+    if (s.pixelModes.transfersColor()) transferred = transferredImage(s, width, height, colors, topRowFirst);
+    image.zoomX = s.pixelModes.zoomX;
+    image.zoomY = s.pixelModes.zoomY;
+    image.colors = transferred.empty() ? colors : transferred;
     image.z = s.rasterPosition.z;
     image.topRowFirst = topRowFirst;
     drawCachedBitmaps(s);
@@ -87,7 +113,7 @@ std::vector<glm::vec4> windowColors(const glrenderer::Framebuffer& fb, GLint x, 
             if (windowX < 0 || windowX >= fb.width()) continue;
             const std::uint32_t word = fb.color()[static_cast<std::size_t>(windowY * fb.width() + windowX)];
             glm::vec4& c = colors[static_cast<std::size_t>(row * width + column)];
-            for (int i = 0; i < 4; ++i) c[i] = static_cast<float>((word >> (8 * i)) & 0xFFu) / 255.0f;
+            for (int i = 0; i < 4; ++i) c[i] = static_cast<float>((word >> (8 * i)) & 0xFFu) * (1.0f / 255.0f);
         }
     }
     return colors;
@@ -106,7 +132,7 @@ Run insideWindow(std::int64_t start, std::int64_t length, int limit) {
 // cut to the window) when nothing would change them on the way, at zoom 1, and the cut
 // rectangles do not overlap (Mesa's blit_copy_pixels). Returns false when it would draw them.
 bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei height, int targetX, int targetY) {
-    const bool plainCopy = s.zoomX == 1.0f && s.zoomY == 1.0f &&
+    const bool plainCopy = s.pixelModes.zoomX == 1.0f && s.pixelModes.zoomY == 1.0f &&
                            (!s.draw.depthTest || (s.draw.depthFunc == glrenderer::CompareFunc::Always && !s.draw.depthWrite)) &&
                            s.draw.fog.mode == glrenderer::FogMode::Off;
     if (!plainCopy) return false;
@@ -153,8 +179,8 @@ void copyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
 void pixelZoom(GLfloat x, GLfloat y) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    s->zoomX = x;
-    s->zoomY = y;
+    s->pixelModes.zoomX = x;
+    s->pixelModes.zoomY = y;
 }
 
 const EntryPoint kEntryPoints[] = {

@@ -33,8 +33,9 @@ float component(const std::uint8_t* p, GLenum type, bool swapBytes) {
 
 // As component(), with 32-bit integers first narrowed to the 16 bits of the texture the
 // reference's glDrawPixels keeps them in: unsigned rounded ((x * 65535 + 2^31 - 1) / (2^32 - 1)),
-// signed by their top 16 bits.
+// signed by their top 16 bits; unsigned bytes as its sampler reads them, x * (1 / 255).
 float drawnComponent(const std::uint8_t* p, GLenum type, bool swapBytes) {
+    if (type == GL_UNSIGNED_BYTE) return static_cast<float>(*p) * (1.0f / 255.0f);
     if (type == GL_UNSIGNED_INT) {
         const std::uint64_t wide = readComponent<std::uint32_t>(p, swapBytes);
         return static_cast<float>((wide * 65535u + 0x7FFFFFFFu) / 0xFFFFFFFFu) / 65535.0f;

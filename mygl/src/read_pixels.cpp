@@ -62,11 +62,11 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
     const int w = static_cast<int>(columns.count), h = static_cast<int>(rows.count);
     if (format == GL_DEPTH_COMPONENT) {
         const auto depths = wordsInside(fb.depth().data(), fb.width(), x, y, columns, rows);
-        return packDepths(depths, w, h, type, s->pack, target);
+        return packDepths(depths, w, h, type, s->pack, s->pixelModes, target);
     }
     if (isColorFormat(format)) {
         const auto colors = wordsInside(fb.color().data(), fb.width(), x, y, columns, rows);
-        packColors(colors, w, h, format, type, s->pack, target);
+        packColors(colors, w, h, format, type, s->pack, s->pixelModes, s->pixelMaps, target);
     }
 }
 

@@ -161,6 +161,8 @@ std::size_t texSubImage2DBytes(GLenum, GLint, GLint, GLint, GLsizei w, GLsizei h
 std::size_t drawPixelsBytes(GLsizei w, GLsizei h, GLenum format, GLenum type, const void*) {
     return imageBytes(w, h, format, type);
 }
+template <class T>
+std::size_t pixelMapCount(GLenum, GLsizei n, const T*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
 std::size_t namesCount(GLsizei n, const GLuint*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
 std::size_t generatedCount(GLsizei n, GLuint*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
 std::size_t priorityCount(GLsizei n, const GLuint*, const GLclampf*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
@@ -241,6 +243,8 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glTexCoord4dv, 4) X(glad_glTexCoord4fv, 4) X(glad_glTexCoord4iv, 4) X(glad_glTexCoord4sv, 4)      \
     X(glad_glPixelStoref, 0) \
     X(glad_glDrawPixels, drawPixelsBytes) X(glad_glCopyPixels, 0) X(glad_glPixelZoom, 0) \
+    X(glad_glPixelTransferf, 0) X(glad_glPixelTransferi, 0) X(glad_glPixelMapfv, pixelMapCount<GLfloat>) \
+    X(glad_glPixelMapuiv, pixelMapCount<GLuint>) X(glad_glPixelMapusv, pixelMapCount<GLushort>) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
     X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4) \
     X(glad_glMap1f, map1Count<GLfloat>) X(glad_glMap1d, map1Count<GLdouble>) X(glad_glMap2f, map2Count<GLfloat>) \

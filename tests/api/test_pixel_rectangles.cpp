@@ -5,6 +5,7 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -366,4 +367,151 @@ TEST(PixelRectangles, DrawAndCopyErrorsAndZoomQueriesEqualTheReference) {
         return v;
     });
     EXPECT_EQ(values.mygl, values.osmesa);
+}
+
+namespace {
+
+// Scales and biases, colour maps of several sizes and a depth transfer (`withMaps`: MAP_COLOR on).
+void applyTransfer(bool withMaps) {
+    glPixelTransferf(GL_RED_SCALE, 0.8f);
+    glPixelTransferf(GL_GREEN_SCALE, 1.7f);
+    glPixelTransferf(GL_BLUE_BIAS, 0.15f);
+    glPixelTransferf(GL_ALPHA_SCALE, -0.5f);
+    glPixelTransferf(GL_ALPHA_BIAS, 0.9f);
+    glPixelTransferf(GL_RED_BIAS, -0.1f);
+    glPixelTransferf(GL_DEPTH_SCALE, 0.7f);
+    glPixelTransferf(GL_DEPTH_BIAS, 0.2f);
+    if (!withMaps) return;
+    std::vector<GLfloat> ramp(37);
+    for (std::size_t i = 0; i < ramp.size(); ++i) ramp[i] = static_cast<GLfloat>((i * 7) % 37) / 36.0f;
+    glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 37, ramp.data());
+    const GLuint green[] = {0u, 4294967295u, 1000000000u};
+    glPixelMapuiv(GL_PIXEL_MAP_G_TO_G, 3, green);
+    const GLushort blue[] = {65535, 0, 30000, 12345, 54321};
+    glPixelMapusv(GL_PIXEL_MAP_B_TO_B, 5, blue);
+    glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+}
+
+}  // namespace
+
+TEST(PixelRectangles, ReadPixelsThroughScaleBiasAndMapsEqualsTheReference) {
+    for (int maps = 0; maps < 2; ++maps) {
+        const auto bytes = onBothBackends<std::vector<std::uint8_t>>([maps] {
+            colorfulScene();
+            applyTransfer(maps != 0);
+            std::vector<std::uint8_t> all;
+            for (GLenum format : {GL_RGBA, GL_RGB, GL_GREEN, GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_DEPTH_COMPONENT}) {
+                for (GLenum type : kTypes) {
+                    std::vector<std::uint8_t> memory(kWidth * kHeight * 16, 0xA5);
+                    glReadPixels(0, 0, kWidth, kHeight, format, type, memory.data());
+                    all.insert(all.end(), memory.begin(), memory.end());
+                }
+            }
+            return all;
+        }, kWidth, kHeight);
+        ASSERT_EQ(bytes.mygl.size(), bytes.osmesa.size());
+        const auto differs = std::mismatch(bytes.mygl.begin(), bytes.mygl.end(), bytes.osmesa.begin());
+        if (differs.first == bytes.mygl.end()) continue;
+        const auto at = static_cast<std::size_t>(differs.first - bytes.mygl.begin());
+        const std::size_t perRead = kWidth * kHeight * 16;
+        ADD_FAILURE() << (maps ? "with colour maps" : "scale and bias") << ": read " << at / perRead << " (format, type) byte "
+                      << at % perRead << " is " << int{*differs.first} << ", the reference's " << int{*differs.second};
+    }
+}
+
+TEST(PixelRectangles, DrawAndCopyPixelsThroughScaleBiasAndMapsEqualTheReference) {
+    const auto image = testImage(12, 10, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (int maps = 0; maps < 2; ++maps) {
+        const auto frames = onBothBackends<Frame>([&] {
+            flatView();
+            colorfulScene();
+            glDisable(GL_DEPTH_TEST);
+            flatView();
+            applyTransfer(maps != 0);
+            glRasterPos2i(2, 3);
+            glDrawPixels(12, 10, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+            glPixelZoom(1.5f, 1.0f);
+            glRasterPos2i(20, 12);
+            glCopyPixels(0, 0, 14, 12, GL_COLOR);
+            return readFrame(kWidth, kHeight);
+        }, kWidth, kHeight);
+        expectSameFrames(frames, maps ? "with colour maps" : "scale and bias");
+    }
+}
+
+TEST(PixelRectangles, PixelModeStateQueriesErrorsAndAttribGroupEqualTheReference) {
+    const auto values = onBothBackends<std::vector<double>>([] {
+        std::vector<double> v;
+        const auto error = [&v] { v.push_back(static_cast<double>(glGetError())); };
+        const GLenum names[] = {GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT, GL_INDEX_OFFSET, GL_RED_SCALE, GL_GREEN_SCALE,
+                                GL_BLUE_SCALE, GL_ALPHA_SCALE, GL_RED_BIAS, GL_GREEN_BIAS, GL_BLUE_BIAS, GL_ALPHA_BIAS,
+                                GL_DEPTH_SCALE, GL_DEPTH_BIAS, GL_ZOOM_X, GL_ZOOM_Y, GL_MAX_PIXEL_MAP_TABLE,
+                                GL_PIXEL_MAP_I_TO_I_SIZE, GL_PIXEL_MAP_S_TO_S_SIZE, GL_PIXEL_MAP_I_TO_R_SIZE,
+                                GL_PIXEL_MAP_I_TO_A_SIZE, GL_PIXEL_MAP_R_TO_R_SIZE, GL_PIXEL_MAP_G_TO_G_SIZE,
+                                GL_PIXEL_MAP_B_TO_B_SIZE, GL_PIXEL_MAP_A_TO_A_SIZE};
+        const auto queryAll = [&] {
+            for (GLenum name : names) {
+                GLfloat f = -7;
+                GLint i = -7;
+                GLboolean b = 7;
+                glGetFloatv(name, &f);
+                glGetIntegerv(name, &i);
+                glGetBooleanv(name, &b);
+                v.insert(v.end(), {f, double(i), double(b)});
+            }
+            error();
+            const GLenum maps[] = {GL_PIXEL_MAP_I_TO_I, GL_PIXEL_MAP_S_TO_S, GL_PIXEL_MAP_I_TO_G, GL_PIXEL_MAP_R_TO_R,
+                                   GL_PIXEL_MAP_G_TO_G, GL_PIXEL_MAP_A_TO_A};
+            for (GLenum map : maps) {
+                GLfloat f[256] = {};
+                GLuint ui[256] = {};
+                GLushort us[256] = {};
+                glGetPixelMapfv(map, f);
+                glGetPixelMapuiv(map, ui);
+                glGetPixelMapusv(map, us);
+                for (int i = 0; i < 8; ++i) v.insert(v.end(), {f[i], double(ui[i]), double(us[i])});
+            }
+            error();
+        };
+        queryAll();
+        glPushAttrib(GL_PIXEL_MODE_BIT);
+        glPixelTransferi(GL_INDEX_SHIFT, -3);
+        glPixelTransferf(GL_INDEX_OFFSET, 2.7f);
+        glPixelTransferi(GL_MAP_STENCIL, 5);
+        glPixelTransferf(GL_GREEN_BIAS, -0.25f);
+        glPixelZoom(-2.0f, 0.5f);
+        applyTransfer(true);
+        const GLfloat indexValues[] = {3.5f, -2.0f, 700.25f, 1e6f};
+        glPixelMapfv(GL_PIXEL_MAP_I_TO_I, 4, indexValues);
+        glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 2, indexValues);
+        const GLfloat colors[] = {-0.5f, 0.25f, 1.5f};
+        glPixelMapfv(GL_PIXEL_MAP_A_TO_A, 3, colors);
+        const GLuint stencil[] = {9u, 4000000000u};
+        glPixelMapuiv(GL_PIXEL_MAP_S_TO_S, 2, stencil);
+        queryAll();
+        // Errors: a bad parameter or map, sizes out of range, index maps not a power of two.
+        glPixelTransferf(0x1234, 1.0f);
+        error();
+        glPixelMapfv(0x1234, 1, colors);
+        error();
+        glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 0, colors);
+        error();
+        glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 257, colors);
+        error();
+        glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 3, colors);
+        error();
+        glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 3, colors);
+        error();
+        glGetPixelMapfv(0x1234, nullptr);
+        error();
+        glBegin(GL_POINTS);
+        glPixelTransferf(GL_RED_SCALE, 2.0f);
+        glEnd();
+        error();
+        glPopAttrib();
+        queryAll();
+        return v;
+    });
+    ASSERT_EQ(values.mygl.size(), values.osmesa.size());
+    for (std::size_t i = 0; i < values.mygl.size(); ++i) EXPECT_EQ(values.mygl[i], values.osmesa[i]) << "value " << i;
 }
