@@ -40,6 +40,8 @@ std::span<const Scene> allScenes() {
         {"bench-fog-terrain", "benchmark: the 100k-triangle terrain under LINEAR fog, depth-tested", drawBenchFogTerrain},
         {"bench-textured-cubes", "benchmark: the 1000 cubes textured (64x64 mipmaps, LINEAR_MIPMAP_LINEAR, MODULATE)",
          drawBenchTexturedCubes},
+        {"bench-draw-pixels", "benchmark: a 256x256 RGBA image drawn with glDrawPixels, zoomed over the window",
+         drawBenchDrawPixels},
     };
     return scenes;
 }
