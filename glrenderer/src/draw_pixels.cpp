@@ -24,8 +24,12 @@ std::shared_ptr<const Texture> imageTexture(const PixelImage& image) {
     texture->height[0] = static_cast<std::uint32_t>(image.height);
     texture->powerOfTwoWidth = std::has_single_bit(texture->width[0]);
     texture->powerOfTwoHeight = std::has_single_bit(texture->height[0]);
-    texture->texels.resize(image.colors.size());
-    std::transform(image.colors.begin(), image.colors.end(), texture->texels.begin(), fragmentRgba8);
+    if (image.colors.empty()) {
+        texture->texels.assign(image.words.begin(), image.words.end());
+    } else {
+        texture->texels.resize(image.colors.size());
+        std::transform(image.colors.begin(), image.colors.end(), texture->texels.begin(), fragmentRgba8);
+    }
     if (image.topRowFirst) {
         const auto width = static_cast<std::ptrdiff_t>(image.width);
         for (std::ptrdiff_t low = 0, high = image.height - 1; low < high; ++low, --high) {
@@ -60,7 +64,8 @@ constexpr VertexTransform kQuadTransform{kIdentity, Matrix{}};
 }  // namespace
 
 void Pipeline::drawPixels(const DrawState& state, const PixelImage& image) {
-    if (image.width <= 0 || image.height <= 0) return;
+    const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+    if (image.width <= 0 || image.height <= 0 || (image.colors.size() != pixels && image.words.size() != pixels)) return;
     const float left = static_cast<float>(image.x), bottom = static_cast<float>(image.y);
     const float right = left + static_cast<float>(image.width) * image.zoomX;
     const float top = bottom + static_cast<float>(image.height) * image.zoomY;

@@ -3,6 +3,7 @@
 // glrenderer::PixelImage).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "compiled.h"
@@ -45,24 +46,41 @@ std::vector<glm::vec4> transferredImage(const Context::State& s, int width, int 
     return out;
 }
 
-// Draws width x height colours (bottom row first) at the raster position, zoomed.
-void drawColors(Context::State& s, int width, int height, const std::vector<glm::vec4>& colors,
-                bool topRowFirst = false) {
-    if (!s.rasterValid || s.renderMode != GL_RENDER) return;
-    glrenderer::PixelImage image;
-    if (!imageCorner(s, image.x, image.y)) return;
-    image.width = width;
-    image.height = height;
-    std::vector<glm::vec4> transferred;
-    if (s.pixelModes.transfersColor()) transferred = transferredImage(s, width, height, colors, topRowFirst);
+// Draws `image` (its size and colours or words set) at the raster position, zoomed.
+void drawImage(Context::State& s, glrenderer::PixelImage image) {
+    if (!s.rasterValid || s.renderMode != GL_RENDER || !imageCorner(s, image.x, image.y)) return;
     image.zoomX = s.pixelModes.zoomX;
     image.zoomY = s.pixelModes.zoomY;
-    image.colors = transferred.empty() ? colors : transferred;
     image.z = s.rasterPosition.z;
-    image.topRowFirst = topRowFirst;
     drawCachedBitmaps(s);
     endBatch(s);
     s.pipeline.drawPixels(s.draw, image);
+}
+
+// Draws width x height colours (bottom row first) through the pixel transfer.
+void drawColors(Context::State& s, int width, int height, const std::vector<glm::vec4>& colors,
+                bool topRowFirst = false) {
+    glrenderer::PixelImage image;
+    image.width = width;
+    image.height = height;
+    image.topRowFirst = topRowFirst;
+    std::vector<glm::vec4> transferred;
+    if (s.pixelModes.transfersColor()) transferred = transferredImage(s, width, height, colors, topRowFirst);
+    image.colors = transferred.empty() ? colors : transferred;
+    drawImage(s, image);
+}
+
+// RGBA unsigned bytes with no transfer are the fragment colour words themselves: copied row by
+// row, no colour conversion.
+std::vector<std::uint32_t> rgbaWords(const void* pixels, int width, int height, const PixelStoreModes& modes) {
+    const ClientLayout layout = clientLayout(width, GL_RGBA, GL_UNSIGNED_BYTE, modes);
+    std::vector<std::uint32_t> words(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    const auto* first = static_cast<const std::uint8_t*>(pixels) + layout.firstByte;
+    for (std::size_t row = 0; row < static_cast<std::size_t>(height); ++row) {
+        std::memcpy(words.data() + row * static_cast<std::size_t>(width), first + row * layout.rowStride,
+                    static_cast<std::size_t>(width) * sizeof(std::uint32_t));
+    }
+    return words;
 }
 
 bool isColorFormat(GLenum format) {
@@ -85,6 +103,14 @@ void drawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const
     if (!s) return;
     if (const GLenum error = drawPixelsError(width, height, format, type)) return setError(*s, error);
     if (!pixels || width == 0 || height == 0 || !s->rasterValid || s->renderMode != GL_RENDER) return;
+    if (format == GL_RGBA && type == GL_UNSIGNED_BYTE && !s->pixelModes.transfersColor()) {
+        const std::vector<std::uint32_t> words = rgbaWords(pixels, width, height, s->unpack);
+        glrenderer::PixelImage image;
+        image.width = width;
+        image.height = height;
+        image.words = words;
+        return drawImage(*s, image);
+    }
     drawColors(*s, width, height, unpackDrawnImage(pixels, width, height, format, type, s->unpack));
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <span>
 
 #include <glm/vec4.hpp>
@@ -15,6 +16,8 @@ struct PixelImage {
     int width = 0, height = 0;
     float zoomX = 1, zoomY = 1;
     std::span<const glm::vec4> colors;
+    // Or, with no colours, the image as fragment colour words already (RGBA8, red in the low byte).
+    std::span<const std::uint32_t> words;
     float z = 0;  // window depth in [0, 1] of every fragment
     // glCopyPixels' texture holds the rows top first, with t = 0 at the quad's top: the same
     // texels, but a centre on a texel boundary may fall the other way.
