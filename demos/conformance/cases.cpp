@@ -418,8 +418,8 @@ void addTextureCases(std::vector<Case>& out) {
 }
 
 // Pixel rectangles: glDrawPixels and glCopyPixels at several zooms over a depth-tested
-// triangle, in window coordinates; float images beyond [0, 1] under fog (without the depth
-// test the reference fogs them unclamped: an expected difference).
+// triangle, in window coordinates; float images beyond [0, 1] under fog (which the reference
+// may fog unclamped: an expected difference).
 void addPixelRectangleCases(std::vector<Case>& out) {
     struct Zoom {
         const char* name;

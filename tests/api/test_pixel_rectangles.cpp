@@ -232,8 +232,8 @@ TEST(PixelRectangles, ZoomedImagesCoverThePixelsTheReferenceCovers) {
 }
 
 TEST(PixelRectangles, ImagesAreDepthTestedAndFoggedAtTheRasterPosition) {
-    // (Bytes: a float image beyond [0, 1] is fogged unclamped by the reference when the depth
-    // test is off, see tests/conformance/expected_differences.txt.)
+    // (Bytes: the reference may fog a float image's colours beyond [0, 1] unclamped, see
+    // tests/conformance/expected_differences.txt.)
     const auto image = testImage(16, 12, GL_RGB, GL_UNSIGNED_BYTE);
     const GLenum funcs[] = {GL_LESS, GL_GREATER, GL_EQUAL, GL_ALWAYS};
     for (GLenum func : funcs) {
