@@ -327,6 +327,69 @@ void addSmoothAndStippleCases(std::vector<Case>& out) {
     }
 }
 
+// Two overlapping smooth triangles of varying colour and alpha, at varying depths.
+void fragmentOpsLayer(float shift) {
+    glBegin(GL_TRIANGLES);
+    glColor4f(1.0f, 0.2f, 0.1f, 0.1f), glVertex3f(-0.9f + shift, -0.8f, -0.5f);
+    glColor4f(0.2f, 1.0f, 0.4f, 0.9f), glVertex3f(0.8f, -0.6f + shift, 0.5f);
+    glColor4f(0.3f, 0.3f, 1.0f, 0.5f), glVertex3f(-0.2f, 0.9f, 0.0f);
+    glColor4f(0.9f, 0.8f, 0.1f, 0.7f), glVertex3f(0.9f, 0.9f, 0.7f);
+    glColor4f(0.1f, 0.6f, 0.6f, 0.3f), glVertex3f(-0.7f + shift, 0.1f, -0.7f);
+    glColor4f(0.8f, 0.1f, 0.8f, 0.6f), glVertex3f(0.3f, -0.9f, 0.2f);
+    glEnd();
+}
+
+// The per-fragment operations (issue 16): each alpha function, each blend factor on each side,
+// each logic op, stencil functions and operations, scissor boxes and colour masks, drawn as a
+// second layer over a first.
+void addFragmentOpsCases(std::vector<Case>& out) {
+    const auto add = [&out](const std::string& name, std::function<void()> setUp) {
+        out.push_back({"fragment-ops", name, false, [setUp](int width, int height) {
+                           scenes::resetState(width, height);
+                           glClearStencil(0);
+                           glClear(GL_STENCIL_BUFFER_BIT);
+                           glPushAttrib(GL_ALL_ATTRIB_BITS);  // the contexts serve the next cases too
+                           glEnable(GL_DEPTH_TEST);
+                           glDepthFunc(GL_LEQUAL);
+                           glEnable(GL_STENCIL_TEST);
+                           glStencilOp(GL_KEEP, GL_INCR, GL_INCR);
+                           fragmentOpsLayer(0.3f);
+                           glDisable(GL_STENCIL_TEST);
+                           glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                           setUp();
+                           fragmentOpsLayer(0.0f);
+                           glPopAttrib();
+                       }});
+    };
+    static const GLenum kFuncs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+    static const GLenum kFactors[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
+                                      GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA,
+                                      GL_ONE_MINUS_DST_ALPHA, GL_SRC_ALPHA_SATURATE};
+    for (GLenum func : kFuncs) {
+        add("alpha_" + std::to_string(func), [func] { glEnable(GL_ALPHA_TEST), glAlphaFunc(func, 0.45f); });
+        add("stencil_" + std::to_string(func), [func] {
+            glEnable(GL_STENCIL_TEST), glStencilFunc(func, 1, 0xFF), glStencilOp(GL_INVERT, GL_DECR, GL_REPLACE);
+        });
+    }
+    for (GLenum factor : kFactors) {
+        add("blend_src_" + std::to_string(factor), [factor] { glEnable(GL_BLEND), glBlendFunc(factor, GL_ONE_MINUS_SRC_ALPHA); });
+        add("blend_dst_" + std::to_string(factor), [factor] { glEnable(GL_BLEND), glBlendFunc(GL_SRC_ALPHA, factor); });
+    }
+    for (GLenum op = GL_CLEAR; op <= GL_SET; ++op) {
+        add("logic_op_" + std::to_string(op), [op] { glEnable(GL_COLOR_LOGIC_OP), glLogicOp(op); });
+    }
+    for (int mask = 1; mask < 15; mask += 3) {
+        add("color_mask_" + std::to_string(mask), [mask] { glColorMask(mask & 1, mask & 2, mask & 4, mask & 8); });
+    }
+    const int boxes[][4] = {{10, 5, 30, 20}, {-20, -20, 40, 40}, {50, 30, 1000, 1000}, {0, 0, 0, 0}};
+    for (const auto& b : boxes) {
+        add("scissor_" + std::to_string(b[0]) + "_" + std::to_string(b[1]), [b] {
+            glEnable(GL_SCISSOR_TEST), glScissor(b[0], b[1], b[2], b[3]);
+            glClearColor(0.5f, 0.1f, 0.3f, 1.0f), glClear(GL_COLOR_BUFFER_BIT);
+        });
+    }
+}
+
 // Textures: a quad in perspective and a small triangle, textured with an 8 x 8 image (and its
 // mipmaps) across filters, wraps and environment modes, smooth colours per vertex.
 void addTextureCases(std::vector<Case>& out) {
@@ -492,6 +555,7 @@ std::vector<Case> allCases() {
     addMergedBlocks(cases);
     addMergeBreakers(cases);
     addSmoothAndStippleCases(cases);
+    addFragmentOpsCases(cases);
     addTextureCases(cases);
     addPixelRectangleCases(cases);
     return cases;

@@ -38,6 +38,7 @@ std::span<const Scene> allScenes() {
         {"bench-lit-torus", "benchmark: a 16k-triangle torus lit by a spot and a directional light, specular",
          drawBenchLitTorus},
         {"bench-fog-terrain", "benchmark: the 100k-triangle terrain under LINEAR fog, depth-tested", drawBenchFogTerrain},
+        {"bench-particles", "benchmark: 2000 alpha-blended quads and points, depth-tested without writes", drawBenchParticles},
         {"bench-textured-cubes", "benchmark: the 1000 cubes textured (64x64 mipmaps, LINEAR_MIPMAP_LINEAR, MODULATE)",
          drawBenchTexturedCubes},
         {"bench-draw-pixels", "benchmark: a 256x256 RGBA image drawn with glDrawPixels, zoomed over the window",

@@ -23,6 +23,10 @@ struct BatchHeader {
     PrimitiveMode mode = PrimitiveMode::Points;
     QuadSplit quadSplit = QuadSplit::ByPath;
     bool colorsPerVertex = false;  // glColor was called inside its glBegin/glEnd blocks
+    // Its vertices carry edge flags in the reference's vertex format (glEdgeFlag since the last
+    // flush). Without them, the current edge flag, false, hides every edge: the reference then
+    // culls the faces drawn as lines or points, whole (Mesa's _PolygonModeAlwaysCulls).
+    bool edgeFlagsPerVertex = false;
     // Lights the batch's vertices in the vertex stage (lightChunk); null when they are unlit or
     // were lit by the program's thread. Owned by the pipeline until the batch is drawn.
     const VertexLighting* lighting = nullptr;

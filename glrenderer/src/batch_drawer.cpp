@@ -1,11 +1,21 @@
 #include "batch_drawer.h"
 
 #include "decompose.h"
+#include "feedback_output.h"
 #include "vertex_stage.h"
 #include "points_lines.h"
 #include "unfilled.h"
 
 namespace glrenderer {
+namespace {
+
+// Whether a batch may show edges in line or point mode: its vertices carry edge flags of their
+// own, or the current one they all took is true (drawUnfilledBatch).
+bool anyEdgeShown(const Batch& batch) {
+    return batch.edgeFlagsPerVertex || batch.vertices.empty() || batch.vertices.front().edgeFlag;
+}
+
+}  // namespace
 
 BatchDrawer::BatchDrawer(Framebuffer& framebuffer)
     : framebuffer_(framebuffer), tiles_(framebuffer), setup_(framebuffer, kChunkVertices) {
@@ -23,7 +33,7 @@ void BatchDrawer::keepTexture(const TextureState& texture) {
 }
 
 void BatchDrawer::draw(const SubmittedBatch& submitted) {
-    if (submitted.state.selection) return select(submitted);
+    if (submitted.state.selection || submitted.state.feedback) return select(submitted);
     paintersSort_ = submitted.methods.hiddenSurface == HiddenSurface::PaintersSort;
     if (BatchSetup::handles(submitted)) {
         setup_.setUp(submitted, tiles_, stats_);
@@ -51,12 +61,33 @@ void BatchDrawer::draw(BatchChunk& chunk) {
     paintersSort_ = chunk.batches.back().methods.hiddenSurface == HiddenSurface::PaintersSort;
 }
 
-// The reference's selection runs its draw module's clip and cull stages and records the window
-// depth of what comes out; polygons count as filled whatever their polygon mode.
+// The reference's selection and feedback run its draw module's clip and cull stages and record
+// what comes out (selection: the window depths; feedback: the primitives); in selection
+// polygons count as filled whatever their polygon mode.
 void BatchDrawer::select(const SubmittedBatch& submitted) {
-    if (isTriangleMode(submitted.mode)) return setup_.select(submitted, hits_, stats_);
+    FeedbackOutput feedback(feedback_, feedbackLineReset_, framebuffer_.height());
+    FeedbackOutput* output = submitted.state.feedback ? &feedback : nullptr;
+    if (output && isTriangleMode(submitted.mode) && !BatchSetup::filled(submitted.state)) return feedbackUnfilled(submitted, feedback);
+    if (isTriangleMode(submitted.mode)) return setup_.select(submitted, hits_, output, stats_);
     selectPointsAndLines(submitted.mode, setup_.stage(submitted).vertices, submitted.state, framebuffer_.height(),
-                         hits_);
+                         hits_, output);
+}
+
+// Feedback of polygons in line or point mode: the unfilled stage's lines and points (and the
+// triangles of a face still filled) go to the feedback. With flat shading the draw module's
+// flatshade stage, in its pipeline with the unfilled stage, colours a filled one too.
+void BatchDrawer::feedbackUnfilled(const SubmittedBatch& submitted, FeedbackOutput& feedback) {
+    const Batch batch = setup_.stage(submitted);
+    const bool flat = batch.state.shadeModel == ShadeModel::Flat;
+    const UnfilledTarget target{
+        [&](WindowVertex v0, WindowVertex v1, WindowVertex v2, const glm::vec4& flatColor) {
+            if (flat) v0.color = v1.color = v2.color = flatColor;
+            feedback.triangle(v0, v1, v2);
+        },
+        [] {}, &feedback};
+    drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
+                      ViewportTransform(batch.state, framebuffer_.height()), batch.state, anyEdgeShown(batch),
+                      framebuffer_, stats_, target);
 }
 
 void BatchDrawer::drawUnfilled(const Batch& batch) {
@@ -66,8 +97,8 @@ void BatchDrawer::drawUnfilled(const Batch& batch) {
         },
         [&] { flush(); }};
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
-                      ViewportTransform(batch.state, framebuffer_.height()), batch.state, framebuffer_, stats_,
-                      target);
+                      ViewportTransform(batch.state, framebuffer_.height()), batch.state, anyEdgeShown(batch),
+                      framebuffer_, stats_, target);
     tiles_.forgetClearedTiles();  // its lines and points were drawn at once
 }
 

@@ -27,6 +27,7 @@ public:
     void draw(const SubmittedBatch& batch);
     // What GL_SELECT batches hit since the last call.
     HitRange takeHits() { return std::exchange(hits_, {}); }
+    FeedbackPrimitives takeFeedback() { return std::exchange(feedback_, {}); }
     // Every batch of the chunk, in order; triangles its poster has set up already are only
     // queued.
     void draw(BatchChunk& chunk);
@@ -59,6 +60,7 @@ private:
 
     void drawUnfilled(const Batch& batch);
     void select(const SubmittedBatch& batch);
+    void feedbackUnfilled(const SubmittedBatch& batch, FeedbackOutput& feedback);
 
     static constexpr std::size_t kTexturesReserved = 64;
 
@@ -73,6 +75,8 @@ private:
     BatchSetup setup_;
     bool paintersSort_ = false;  // of the last batch drawn: how its tiles order triangles
     HitRange hits_;
+    FeedbackPrimitives feedback_;
+    bool feedbackLineReset_ = false;
     // The textures queued triangles read, released when the tiles are drawn.
     std::vector<std::shared_ptr<const Texture>> texturesInUse_;
 };

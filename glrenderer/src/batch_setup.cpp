@@ -48,8 +48,9 @@ private:
 }  // namespace
 
 bool BatchSetup::handles(const BatchHeader& batch) {
-    return isTriangleMode(batch.mode) && batch.state.polygonFront == PolygonMode::Fill &&
-           batch.state.polygonBack == PolygonMode::Fill;
+    // (Selection and feedback draw no triangles: BatchDrawer::select takes them, also when a
+    // chunk is set up ahead on another thread.)
+    return isTriangleMode(batch.mode) && !batch.state.selection && !batch.state.feedback && filled(batch.state);
 }
 
 bool BatchSetup::setUp(BatchChunk& chunk, ArenaWriter& writer) {
@@ -88,14 +89,15 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
                        [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
 
-void BatchSetup::select(const SubmittedBatch& batch, HitRange& hits, Stats& stats) {
+void BatchSetup::select(const SubmittedBatch& batch, HitRange& hits, FeedbackOutput* feedback, Stats& stats) {
     run(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
-    const Call call{batch, batch.vertices, assembled, nullptr, stats, nullptr, batch.state.cullEnabled, &hits};
+    const Call call{batch, batch.vertices, assembled, nullptr, stats, nullptr, batch.state.cullEnabled,
+                    feedback ? nullptr : &hits, feedback};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), DecompositionPath::DrawModule,
                        v1v3Quads, [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
@@ -193,10 +195,14 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
             return;
         }
         // Selection's cull stage drops a triangle of no area too (measured with OSMesa).
-        if (call.hits && determinant == 0.0f) return;
+        if ((call.hits || call.feedback) && determinant == 0.0f) return;
     }
     if (call.hits) {
         call.hits->add(v0.z), call.hits->add(v1.z), call.hits->add(v2.z);
+        return;
+    }
+    if (call.feedback) {
+        call.feedback->triangle(v0, v1, v2);
         return;
     }
     SetupTriangle triangle{{v0, v1, v2}, {snap(v0), snap(v1), snap(v2)}, 0, flatColor};
@@ -212,8 +218,8 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     ++call.stats.rasterized;
-    if (prepareTriangle(triangle, *call.fragments, methods.raster, framebuffer_.width(), framebuffer_.height(),
-                        call.target->slot())) {
+    const PixelRect drawable = drawableRect(state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
+    if (prepareTriangle(triangle, *call.fragments, methods.raster, drawable, call.target->slot())) {
         call.target->keep();
     }
 }

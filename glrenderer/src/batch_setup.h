@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "batch.h"
+#include "feedback_output.h"
 #include "fragment_paths.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/hit_range.h"
@@ -27,13 +28,18 @@ public:
     BatchSetup(const Framebuffer& framebuffer, std::size_t batchVertices)
         : framebuffer_(framebuffer), vertexStage_(batchVertices) {}
 
-    // Whether setUp() takes the batch: filled triangles (the unfilled stage draws lines at once).
+    // Whether setUp() takes the batch: filled triangles to draw (the unfilled stage draws lines at
+    // once).
     static bool handles(const BatchHeader& batch);
+    static bool filled(const DrawState& state) {
+        return state.polygonFront == PolygonMode::Fill && state.polygonBack == PolygonMode::Fill;
+    }
     // The whole batch.
     void setUp(const SubmittedBatch& batch, TriangleTarget& target, Stats& stats);
     // GL_SELECT: the batch's triangles that survive clipping and culling add their window depths
     // to `hits` instead of being set up.
-    void select(const SubmittedBatch& batch, HitRange& hits, Stats& stats);
+    // GL_FEEDBACK (`feedback` not null): they go to `feedback`.
+    void select(const SubmittedBatch& batch, HitRange& hits, FeedbackOutput* feedback, Stats& stats);
     // Every batch of the chunk, into `writer`'s slots listed in the chunk and the chunk's
     // counts, if it handles them all; returns whether it did.
     bool setUp(BatchChunk& chunk, ArenaWriter& writer);
@@ -60,6 +66,7 @@ private:
         // decides first, by drawModuleFacing.
         bool drawModuleCulls = false;
         HitRange* hits = nullptr;  // GL_SELECT
+        FeedbackOutput* feedback = nullptr;  // GL_FEEDBACK
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     // Two-sided colours: a triangle's window vertices with their back colours, and its provoking

@@ -1,5 +1,8 @@
 #include "cpu_features.h"
 
+#include <cstdlib>
+#include <string_view>
+
 namespace glrenderer {
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -22,5 +25,16 @@ bool cpuHasFma() { return false; }
 bool cpuHasAvx2Fma() { return false; }
 bool cpuHasAvx512() { return false; }
 #endif
+
+LaneWidth widestLanes() {
+    static const LaneWidth widest = [] {
+        const char* cap = std::getenv("MYGL_KERNELS");
+        const std::string_view limit = cap ? cap : "";
+        if (cpuHasAvx512() && limit != "avx2" && limit != "scalar") return LaneWidth::Avx512;
+        if (cpuHasAvx2Fma() && limit != "scalar") return LaneWidth::Avx2;
+        return LaneWidth::Scalar;
+    }();
+    return widest;
+}
 
 }  // namespace glrenderer

@@ -8,4 +8,10 @@ bool cpuHasFma();      // FMA3 (and SSE4.1, which every FMA CPU has)
 bool cpuHasAvx2Fma();  // AVX2 and FMA3
 bool cpuHasAvx512();   // AVX-512F and FMA3
 
+// The widest lanes (simd_*.h) the stages run on this CPU, chosen once. MYGL_KERNELS=avx2 or
+// scalar caps the choice, to see how a CPU without AVX-512 (or AVX2) would run: the results
+// are the same.
+enum class LaneWidth { Scalar, Avx2, Avx512 };
+LaneWidth widestLanes();
+
 }  // namespace glrenderer

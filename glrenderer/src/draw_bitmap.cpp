@@ -4,6 +4,7 @@
 
 #include "batch_drawer.h"
 #include "fragment_paths.h"
+#include "pixel_rect.h"
 #include "glrenderer/pipeline.h"
 
 namespace glrenderer {
@@ -13,13 +14,19 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     Framebuffer& fb = drawer_->framebuffer();
     // In 64 bits: a bitmap may start anywhere an int reaches and still be cut to the window.
     const std::int64_t left = bitmap.x, bottom = bitmap.y;
-    const std::int64_t x0 = std::max<std::int64_t>(left, 0), x1 = std::min<std::int64_t>(left + bitmap.width, fb.width());
-    const std::int64_t y0 = std::max<std::int64_t>(bottom, 0), y1 = std::min<std::int64_t>(bottom + bitmap.height, fb.height());
+    // Cut to the drawable rect, in GL's rows (y up): [x0, x1) x [y0, y1).
+    const PixelRect drawable = drawableRect(state.fragmentOps.scissor, fb.width(), fb.height());
+    const std::int64_t x0 = std::max<std::int64_t>(left, drawable.minX);
+    const std::int64_t x1 = std::min<std::int64_t>(left + bitmap.width, std::int64_t{drawable.maxX} + 1);
+    const std::int64_t y0 = std::max<std::int64_t>(bottom, fb.height() - 1 - drawable.maxY);
+    const std::int64_t y1 = std::min<std::int64_t>(bottom + bitmap.height, fb.height() - drawable.minY);
     // Runs of set bits, in each row, are spans of one colour and depth for the fragment stage.
     FragmentInputs fragment;
     // Not textured yet (the raster position's texture coordinates are not kept).
     const FragmentKey key = withTexture(flatFragmentKey(state), TextureState{});
-    fragment.setPath(FragmentChoice(bestFragmentPaths(), key).varyingW);
+    const FragmentChoice fragments(bestFragmentPaths(), key, state);
+    fragment.setPath(fragments.varyingW);
+    fragment.ops = fragments.ops;
     fragment.setFlatColor(bitmap.color);
     fragment.depth = {bitmap.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
     // Fog: the reference's bitmap quad carries no fog coordinate, so its fragments read 0 (not

@@ -13,11 +13,22 @@ struct RasterTriangle;
 struct PixelRect;
 struct FragmentInputs;
 
+// The per-fragment operations' constants of a draw (issue 16), read by keys that have them.
+struct FragmentOpsConstants {
+    std::uint8_t alphaRef = 0;
+    std::uint8_t stencilRef = 0, stencilValueMask = 0xFF, stencilWriteMask = 0xFF;
+    std::uint32_t colorMask = 0xFFFFFFFF;
+
+    static FragmentOpsConstants of(const FragmentOps& ops) {
+        return {ops.alphaRef, ops.stencil.ref, ops.stencil.valueMask, ops.stencil.writeMask, ops.colorMask};
+    }
+};
+
 struct FragmentCounts {
     std::uint64_t fragments = 0, passed = 0;
 };
 
-// Every fragment that passes writes its pixel (no colour mask yet).
+// Every fragment that passes writes its pixel (counted so even under a colour mask).
 inline void addFragmentCounts(Stats& stats, const FragmentCounts& counts) {
     stats.fragments += counts.fragments;
     stats.fragmentsPassed += counts.passed;
@@ -34,8 +45,13 @@ struct FragmentRoutine {
     // too wide for the blocks.
     using Narrow = bool (*)(const RasterTriangle& triangle, const PixelRect& area, Framebuffer& framebuffer,
                             FragmentCounts& counts);
+    // A triangle's part in `area`, row by row: each row's covered span from the edge functions
+    // (the whole width of the area when `coveredWhole`), the lanes set up once for all rows.
+    using Rows = void (*)(const RasterTriangle& triangle, const PixelRect& area, bool coveredWhole,
+                          Framebuffer& framebuffer, FragmentCounts& counts);
 
     Span span = nullptr;
+    Rows rows = nullptr;
     Narrow narrow = nullptr;  // optional
 };
 
@@ -58,6 +74,7 @@ struct FragmentInputs {
     AttributePlane fogCoord;
     FogState fog;
     float depthOffset = 0.0f;  // polygon offset, with a key that has it
+    FragmentOpsConstants ops;  // (issue 16)
     // Texturing (issue 16), with a key that has it: planes of s, t and q divided by w (invW is
     // set too) and the draw's texture.
     AttributePlane texCoord[3];

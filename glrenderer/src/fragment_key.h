@@ -15,23 +15,35 @@ enum class Shading : std::uint8_t {
 
 // What changes the work of the fragment stage, and nothing else: computed once per draw, it
 // picks the routine that draws the draw's fragments (fragment_paths.h). Fields are in GL's
-// order of the stage; a field that does not matter under the others is normalized (no depth
+// order of the stage (the per-fragment operations' group aside); a field that does not matter under the others is normalized (no depth
 // function without the depth test), so that equal work has equal keys. A structural type: fast
 // paths take their key as a template argument and the compiler removes every step it turns off.
 struct FragmentKey {
     Shading shading = Shading::Flat;
-    // Issue 16 adds here the texture environment and the texture's format.
     // Fog (issue 16): with a mode, the colour is fogged per fragment by a fog coordinate
     // interpolated with perspective, whatever the shading (FragmentInputs::fogCoord).
     FogMode fog = FogMode::Off;
-    // Then the per-fragment tests: scissor, alpha test (function), stencil (functions, ops).
     bool depthTest = false;
     CompareFunc depthFunc = CompareFunc::Always;
     bool depthWrite = false;
     // Polygon offset of filled triangles (issue 16): a depth offset per primitive added to each
     // fragment's z (FragmentInputs::depthOffset), with the depth test only.
     bool depthOffset = false;
-    // Then blending (equation, factors), the logic op and the colour and depth masks.
+    // Per-fragment operations (issue 16), each at its default when off; their constants are in
+    // FragmentInputs::ops. Kept together here; the stage runs the alpha and stencil tests before
+    // the depth test, as GL orders them. The scissor is no step: it cuts the primitives' bounds.
+    CompareFunc alphaFunc = CompareFunc::Always;  // the alpha test
+    bool stencilTest = false;
+    CompareFunc stencilFunc = CompareFunc::Always;
+    StencilOp stencilFail = StencilOp::Keep, stencilDepthFail = StencilOp::Keep, stencilDepthPass = StencilOp::Keep;
+    BlendFactor blendSrc = BlendFactor::One, blendDst = BlendFactor::Zero;
+    LogicOp logicOp = LogicOp::Copy;
+    bool colorMask = false;  // some bits of the colour word are kept
+
+    // Whether the stage reads the stored colour.
+    constexpr bool readsColor() const {
+        return blendSrc != BlendFactor::One || blendDst != BlendFactor::Zero || logicOp != LogicOp::Copy || colorMask;
+    }
 
     // Texturing (issue 16), first in the stage's order but kept here, apart: the environment
     // (Off without a texture), what the texture's format holds, its filters and wraps. The
@@ -59,6 +71,35 @@ constexpr FragmentKey withFog(FragmentKey key, FogMode mode) {
     return key;
 }
 
+// `key` blending with factors `src` and `dst`.
+constexpr FragmentKey withBlend(FragmentKey key, BlendFactor src, BlendFactor dst) {
+    key.blendSrc = src, key.blendDst = dst;
+    return key;
+}
+
+// `key` with the per-fragment operations of `ops`, normalized: a test that passes everything
+// and changes nothing is off, blending is off under a logic op (GL), the depth-fail operation
+// is Keep without the depth test.
+constexpr FragmentKey withFragmentOps(FragmentKey key, const FragmentOps& ops) {
+    if (ops.alphaTest) key.alphaFunc = ops.alphaFunc;
+    const StencilState& s = ops.stencil;
+    const bool writes = s.writeMask != 0;
+    key.stencilFail = writes ? s.fail : StencilOp::Keep;
+    key.stencilDepthFail = writes && key.depthTest ? s.depthFail : StencilOp::Keep;
+    key.stencilDepthPass = writes ? s.depthPass : StencilOp::Keep;
+    key.stencilFunc = s.func;
+    key.stencilTest = s.enabled && (s.func != CompareFunc::Always || key.stencilFail != StencilOp::Keep ||
+                                    key.stencilDepthFail != StencilOp::Keep || key.stencilDepthPass != StencilOp::Keep);
+    if (!key.stencilTest) {
+        key.stencilFunc = CompareFunc::Always;
+        key.stencilFail = key.stencilDepthFail = key.stencilDepthPass = StencilOp::Keep;
+    }
+    if (ops.logicOpEnabled) key.logicOp = ops.logicOp;
+    if (ops.blend && !ops.logicOpEnabled) key.blendSrc = ops.blendSrc, key.blendDst = ops.blendDst;
+    key.colorMask = ops.colorMask != 0xFFFFFFFFu;
+    return key;
+}
+
 // `key` with texturing as `texture` makes it (none when its env is Off).
 constexpr FragmentKey withTexture(FragmentKey key, TextureEnv env, bool oneDimensional, TextureBase base,
                                   TextureFilter minFilter, TextureFilter magFilter, MipmapFilter mipFilter,
@@ -80,8 +121,8 @@ inline FragmentKey withTexture(FragmentKey key, const TextureState& t) {
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).
 inline FragmentKey fragmentKey(const DrawState& state) {
     const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
-    const FragmentKey key = makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite);
-    return withTexture(withFog(key, state.fog.mode), state.texture);
+    const FragmentKey key = withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
+    return withTexture(withFragmentOps(key, state.fragmentOps), state.texture);
 }
 
 // The same key for primitives of one colour (points, bitmaps).

@@ -1,7 +1,5 @@
 #include "fragment_paths.h"
 
-#include <cstdlib>
-
 #include "cpu_features.h"
 
 namespace glrenderer {
@@ -17,6 +15,8 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, cons
     : FragmentChoice(paths, key) {
     fog = state.fog;
     polygonOffset = state.polygonOffset;
+    ops = FragmentOpsConstants::of(state.fragmentOps);
+    scissor = state.fragmentOps.scissor;
     texture = state.texture.texture.get();
     textureEnvColor = state.texture.envColor;
 }
@@ -29,10 +29,11 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {
 
 const FragmentPaths& bestFragmentPaths() {
     static const FragmentPaths& best = []() -> const FragmentPaths& {
-        const char* cap = std::getenv("MYGL_KERNELS");
-        const std::string_view limit = cap ? cap : "";
-        if (cpuHasAvx512() && limit != "avx2" && limit != "scalar") return avx512FragmentPaths();
-        if (cpuHasAvx2Fma() && limit != "scalar") return avx2FragmentPaths();
+        switch (widestLanes()) {
+        case LaneWidth::Avx512: return avx512FragmentPaths();
+        case LaneWidth::Avx2: return avx2FragmentPaths();
+        case LaneWidth::Scalar: break;
+        }
         return scalarFragmentPaths();
     }();
     return best;

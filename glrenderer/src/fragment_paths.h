@@ -9,7 +9,7 @@ namespace glrenderer {
 
 // The keys with fast paths of their own at every vector width: what scenes draw with nearly
 // always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), smooth
-// depth-tested LINEAR fog and the common textures. Each is
+// depth-tested LINEAR fog, the usual alpha blending and the common textures. Each is
 // compiled with its key as a constant, so that it holds only the steps the key turns on.
 inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false),
@@ -23,6 +23,17 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     makeFragmentKey(Shading::Perspective, true, CompareFunc::LessEqual, true),
     // A fogged landscape (bench-fog-terrain).
     withFog(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), FogMode::Linear),
+    // Transparency over a depth-tested scene, without depth writes (bench-particles, the
+    // blended_windows port): smooth, orthographic and flat (points).
+    withBlend(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, false), BlendFactor::SrcAlpha,
+              BlendFactor::OneMinusSrcAlpha),
+    withBlend(makeFragmentKey(Shading::Linear, true, CompareFunc::Less, false), BlendFactor::SrcAlpha,
+              BlendFactor::OneMinusSrcAlpha),
+    withBlend(makeFragmentKey(Shading::Flat, true, CompareFunc::Less, false), BlendFactor::SrcAlpha,
+              BlendFactor::OneMinusSrcAlpha),
+    // Blending without the depth test (2D overlays).
+    withBlend(makeFragmentKey(Shading::Perspective, false, CompareFunc::Always, false), BlendFactor::SrcAlpha,
+              BlendFactor::OneMinusSrcAlpha),
     // Textured, depth-tested: RGB(A) bricks, LINEAR_MIPMAP_LINEAR, MODULATE (bench-textured-cubes),
     // and a NEAREST checkerboard.
     withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
@@ -72,8 +83,7 @@ const FragmentPaths& scalarFragmentPaths();
 const FragmentPaths& avx2FragmentPaths();
 // 16 lanes of AVX-512F; only after cpuHasAvx512().
 const FragmentPaths& avx512FragmentPaths();
-// The widest this CPU runs, chosen once. MYGL_KERNELS=avx2 or scalar caps the choice, to see
-// how a CPU without AVX-512 (or AVX2) would run: the pixels are the same.
+// The widest this CPU runs (widestLanes()).
 const FragmentPaths& bestFragmentPaths();
 // The general path: the scalar routine for any key.
 inline const FragmentRoutine& generalFragmentRoutine() { return scalarFragmentPaths().anyKey(); }
@@ -96,6 +106,8 @@ struct FragmentChoice {
     FragmentPath varyingW, constantW;
     FogState fog;  // the draw's, for the primitives' inputs when the key has fog
     PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
+    FragmentOpsConstants ops;     // the draw's (issue 16), for every primitive's inputs
+    ScissorBox scissor;           // the draw's, for the bounds of lines (drawableRect)
     // The draw's texture (kept alive by the batch drawer until its triangles are drawn) and
     // environment colour, when the key has texturing.
     const Texture* texture = nullptr;

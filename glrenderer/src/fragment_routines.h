@@ -12,16 +12,16 @@
 
 #include "fragment_paths.h"
 #include "fragment_stage.h"
+#include "raster_span.h"
 #include "raster_triangle.h"
 
 namespace glrenderer {
 
 template <class L>
-[[gnu::always_inline]] inline void shadeSpan(FragmentKey key, const FragmentInputs& in, int row, int begin, int end,
-                                             Framebuffer& fb, FragmentCounts& counts) {
+[[gnu::always_inline]] inline void shadeSpan(FragmentKey key, const FragmentLanes<L>& lanes, int row, int begin,
+                                             int end, Framebuffer& fb, FragmentCounts& counts) {
     const std::ptrdiff_t rowStart = static_cast<std::ptrdiff_t>(fb.height() - 1 - row) * fb.width();
-    const PixelBuffers buffers{fb.color().data(), fb.depth().data()};
-    const FragmentLanes<L> lanes(in);
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
     const typename L::Float y = L::floats(static_cast<float>(row));
     std::uint64_t passed = 0;
     // With cheap masks, blocks are aligned to cache lines (the buffers are): a block across two
@@ -39,6 +39,17 @@ template <class L>
     }
     counts.fragments += static_cast<std::uint64_t>(end - begin + 1);
     counts.passed += passed;
+}
+
+// The rows of a triangle's part in `area` (FragmentRoutine::Rows).
+template <class L>
+[[gnu::always_inline]] inline void shadeRows(FragmentKey key, const RasterTriangle& t, const PixelRect& area,
+                                             bool coveredWhole, Framebuffer& fb, FragmentCounts& counts) {
+    const FragmentLanes<L> lanes(t.fragment);
+    for (int row = area.minY; row <= area.maxY; ++row) {
+        const Span span = coveredWhole ? Span{area.minX, area.maxX} : coveredSpan(t, row, area.minX, area.maxX);
+        if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
+    }
 }
 
 // Lanes on a block of a narrow area: lane i is pixel (dx, dy) = (i % columns, i / columns) from
@@ -128,7 +139,7 @@ template <class L>
         rowLanes[row] = L::lanesBetween(firstLane, firstLane + static_cast<int>(columns) - 1);
     }
     const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
-    const PixelBuffers buffers{fb.color().data(), fb.depth().data()};
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
     const FragmentLanes<L> lanes(t.fragment);
     std::uint64_t fragments = 0, passed = 0;
     for (int top = area.minY; top <= area.maxY; top += blockRows) {
@@ -159,11 +170,20 @@ template <class L>
 struct RoutinesOf {
     template <FragmentKey Key>
     static void span(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb, FragmentCounts& counts) {
-        shadeSpan<L>(Key, in, row, begin, end, fb, counts);
+        shadeSpan<L>(Key, FragmentLanes<L>(in), row, begin, end, fb, counts);
     }
     static void anyKeySpan(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb,
                            FragmentCounts& counts) {
-        shadeSpan<L>(in.key, in, row, begin, end, fb, counts);
+        shadeSpan<L>(in.key, FragmentLanes<L>(in), row, begin, end, fb, counts);
+    }
+    template <FragmentKey Key>
+    static void rows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole, Framebuffer& fb,
+                     FragmentCounts& counts) {
+        shadeRows<L>(Key, t, area, coveredWhole, fb, counts);
+    }
+    static void anyKeyRows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole, Framebuffer& fb,
+                           FragmentCounts& counts) {
+        shadeRows<L>(t.fragment.key, t, area, coveredWhole, fb, counts);
     }
     template <FragmentKey Key>
     static bool narrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
@@ -176,16 +196,16 @@ struct RoutinesOf {
     // The fast path of `Key`.
     template <FragmentKey Key>
     static constexpr FragmentRoutine fastRoutine() {
-        if constexpr (L::kNarrowBlocks) return {&span<Key>, &narrow<Key>};
-        else return {&span<Key>, nullptr};
+        if constexpr (L::kNarrowBlocks) return {&span<Key>, &rows<Key>, &narrow<Key>};
+        else return {&span<Key>, &rows<Key>, nullptr};
     }
     template <std::size_t... I>
     static constexpr auto fastPaths(std::index_sequence<I...>) {
         return std::array<FragmentPaths::FastPath, sizeof...(I)>{{{kFastFragmentKeys[I], fastRoutine<kFastFragmentKeys[I]>()}...}};
     }
     static constexpr FragmentRoutine anyKey() {
-        if constexpr (L::kNarrowBlocks) return {&anyKeySpan, &anyKeyNarrow};
-        else return {&anyKeySpan, nullptr};
+        if constexpr (L::kNarrowBlocks) return {&anyKeySpan, &anyKeyRows, &anyKeyNarrow};
+        else return {&anyKeySpan, &anyKeyRows, nullptr};
     }
 };
 

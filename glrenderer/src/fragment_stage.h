@@ -9,6 +9,7 @@
 
 #include "fragment_fog.h"
 #include "fragment_inputs.h"
+#include "fragment_ops_lanes.h"
 #include "fragment_texture.h"
 #include "lane_clamp.h"
 
@@ -40,7 +41,17 @@ public:
     explicit FragmentLanes(const FragmentInputs& in)
         : depth_(in.depth), invW_(in.invW), red_(in.color[0]), green_(in.color[1]), blue_(in.color[2]),
           alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
-          depthOffset_(L::floats(in.depthOffset)), texture_(in) {}
+          depthOffset_(L::floats(in.depthOffset)), alphaRef_(L::ints(in.ops.alphaRef)),
+          stencilRef_(L::ints(in.ops.stencilRef)), stencilValueMask_(L::ints(in.ops.stencilValueMask)),
+          stencilWriteMask_(L::ints(in.ops.stencilWriteMask)), colorMask_(L::ints(static_cast<int>(in.ops.colorMask))),
+          texture_(in) {}
+
+    // The per-fragment operations' constants (issue 16).
+    Int alphaRef() const { return alphaRef_; }
+    Int stencilRef() const { return stencilRef_; }
+    Int stencilValueMask() const { return stencilValueMask_; }
+    Int stencilWriteMask() const { return stencilWriteMask_; }
+    Int colorMask() const { return colorMask_; }
 
     // 24-bit window depth: round(clamp(z) * (2^24 - 1)), ties to even.
     // Polygon offset adds the primitive's depth offset to z first.
@@ -82,6 +93,7 @@ private:
     PlaneLanes<L> fogCoord_;
     FogLanes<L> fog_;
     Float depthOffset_;
+    Int alphaRef_, stencilRef_, stencilValueMask_, stencilWriteMask_, colorMask_;
     TextureLanes<L> texture_;
 };
 
@@ -121,29 +133,79 @@ private:
 struct PixelBuffers {
     std::uint32_t* color;
     std::uint32_t* depth;
+    std::uint32_t* stencil;
 };
 
+// The stencil test of a block: the lanes of `live` that pass, and into `updated` the stored
+// values changed by the stencil-fail operation.
+template <class L>
+[[gnu::always_inline]] inline typename L::Mask stencilTest(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Mask live,
+                             typename L::Int stored, typename L::Int& updated) {
+    const typename L::Int mask = in.stencilValueMask();
+    const typename L::Mask pass =
+        L::compare(key.stencilFunc, live, L::bitAnd(in.stencilRef(), mask), L::bitAnd(stored, mask));
+    if (key.stencilFail != StencilOp::Keep) {
+        updated = L::select(L::butNot(live, pass), stencilAfter<L>(key.stencilFail, stored, in.stencilRef()), updated);
+    }
+    return pass;
+}
+
+// The stored colour words `dst` under the colour `src` of the fragments: blending, the logic op
+// and the colour mask of the key.
+template <class L>
+[[gnu::always_inline]] inline typename L::Int combineWithStored(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Int src,
+                                  typename L::Int dst) {
+    if (key.blendSrc != BlendFactor::One || key.blendDst != BlendFactor::Zero) {
+        src = blend<L>(key.blendSrc, key.blendDst, src, dst);
+    }
+    if (key.logicOp != LogicOp::Copy) src = logicOp<L>(key.logicOp, src, dst);
+    if (key.colorMask) src = L::bitOr(L::bitAnd(src, in.colorMask()), L::bitAnd(dst, L::bitXor(in.colorMask(), L::ints(-1))));
+    return src;
+}
+
 // The fragment stage on one block of pixels at (x, y), `covered` the lanes the primitive covers,
-// in GL's order. Returns the lanes written. Colour is computed after the tests: nothing before
-// them reads it yet, and the fragments that fail need none.
+// in GL's order. Returns the lanes written. Colour is computed after the tests unless the alpha
+// test needs it: the fragments that fail need none.
 template <class L, class Block>
 [[gnu::always_inline]] inline typename L::Mask shadeBlock(const FragmentKey& key, const FragmentLanes<L>& in,
                                                typename L::Float x, typename L::Float y, typename L::Mask covered,
                                                const Block& block, const PixelBuffers& buffers) {
+    using Int = typename L::Int;
     typename L::Mask live = covered;
-    // Texture environment, then fog (FragmentLanes::rgba): they make the colour,
-    // computed below; the alpha test needs it here, before the tests.
-    // Scissor (issue 16): a rectangle, cut from coverage before the stage where it can be.
-    // Alpha test, then the stencil test (issue 16).
+    // The texture environment, then fog (FragmentLanes::rgba) make the colour.
+    // The scissor test was done on the primitive's bounds (drawableRect).
+    Int rgba{};
+    if (key.alphaFunc != CompareFunc::Always) {  // in bytes, as the reference compares
+        rgba = in.rgba(key, x, y, live);
+        live = L::compare(key.alphaFunc, live, L::shiftRight(rgba, 24), in.alphaRef());
+    }
+    Int stencil{}, updatedStencil{};
+    const typename L::Mask stencilLanes = live;  // the lanes whose stencil value an operation may change
+    if (key.stencilTest) {
+        stencil = updatedStencil = block.load(buffers.stencil, live);
+        live = stencilTest<L>(key, in, live, stencil, updatedStencil);
+    }
     if (key.depthTest) {
-        const typename L::Int z = in.depth24(key, x, y);
-        live = L::compare(key.depthFunc, live, z, block.load(buffers.depth, live));
+        const Int z = in.depth24(key, x, y);
+        const typename L::Mask depthPass = L::compare(key.depthFunc, live, z, block.load(buffers.depth, live));
+        if (key.stencilDepthFail != StencilOp::Keep) {
+            updatedStencil = L::select(L::butNot(live, depthPass),
+                                       stencilAfter<L>(key.stencilDepthFail, stencil, in.stencilRef()), updatedStencil);
+        }
+        live = depthPass;
         if (key.depthWrite) block.store(buffers.depth, live, z);
     }
-    // Stencil operations on depth pass and fail (issue 16).
+    if (key.stencilTest) {
+        if (key.stencilDepthPass != StencilOp::Keep) {
+            updatedStencil = L::select(live, stencilAfter<L>(key.stencilDepthPass, stencil, in.stencilRef()), updatedStencil);
+        }
+        const Int writeMask = in.stencilWriteMask();
+        const Int kept = L::bitAnd(stencil, L::bitXor(writeMask, L::ints(-1)));
+        block.store(buffers.stencil, stencilLanes, L::bitOr(kept, L::bitAnd(updatedStencil, writeMask)));
+    }
     if (L::none(live)) return live;
-    const typename L::Int rgba = in.rgba(key, x, y, live);
-    // Blending, the logic op, the colour mask (issue 16): here, reading the stored colour.
+    if (key.alphaFunc == CompareFunc::Always) rgba = in.rgba(key, x, y, live);
+    if (key.readsColor()) rgba = combineWithStored<L>(key, in, rgba, block.load(buffers.color, live));
     block.store(buffers.color, live, rgba);
     return live;
 }

@@ -112,8 +112,8 @@ private:
     // The level of detail of each lane's 2 x 2 quad (aligned on even internal x and y): the
     // coordinates' differences from its top-left pixel to the next in x and in y, scaled by
     // level 0's size, rho the larger of the two squared lengths, lod = log2(rho) / 2
-    // (lp_build_rho without its approximations, lp_build_fast_log2). A 1D texture takes the
-    // larger of |ds/dx| and |ds/dy| times its width, unsquared.
+    // (lp_build_rho without its approximations, lp_build_fast_log2). A 1D texture takes s alone,
+    // squared too (measured: the unsquared form of newer Mesa differs by up to 16).
     [[gnu::always_inline]] inline Float quadLod(const FragmentKey& key, Float x, Float y) const {
         const Float qx = L::toFloat(L::bitAnd(L::roundToInt(x), L::ints(~1)));
         const Float qy = L::toFloat(L::bitAnd(L::roundToInt(y), L::ints(~1)));
@@ -123,10 +123,7 @@ private:
         coordinates(qx, L::add(qy, L::floats(1.0f)), s01, t01);
         const Float width = L::floats(static_cast<float>(texture_->width[0]));
         const Float dsdx = L::mul(L::sub(s10, s00), width), dsdy = L::mul(L::sub(s01, s00), width);
-        if (key.texture1D) {
-            const Float rho = L::max(L::max(dsdx, L::sub(L::floats(0.0f), dsdx)), L::max(dsdy, L::sub(L::floats(0.0f), dsdy)));
-            return fastLog2<L>(rho);
-        }
+        if (key.texture1D) return L::mul(fastLog2<L>(L::max(L::mul(dsdx, dsdx), L::mul(dsdy, dsdy))), L::floats(0.5f));
         const Float height = L::floats(static_cast<float>(texture_->height[0]));
         const Float dtdx = L::mul(L::sub(t10, t00), height), dtdy = L::mul(L::sub(t01, t00), height);
         const Float rhoX = L::add(L::mul(dsdx, dsdx), L::mul(dtdx, dtdx));
@@ -222,7 +219,7 @@ private:
 // The texture environment: the fragment's colour `c` (RGBA, in float) combined with the texel
 // as Mesa's fixed-function fragment program combines them for the texture's base format.
 template <class L>
-void applyTextureEnv(const FragmentKey& key, const typename L::Float texel[4], const typename L::Float envColor[4],
+[[gnu::always_inline]] inline void applyTextureEnv(const FragmentKey& key, const typename L::Float texel[4], const typename L::Float envColor[4],
                      typename L::Float c[4]) {
     using Float = typename L::Float;
     const TextureBase base = key.textureBase;

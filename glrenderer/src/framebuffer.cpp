@@ -14,6 +14,9 @@ void Framebuffer::resize(int width, int height) {
     count_ = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     color_ = allocate(count_);
     depth_ = allocate(count_);
+    accum_.clear();
+    accum_.shrink_to_fit();
+    stencil_ = allocate(count_);
     markWritten();
 }
 
@@ -21,6 +24,11 @@ Framebuffer::Pixels Framebuffer::allocate(std::size_t count) {
     Pixels pixels(static_cast<std::uint32_t*>(::operator new[](count * sizeof(std::uint32_t), std::align_val_t{kAlignment})));
     std::fill_n(pixels.get(), count, 0u);
     return pixels;
+}
+
+std::span<std::int16_t> Framebuffer::accum() {
+    if (accum_.empty()) accum_.assign(count_ * 4, 0);
+    return accum_;
 }
 
 void Framebuffer::clearColor(std::uint32_t rgba) {

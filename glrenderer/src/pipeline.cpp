@@ -66,10 +66,13 @@ std::size_t Pipeline::batchSize() const { return chunk_->vertices.size() - batch
 void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSplit quadSplit) {
     BatchEntry& batch = *batch_;
     const DrawState drawn = withCulledFaceModes(state);
-    if (batchSize() > 0 &&
-        (mode != batch.mode || quadSplit != batch.quadSplit || !isMergeable(mode) || !(drawn == batch.state))) {
+    buffer_.beginPrimitive();
+    const bool edgeFlags = buffer_.has(VertexAttribute::EdgeFlag);
+    if (batchSize() > 0 && (mode != batch.mode || quadSplit != batch.quadSplit || !isMergeable(mode) ||
+                            !(drawn == batch.state) || edgeFlags != batch.edgeFlagsPerVertex)) {
         closeBatch();
     }
+    batch.edgeFlagsPerVertex = edgeFlags;
     batch.state = drawn;
     batch.methods = methods_;
     batch.mode = mode;
@@ -78,7 +81,6 @@ void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSp
     insidePrimitive_ = true;
     loopContinued_ = false;
     open_.clear();
-    buffer_.beginPrimitive();
 }
 
 void Pipeline::keepOpenVertices(std::size_t count) {
@@ -128,6 +130,7 @@ void Pipeline::widen(VertexAttribute attribute, int size) {
         closeBatch();
     }
     buffer_.widen(attribute, size, insidePrimitive_, carried);
+    if (attribute == VertexAttribute::EdgeFlag) batch_->edgeFlagsPerVertex = true;
 }
 
 void Pipeline::colorPerVertex() {
@@ -170,7 +173,8 @@ void Pipeline::endPrimitive() {
 
 void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
     beginPrimitive(state, mode, QuadSplit::ByPath);
-    colorPerVertex();  // vertices given whole carry their own colors
+    colorPerVertex();  // vertices given whole carry their own colors and edge flags
+    batch_->edgeFlagsPerVertex = true;
     for (const Vertex& vertex : vertices) addVertex() = vertex;
     endPrimitive();
 }
@@ -196,10 +200,8 @@ void Pipeline::setUnlit() {
 void Pipeline::lightOpenBatch() {
     if (!batch_->lighting) return;
     const bool twoSided = batch_->state.twoSidedColors;
-    for (std::size_t i = batch_->first; i < chunk_->vertices.size(); ++i) {
-        batch_->lighting->lightVertex(chunk_->vertices[i], twoSided);
-    }
-    for (Vertex& vertex : open_) batch_->lighting->lightVertex(vertex, twoSided);
+    batch_->lighting->lightVertices(std::span(chunk_->vertices).subspan(batch_->first), twoSided);
+    batch_->lighting->lightVertices(open_, twoSided);
     batch_->lighting = nullptr;
 }
 
@@ -257,18 +259,18 @@ HitRange Pipeline::takeHits() {
     return drawer_->takeHits();
 }
 
+FeedbackPrimitives Pipeline::takeFeedback() {
+    buffer_.flushAndReset();
+    drawSubmitted();
+    return drawer_->takeFeedback();
+}
+
 Stats Pipeline::stats() const { return submitted_ + drawer_->stats(); }
 
 void Pipeline::resetStats() {
     drawSubmitted();
     submitted_ = {};
     drawer_->resetStats();
-}
-
-void Pipeline::clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
-    buffer_.flushAndReset();
-    drawSubmitted();
-    drawer_->clearAtFlush(color, rgba, depth, depth24);
 }
 
 }  // namespace glrenderer

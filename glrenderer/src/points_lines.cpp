@@ -2,6 +2,7 @@
 
 #include "clip.h"
 #include "clip_line.h"
+#include "feedback_output.h"
 #include "raster_line.h"
 #include "raster_point.h"
 #include "window_vertex.h"
@@ -62,9 +63,16 @@ void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices
 }
 
 void selectPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
-                          int framebufferHeight, HitRange& hits) {
+                          int framebufferHeight, HitRange& hits, FeedbackOutput* feedback) {
+    const ViewportTransform viewport(state, framebufferHeight);
+    if (feedback) {
+        forEachPrimitive(
+            mode, vertices, state, viewport, [&](const WindowVertex& v) { feedback->point(v); },
+            [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4&) { feedback->line(a, b); });
+        return;
+    }
     forEachPrimitive(
-        mode, vertices, state, ViewportTransform(state, framebufferHeight), [&](const WindowVertex& v) { hits.add(v.z); },
+        mode, vertices, state, viewport, [&](const WindowVertex& v) { hits.add(v.z); },
         [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4&) { hits.add(a.z), hits.add(b.z); });
 }
 

@@ -6,6 +6,7 @@
 #include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
 #include "clip_vertex.h"
+#include "feedback_output.h"
 
 namespace glrenderer {
 
@@ -16,8 +17,9 @@ namespace glrenderer {
 void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                         Framebuffer& framebuffer, Stats& stats);
 
-// GL_SELECT: the window depths of the points and clipped segments that reach the view volume.
+// GL_SELECT: the window depths of the points and clipped segments that reach the view volume;
+// GL_FEEDBACK (`feedback` not null): those points and segments themselves.
 void selectPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
-                          int framebufferHeight, HitRange& hits);
+                          int framebufferHeight, HitRange& hits, FeedbackOutput* feedback);
 
 }  // namespace glrenderer

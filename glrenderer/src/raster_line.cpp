@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <utility>
 
+#include "pixel_rect.h"
 #include "round_half_away.h"
 #include "triangle_setup.h"
 
@@ -201,17 +202,18 @@ private:
 };
 
 // Draws the quad's pixels: per row, the span the four edges bound, through the fragment stage.
-void fillQuad(const LineQuad& q, const FragmentInputs& fragment, Framebuffer& fb, Stats& stats) {
+void fillQuad(const LineQuad& q, const FragmentInputs& fragment, const PixelRect& drawable, Framebuffer& fb,
+              Stats& stats) {
     const LineEdge edges[4] = {LineEdge(q.x[0], q.y[0], q.x[1], q.y[1]),
                                LineEdge(q.x[1], q.y[1], q.x[2], q.y[2]),
                                LineEdge(q.x[2], q.y[2], q.x[3], q.y[3]),
                                LineEdge(q.x[3], q.y[3], q.x[0], q.y[0])};
-    // The reference's bounding box (rounded for the bottom-left convention), then the buffer.
+    // The reference's bounding box (rounded for the bottom-left convention), then the drawable rect.
     const std::int64_t one = 1 << kSubpixelBits;
-    const std::int64_t minX = std::max<std::int64_t>((std::min({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits, 0);
-    const std::int64_t maxX = std::min<std::int64_t>(((std::max({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits) - 1, fb.width() - 1);
-    const std::int64_t minY = std::max<std::int64_t>((std::min({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits, 0);
-    const std::int64_t maxY = std::min<std::int64_t>(((std::max({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits) - 1, fb.height() - 1);
+    const std::int64_t minX = std::max<std::int64_t>((std::min({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits, drawable.minX);
+    const std::int64_t maxX = std::min<std::int64_t>(((std::max({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits) - 1, drawable.maxX);
+    const std::int64_t minY = std::max<std::int64_t>((std::min({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits, drawable.minY);
+    const std::int64_t maxY = std::min<std::int64_t>(((std::max({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits) - 1, drawable.maxY);
     FragmentCounts counts;
     for (std::int64_t py = minY; py <= maxY; ++py) {
         // Each edge bounds the row's span: value(px) = a * px + b > 0.
@@ -250,6 +252,7 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
     const LinePlaneBuilder builder(start, end);
     FragmentInputs fragment;
     fragment.setPath(fragments.varyingW);
+    fragment.ops = fragments.ops;
     const FragmentKey& key = fragments.varyingW.key;
     if (key.shading == Shading::Flat) {
         fragment.setFlatColor(flatColor);
@@ -267,7 +270,7 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
         fragment.fogCoord = builder.plane(start.fogCoord * start.invW, end.fogCoord * end.invW);
     }
     if (key.textureEnv != TextureEnv::Off) fragment.setTexture(fragments.texture, fragments.textureEnvColor, builder, start, end);
-    fillQuad(quad, fragment, framebuffer, stats);
+    fillQuad(quad, fragment, drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height()), framebuffer, stats);
 }
 
 }  // namespace glrenderer

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "pixel_rect.h"
 #include "round_half_away.h"
 #include "triangle_setup.h"
 
@@ -53,10 +54,11 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
     }
     const float size = state.pointSize > 1.0f ? std::min(state.pointSize, kMaxPointSize) : 1.0f;  // NaN: 1
     PixelBox box = pointBox(point, size);
-    box.x0 = std::max<std::int64_t>(box.x0, 0);
-    box.y0 = std::max<std::int64_t>(box.y0, 0);
-    box.x1 = std::min<std::int64_t>(box.x1, framebuffer.width() - 1);
-    box.y1 = std::min<std::int64_t>(box.y1, framebuffer.height() - 1);
+    const PixelRect drawable = drawableRect(state.fragmentOps.scissor, framebuffer.width(), framebuffer.height());
+    box.x0 = std::max<std::int64_t>(box.x0, drawable.minX);
+    box.y0 = std::max<std::int64_t>(box.y0, drawable.minY);
+    box.x1 = std::min<std::int64_t>(box.x1, drawable.maxX);
+    box.y1 = std::min<std::int64_t>(box.y1, drawable.maxY);
     if (box.x0 > box.x1 || box.y0 > box.y1) return;
 
     // The color is set up divided by w and multiplied back per fragment, as for any
@@ -65,6 +67,7 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
     if (state.shadeModel == ShadeModel::Smooth) c = c * point.invW * (1.0f / point.invW);
     FragmentInputs fragment;
     fragment.setPath(fragments.varyingW);
+    fragment.ops = fragments.ops;
     fragment.setFlatColor(c);
     fragment.depth = {point.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
     if (fragment.key.fog != FogMode::Off) {  // the fog coordinate as a perspective attribute, as the colour

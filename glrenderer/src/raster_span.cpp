@@ -47,10 +47,7 @@ void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Fram
             if ((corners[0] | corners[1] | corners[2] | corners[3]) < 0) coveredWhole = false;
         }
     }
-    for (int row = minY; row <= maxY; ++row) {
-        const Span span = coveredWhole ? Span{minX, maxX} : coveredSpan(t, row, minX, maxX);
-        if (span.begin <= span.end) routine.span(t.fragment, row, span.begin, span.end, fb, counts);
-    }
+    routine.rows(t, {minX, maxX, minY, maxY}, coveredWhole, fb, counts);
 }
 
 }  // namespace glrenderer

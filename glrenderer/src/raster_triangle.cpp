@@ -26,7 +26,9 @@ EdgeFunction::EdgeFunction(const FixedPoint& a, const FixedPoint& b) {
 FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods) {
     FragmentKey key = fragmentKey(state);
     if (methods.hiddenSurface == HiddenSurface::PaintersSort) {
-        key = withTexture(makeFragmentKey(key.shading, false, {}, false), state.texture);
+        key.depthTest = key.depthWrite = false;
+        key.depthFunc = CompareFunc::Always;
+        key.stencilDepthFail = StencilOp::Keep;
     }
     key.depthOffset = key.depthTest && state.polygonOffset.fill;
     if (key.shading == Shading::Perspective && methods.interpolation == Interpolation::ScreenLinear) {
@@ -35,8 +37,8 @@ FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods) 
     return key;
 }
 
-bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, RasterMethod method, int width,
-                     int height, RasterTriangle& out) {
+bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, RasterMethod method,
+                     const PixelRect& drawable, RasterTriangle& out) {
     // Orient the edges so that the interior is positive.
     const FixedPoint& a = t.fixed[0];
     const FixedPoint& b = t.area > 0 ? t.fixed[1] : t.fixed[2];
@@ -50,10 +52,10 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         --minX, ++maxX, --minY, ++maxY;
         for (int i = 0; i < 3; ++i) out.windowX[i] = t.v[i].x, out.windowY[i] = t.v[i].y;
     }
-    out.minX = static_cast<int>(std::max<std::int64_t>(minX, 0));
-    out.maxX = static_cast<int>(std::min<std::int64_t>(maxX, width - 1));
-    out.minY = static_cast<int>(std::max<std::int64_t>(minY, 0));
-    out.maxY = static_cast<int>(std::min<std::int64_t>(maxY, height - 1));
+    out.minX = static_cast<int>(std::max<std::int64_t>(minX, drawable.minX));
+    out.maxX = static_cast<int>(std::min<std::int64_t>(maxX, drawable.maxX));
+    out.minY = static_cast<int>(std::max<std::int64_t>(minY, drawable.minY));
+    out.maxY = static_cast<int>(std::min<std::int64_t>(maxY, drawable.maxY));
     if (out.minX > out.maxX || out.minY > out.maxY) return false;
     out.edges[0] = EdgeFunction(a, b);
     out.edges[1] = EdgeFunction(b, c);
@@ -62,6 +64,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     FragmentInputs& in = out.fragment;
     const FragmentKey& key = fragments.varyingW.key;
     in.setPath(fragments.varyingW);
+    in.ops = fragments.ops;
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
         in.setFlatColor(t.flatColor);

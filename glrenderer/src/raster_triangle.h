@@ -8,6 +8,7 @@
 #include "glrenderer/methods.h"
 #include "fragment_inputs.h"
 #include "fragment_paths.h"
+#include "pixel_rect.h"
 #include "triangle_setup.h"
 
 namespace glrenderer {
@@ -50,14 +51,10 @@ struct RasterTriangle {
 FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods);
 
 // Builds the edge functions and the planes the key of `fragments` reads, with pixel bounds
-// clipped to the framebuffer, and picks the triangle's fragment path from `fragments`. Returns
+// clipped to `drawable` (drawableRect), and picks the triangle's fragment path from `fragments`. Returns
 // false when no pixel center can be covered.
-bool prepareTriangle(const SetupTriangle& triangle, const FragmentChoice& fragments, RasterMethod method, int width,
-                     int height, RasterTriangle& out);
-
-struct PixelRect {
-    int minX, maxX, minY, maxY;  // inclusive
-};
+bool prepareTriangle(const SetupTriangle& triangle, const FragmentChoice& fragments, RasterMethod method,
+                     const PixelRect& drawable, RasterTriangle& out);
 
 // The exact method over the part of the triangle inside `rect`, tested pixel by pixel: integer
 // edge functions at 1/256 pixel; the covered pixels go through the scalar fragment routine.

@@ -38,6 +38,14 @@ struct Avx2Lanes {
     static Float div(Float a, Float b) { return _mm256_div_ps(a, b); }
     static Float min(Float a, Float b) { return _mm256_min_ps(a, b); }
     static Float max(Float a, Float b) { return _mm256_max_ps(a, b); }
+    static Float sqrt(Float v) { return _mm256_sqrt_ps(v); }
+    static Float abs(Float v) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), v); }
+    // Ordered comparisons of floats: false where either is NaN.
+    static Mask lessThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_LT_OQ)); }
+    static Mask lessEqual(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_LE_OQ)); }
+    static Mask equal(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_EQ_OQ)); }
+    static Mask isNan(Float v) { return _mm256_castps_si256(_mm256_cmp_ps(v, v, _CMP_UNORD_Q)); }
+    static Float select(Mask m, Float ifSet, Float ifClear) { return _mm256_blendv_ps(ifClear, ifSet, _mm256_castsi256_ps(m)); }
     static Float toFloat(Int v) { return _mm256_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm256_cvtps_epi32(v); }
     static Int truncateToInt(Float v) { return _mm256_cvttps_epi32(v); }
@@ -49,6 +57,17 @@ struct Avx2Lanes {
     static Int mul(Int a, Int b) { return _mm256_mullo_epi32(a, b); }
     static Int bitAnd(Int a, Int b) { return _mm256_and_si256(a, b); }
     static Int bitOr(Int a, Int b) { return _mm256_or_si256(a, b); }
+    static Int bitXor(Int a, Int b) { return _mm256_xor_si256(a, b); }
+    static Mask either(Mask a, Mask b) { return _mm256_or_si256(a, b); }
+    static Float loadFloats(const float* lanes) { return _mm256_loadu_ps(lanes); }
+    static void storeFloats(float* lanes, Float v) { _mm256_storeu_ps(lanes, v); }
+    static Int minUnsigned(Int a, Int b) { return _mm256_min_epu32(a, b); }
+    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum, a
+    // logical shift right by 8.
+    static Int mulLow16(Int a, Int b) { return _mm256_mullo_epi16(a, b); }
+    static Int minUnsigned16(Int a, Int b) { return _mm256_min_epu16(a, b); }
+    static Int shiftRight16By8(Int v) { return _mm256_srli_epi16(v, 8); }
+    static Int maxUnsigned(Int a, Int b) { return _mm256_max_epu32(a, b); }
     static Int minInt(Int a, Int b) { return _mm256_min_epi32(a, b); }
     static Int maxInt(Int a, Int b) { return _mm256_max_epi32(a, b); }
     template <int N>
@@ -66,6 +85,7 @@ struct Avx2Lanes {
                                    _mm256_cmpgt_epi32(_mm256_set1_epi32(last + 1), laneIndex()));
     }
     static Mask both(Mask a, Mask b) { return _mm256_and_si256(a, b); }
+    static Mask butNot(Mask a, Mask b) { return _mm256_andnot_si256(b, a); }
     static bool none(Mask m) { return _mm256_testz_si256(m, m); }
     static bool all(Mask m) { return _mm256_movemask_ps(_mm256_castsi256_ps(m)) == 0xFF; }
     static unsigned count(Mask m) {

@@ -35,6 +35,14 @@ struct Avx512Lanes {
     static Float div(Float a, Float b) { return _mm512_div_ps(a, b); }
     static Float min(Float a, Float b) { return _mm512_min_ps(a, b); }
     static Float max(Float a, Float b) { return _mm512_max_ps(a, b); }
+    static Float sqrt(Float v) { return _mm512_sqrt_ps(v); }
+    static Float abs(Float v) { return _mm512_abs_ps(v); }
+    // Ordered comparisons of floats: false where either is NaN.
+    static Mask lessThan(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ); }
+    static Mask lessEqual(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ); }
+    static Mask equal(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_EQ_OQ); }
+    static Mask isNan(Float v) { return _mm512_cmp_ps_mask(v, v, _CMP_UNORD_Q); }
+    static Float select(Mask m, Float ifSet, Float ifClear) { return _mm512_mask_blend_ps(m, ifClear, ifSet); }
     static Float toFloat(Int v) { return _mm512_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm512_cvtps_epi32(v); }
     static Int truncateToInt(Float v) { return _mm512_cvttps_epi32(v); }
@@ -46,6 +54,23 @@ struct Avx512Lanes {
     static Int mul(Int a, Int b) { return _mm512_mullo_epi32(a, b); }
     static Int bitAnd(Int a, Int b) { return _mm512_and_epi32(a, b); }
     static Int bitOr(Int a, Int b) { return _mm512_or_epi32(a, b); }
+    static Int bitXor(Int a, Int b) { return _mm512_xor_epi32(a, b); }
+    static Mask either(Mask a, Mask b) { return a | b; }
+    static Float loadFloats(const float* lanes) { return _mm512_loadu_ps(lanes); }
+    static void storeFloats(float* lanes, Float v) { _mm512_storeu_ps(lanes, v); }
+    static Int minUnsigned(Int a, Int b) { return _mm512_min_epu32(a, b); }
+    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum (in two
+    // AVX2 halves: AVX-512F has no 16-bit multiply, that is AVX-512BW), a logical shift right by 8.
+    static Int mulLow16(Int a, Int b) { return byHalves(a, b, _mm256_mullo_epi16); }
+    static Int minUnsigned16(Int a, Int b) { return byHalves(a, b, _mm256_min_epu16); }
+    static Int shiftRight16By8(Int v) { return _mm512_and_epi32(_mm512_srli_epi32(v, 8), _mm512_set1_epi32(0x00FF00FF)); }
+    template <class Op>
+    static Int byHalves(Int a, Int b, Op op) {
+        const __m256i low = op(_mm512_castsi512_si256(a), _mm512_castsi512_si256(b));
+        const __m256i high = op(_mm512_extracti64x4_epi64(a, 1), _mm512_extracti64x4_epi64(b, 1));
+        return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
+    }
+    static Int maxUnsigned(Int a, Int b) { return _mm512_max_epu32(a, b); }
     static Int minInt(Int a, Int b) { return _mm512_min_epi32(a, b); }
     static Int maxInt(Int a, Int b) { return _mm512_max_epi32(a, b); }
     template <int N>
@@ -84,6 +109,7 @@ struct Avx512Lanes {
         return static_cast<Mask>(upTo & from);
     }
     static Mask both(Mask a, Mask b) { return a & b; }
+    static Mask butNot(Mask a, Mask b) { return static_cast<Mask>(a & ~b); }
     static bool none(Mask m) { return m == 0; }
     static bool all(Mask m) { return m == 0xFFFF; }
     static unsigned count(Mask m) { return static_cast<unsigned>(std::popcount(static_cast<unsigned>(m))); }

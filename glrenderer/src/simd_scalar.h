@@ -39,6 +39,14 @@ struct ScalarLanes {
     static Float div(Float a, Float b) { return a / b; }
     static Float min(Float a, Float b) { return a < b ? a : b; }
     static Float max(Float a, Float b) { return a > b ? a : b; }
+    static Float sqrt(Float v) { return std::sqrt(v); }
+    static Float abs(Float v) { return std::fabs(v); }
+    // Ordered comparisons of floats: false where either is NaN.
+    static Mask lessThan(Float a, Float b) { return a < b; }
+    static Mask lessEqual(Float a, Float b) { return a <= b; }
+    static Mask equal(Float a, Float b) { return a == b; }
+    static Mask isNan(Float v) { return v != v; }
+    static Float select(Mask m, Float ifSet, Float ifClear) { return m ? ifSet : ifClear; }
     static Float toFloat(Int v) { return static_cast<Float>(static_cast<std::int32_t>(v)); }
     // As cvtps2dq: ties to even; NaN and values out of range give INT_MIN.
     static Int roundToInt(Float v) {
@@ -53,9 +61,9 @@ struct ScalarLanes {
     static Float fromBits(Int v) { return std::bit_cast<Float>(v); }
 
     static Int add(Int a, Int b) { return a + b; }
-    // Texture sampling's integer steps (fragment_texture.h).
     static Int sub(Int a, Int b) { return a - b; }
     static Int mul(Int a, Int b) { return a * b; }
+    // Texture sampling's integer steps (fragment_texture.h).
     static Int minInt(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b) ? a : b; }
     static Int maxInt(Int a, Int b) { return static_cast<std::int32_t>(a) > static_cast<std::int32_t>(b) ? a : b; }
     template <int N>
@@ -79,12 +87,27 @@ struct ScalarLanes {
     static Int gather(const std::uint32_t* base, Int offset, Mask m) { return m ? base[offset] : 0; }
     static Int bitAnd(Int a, Int b) { return a & b; }
     static Int bitOr(Int a, Int b) { return a | b; }
+    static Int bitXor(Int a, Int b) { return a ^ b; }
+    static Mask either(Mask a, Mask b) { return a || b; }
+    static Float loadFloats(const float* lanes) { return *lanes; }
+    static void storeFloats(float* lanes, Float v) { *lanes = v; }
+    static Int minUnsigned(Int a, Int b) { return a < b ? a : b; }
+    static Int maxUnsigned(Int a, Int b) { return a > b ? a : b; }
+    // Per 16-bit half: the low 16 bits of the product, the unsigned minimum, a logical shift
+    // right by 8.
+    static Int mulLow16(Int a, Int b) { return ((a & 0xFFFF) * (b & 0xFFFF) & 0xFFFF) | ((a >> 16) * (b >> 16) << 16); }
+    static Int shiftRight16By8(Int v) { return (v >> 8) & 0x00FF00FF; }
+    static Int minUnsigned16(Int a, Int b) {
+        return std::min(a & 0xFFFF, b & 0xFFFF) | std::min(a & 0xFFFF0000, b & 0xFFFF0000);
+    }
     template <int N>
     static Int shiftLeft(Int v) { return v << N; }
+    static Int shiftRight(Int v, int n) { return v >> n; }
 
     // Lane 0 when first <= 0 <= last.
     static Mask lanesBetween(int first, int last) { return first <= 0 && last >= 0; }
     static Mask both(Mask a, Mask b) { return a && b; }
+    static Mask butNot(Mask a, Mask b) { return a && !b; }
     static bool none(Mask m) { return !m; }
     static bool all(Mask m) { return m; }
     static unsigned count(Mask m) { return m ? 1u : 0u; }

@@ -14,32 +14,35 @@ namespace {
 
 // Which edges of a decomposed triangle are polygon edges: bit k is the edge v[k] -> v[k+1].
 constexpr std::uint8_t kEdge0 = 1, kEdge1 = 2, kEdge2 = 4, kAllEdges = 7;
+// The triangle starts a primitive of its own (each triangle of a list, strip or fan, the first
+// of a quad or polygon): the line stipple restarts at its edges (GL_LINE_RESET_TOKEN in feedback).
+constexpr std::uint8_t kResetStipple = 8;
 
 // The draw module's decomposition (provoking vertex last) with edge flags.
 template <class Emit>
 void decomposeWithEdges(PrimitiveMode mode, std::uint32_t n, Emit&& emit) {
     switch (mode) {
     case PrimitiveMode::Triangles:
-        for (std::uint32_t i = 0; i + 2 < n; i += 3) emit(i, i + 1, i + 2, kAllEdges);
+        for (std::uint32_t i = 0; i + 2 < n; i += 3) emit(i, i + 1, i + 2, kAllEdges | kResetStipple);
         break;
     case PrimitiveMode::TriangleStrip:
         for (std::uint32_t i = 0; i + 2 < n; ++i) {
-            if (i % 2 == 0) emit(i, i + 1, i + 2, kAllEdges);
-            else emit(i + 1, i, i + 2, kAllEdges);
+            if (i % 2 == 0) emit(i, i + 1, i + 2, kAllEdges | kResetStipple);
+            else emit(i + 1, i, i + 2, kAllEdges | kResetStipple);
         }
         break;
     case PrimitiveMode::TriangleFan:
-        for (std::uint32_t i = 1; i + 1 < n; ++i) emit(0, i, i + 1, kAllEdges);
+        for (std::uint32_t i = 1; i + 1 < n; ++i) emit(0, i, i + 1, kAllEdges | kResetStipple);
         break;
     case PrimitiveMode::Quads:
         for (std::uint32_t i = 0; i + 3 < n; i += 4) {
-            emit(i, i + 1, i + 3, kEdge0 | kEdge2);
+            emit(i, i + 1, i + 3, kEdge0 | kEdge2 | kResetStipple);
             emit(i + 1, i + 2, i + 3, kEdge0 | kEdge1);
         }
         break;
     case PrimitiveMode::QuadStrip:
         for (std::uint32_t i = 0; i + 3 < n; i += 2) {
-            emit(i + 2, i, i + 3, kEdge0 | kEdge2);
+            emit(i + 2, i, i + 3, kEdge0 | kEdge2 | kResetStipple);
             emit(i, i + 1, i + 3, kEdge0 | kEdge1);
         }
         break;
@@ -47,7 +50,7 @@ void decomposeWithEdges(PrimitiveMode mode, std::uint32_t n, Emit&& emit) {
         // Fan (i+1, i+2, 0): the outer edge i+1 -> i+2, plus 0 -> 1 first and n-1 -> 0 last.
         for (std::uint32_t i = 0; i + 2 < n; ++i) {
             std::uint8_t edges = kEdge0;
-            if (i == 0) edges |= kEdge2;
+            if (i == 0) edges |= kEdge2 | kResetStipple;
             if (i + 3 == n) edges |= kEdge1;
             emit(i + 1, i + 2, 0, edges);
         }
@@ -111,20 +114,30 @@ bool clipPolygon(Polygon& polygon, Outcode outcodeUnion, const ViewportTransform
 
 class UnfilledDrawer {
 public:
-    UnfilledDrawer(const DrawState& state, Framebuffer& framebuffer, Stats& stats,
+    UnfilledDrawer(const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                    const UnfilledTarget& target)
-        : state_(state), framebuffer_(framebuffer), stats_(stats), target_(target),
+        : state_(state), anyEdgeShown_(anyEdgeShown), framebuffer_(framebuffer), stats_(stats), target_(target),
           lineFragments_(bestFragmentPaths(), fragmentKey(state), state),
           pointFragments_(bestFragmentPaths(), flatFragmentKey(state), state) {}
 
-    // One triangle out of the clipper (provoking vertex last) with its edge bits.
+    // One triangle out of the clipper (provoking vertex last) with its edge bits and the
+    // provoking vertex's colours (front, back).
     void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c,
-                  std::uint8_t edges, const glm::vec4& flatColor) {
+                  std::uint8_t edges, glm::vec4 flatColor, const glm::vec4& flatBackColor) {
         WindowVertex w0 = a.window, w1 = b.window, w2 = c.window;
         const float det = drawModuleDeterminant(w0, w1, w2);
         const bool front = drawModuleFacing(det, state_.frontFaceCCW) == Facing::Front;
-        if (state_.cullEnabled &&
-            (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front)) {
+        // The draw module's two-sided stage: a triangle facing back by its determinant (not 0)
+        // takes the back colours, whatever the mode draws.
+        if (state_.twoSidedColors && !front && det != 0.0f) {
+            w0.color = a.clip.backColor, w1.color = b.clip.backColor, w2.color = c.clip.backColor;
+            flatColor = flatBackColor;
+        }
+        const bool culled = state_.cullEnabled &&
+                            (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front);
+        // With every edge hidden, the reference culls the faces drawn as lines or points.
+        const bool hidden = !anyEdgeShown_ && (front ? state_.polygonFront : state_.polygonBack) != PolygonMode::Fill;
+        if (culled || hidden) {
             ++(front ? stats_.culledFront : stats_.culledBack);
             return;
         }
@@ -133,16 +146,17 @@ public:
         // front mode under GL_CW).
         const bool useFront = det == 0.0f ? !state_.cullEnabled && !state_.frontFaceCCW : front;
         const PolygonMode mode = useFront ? state_.polygonFront : state_.polygonBack;
+        const PolygonOffset& offset = offsetFor(mode);
         if (mode == PolygonMode::Fill) {
             target_.fill(w0, w1, w2, flatColor);
             return;
         }
         // Polygon offset of line and point modes: the draw module's, on the vertices.
-        const PolygonOffset& offset = state_.polygonOffset;
-        if (mode == PolygonMode::Line ? offset.line : offset.point) offsetInDrawModule(offset, w0, w1, w2);
+        if (offsetStage_) offsetInDrawModule(offset, w0, w1, w2);
         ++stats_.rasterized;
         target_.beforeLinesOrPoints();
         const bool flat = state_.shadeModel == ShadeModel::Flat;
+        if (mode == PolygonMode::Line && (edges & kResetStipple) && target_.feedback) target_.feedback->resetLineStipple();
         if (mode == PolygonMode::Line) {
             if ((edges & kEdge2) && c.edgeFlag) line(w2, w0, flatColor);
             if ((edges & kEdge0) && a.edgeFlag) line(w0, w1, flatColor);
@@ -155,10 +169,26 @@ public:
     }
 
 private:
+    // The draw module's offset stage, there when any offset mode is on, decides at the draw's
+    // first triangle, by its mode, whether to offset, and then offsets every triangle of the draw
+    // alike: by the state's offset, or by none (0 times a slope: NaN, so depth 0, where the
+    // slope is not finite).
+    const PolygonOffset& offsetFor(PolygonMode firstMode) {
+        static constexpr PolygonOffset kNone{};
+        if (!offsetChosen_) {
+            offsetChosen_ = true;
+            const PolygonOffset& o = state_.polygonOffset;
+            offsetOn_ = firstMode == PolygonMode::Fill ? o.fill : firstMode == PolygonMode::Line ? o.line : o.point;
+        }
+        return offsetOn_ ? state_.polygonOffset : kNone;
+    }
+
     void line(const WindowVertex& from, const WindowVertex& to, const glm::vec4& flatColor) {
+        if (target_.feedback) return target_.feedback->line(flatColored(from, flatColor), flatColored(to, flatColor));
         rasterizeLine(from, to, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
     }
     void point(const WindowVertex& p, bool flat, const glm::vec4& flatColor) {
+        if (target_.feedback) return target_.feedback->point(flatColored(p, flatColor));
         if (!flat) {
             rasterizePoint(p, state_, pointFragments_, framebuffer_, stats_);
             return;
@@ -168,7 +198,18 @@ private:
         rasterizePoint(colored, state_, pointFragments_, framebuffer_, stats_);
     }
 
+    // Feedback's vertex: with flat shading the draw module's flatshade stage has given it the
+    // provoking vertex's colour.
+    WindowVertex flatColored(const WindowVertex& v, const glm::vec4& flatColor) const {
+        WindowVertex out = v;
+        if (state_.shadeModel == ShadeModel::Flat) out.color = flatColor;
+        return out;
+    }
+
     const DrawState& state_;
+    const bool anyEdgeShown_;  // false: the batch's edges are all hidden by the current edge flag
+    const bool offsetStage_ = state_.polygonOffset.fill || state_.polygonOffset.line || state_.polygonOffset.point;
+    bool offsetChosen_ = false, offsetOn_ = false;
     Framebuffer& framebuffer_;
     Stats& stats_;
     const UnfilledTarget& target_;
@@ -180,15 +221,16 @@ private:
 void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
                        std::span<const Outcode> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
-                       const DrawState& state, Framebuffer& framebuffer, Stats& stats,
+                       const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                        const UnfilledTarget& target) {
-    UnfilledDrawer drawer(state, framebuffer, stats, target);
+    UnfilledDrawer drawer(state, anyEdgeShown, framebuffer, stats, target);
     const auto count = static_cast<std::uint32_t>(vertices.size());
     decomposeWithEdges(mode, count, [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2,
                                         std::uint8_t edges) {
         ++stats.triangles;
         const std::uint32_t index[3] = {i0, i1, i2};
-        const glm::vec4 flatColor = vertices[i2].color;
+        const glm::vec4& flatColor = vertices[i2].color;
+        const glm::vec4& flatBackColor = vertices[i2].backColor;
         Polygon polygon;
         polygon.count = 3;
         for (std::size_t k = 0; k < 3; ++k) {
@@ -197,7 +239,7 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
         }
         const Outcode outside = outcodes[i0] | outcodes[i1] | outcodes[i2];
         if (outside == 0) {
-            drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, flatColor);
+            drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, flatColor, flatBackColor);
             return;
         }
         if ((outcodes[i0] & outcodes[i1] & outcodes[i2]) || !clipPolygon(polygon, outside, viewport, state.clipPlanes)) {
@@ -212,8 +254,9 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
             const PolygonVertex& first = polygon.v[0];
             std::uint8_t fanEdges = a.edgeVisible ? kEdge0 : 0;
             if (i == 2 && first.edgeVisible) fanEdges |= kEdge2;
+            if (i == 2) fanEdges |= kResetStipple;  // the clipper's first triangle, whatever the original's
             if (i == polygon.count - 1 && b.edgeVisible) fanEdges |= kEdge1;
-            drawer.triangle(a, b, first, fanEdges, flatColor);
+            drawer.triangle(a, b, first, fanEdges, flatColor, flatBackColor);
         }
     });
 }

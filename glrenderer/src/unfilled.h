@@ -10,6 +10,7 @@
 #include "glrenderer/stats.h"
 #include "clip.h"
 #include "clip_vertex.h"
+#include "feedback_output.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -20,6 +21,8 @@ struct UnfilledTarget {
     std::function<void(const WindowVertex&, const WindowVertex&, const WindowVertex&, const glm::vec4&)> fill;
     // Called before lines or points are drawn, so that filled triangles queued earlier land first.
     std::function<void()> beforeLinesOrPoints;
+    // GL_FEEDBACK: lines and points go there instead of being drawn.
+    FeedbackOutput* feedback = nullptr;
 };
 
 // Draws a batch of a triangle mode under glPolygonMode LINE/POINT for at least one face, as the
@@ -28,11 +31,13 @@ struct UnfilledTarget {
 // determinant of window coordinates (zero area is back-facing); then each face drawn in its
 // mode, edges as lines (v2->v0, v0->v1, v1->v2) or vertices as points where the edge flag of
 // the primitive and of the edge's first vertex (glEdgeFlag) are both set. Flat shading uses the
-// triangle's provoking vertex color for all of it.
+// triangle's provoking vertex color for all of it. `anyEdgeShown` false: the vertices carry no
+// edge flags of their own and the current one is false, so every edge is hidden; the reference
+// then culls the faces drawn as lines or points (even the edges clip planes make).
 void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
                        std::span<const Outcode> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
-                       const DrawState& state, Framebuffer& framebuffer, Stats& stats,
+                       const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                        const UnfilledTarget& target);
 
 }  // namespace glrenderer

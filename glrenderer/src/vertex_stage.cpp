@@ -88,9 +88,9 @@ void lightChunk(BatchChunk& chunk) {
     if (chunk.lit) return;
     chunk.lit = true;
     for (const BatchEntry& batch : chunk.batches) {
-        if (!batch.lighting) continue;
-        for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) {
-            batch.lighting->lightVertex(chunk.vertices[i], batch.state.twoSidedColors);
+        if (batch.lighting) {
+            batch.lighting->lightVertices(std::span(chunk.vertices).subspan(batch.first, batch.count),
+                                          batch.state.twoSidedColors);
         }
     }
 }

@@ -21,9 +21,10 @@ int glutGet(GLenum query) {
         return window ? 8 : 0;
     case GLUT_WINDOW_BUFFER_SIZE: return window ? 32 : 0;
     case GLUT_WINDOW_DEPTH_SIZE: return window ? 24 : 0;
+    case GLUT_WINDOW_STENCIL_SIZE: return window ? 8 : 0;  // every window has an 8-bit stencil buffer
     case GLUT_WINDOW_DOUBLEBUFFER: return window && (r.displayMode & GLUT_DOUBLE) ? 1 : 0;
     case GLUT_WINDOW_RGBA: return window ? 1 : 0;
-    case GLUT_WINDOW_NUM_SAMPLES: case GLUT_WINDOW_STENCIL_SIZE: case GLUT_WINDOW_STEREO: return 0;
+    case GLUT_WINDOW_NUM_SAMPLES: case GLUT_WINDOW_STEREO: return 0;
     case GLUT_WINDOW_PARENT: case GLUT_WINDOW_NUM_CHILDREN: case GLUT_WINDOW_COLORMAP_SIZE: return 0;
     case GLUT_WINDOW_CURSOR: return GLUT_CURSOR_INHERIT;
     case GLUT_SCREEN_WIDTH: return 1920;  // what the window system would say is not asked

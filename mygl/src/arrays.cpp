@@ -5,6 +5,7 @@
 #include <array>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "client_arrays.h"
@@ -14,43 +15,140 @@
 namespace mygl {
 namespace {
 
-// The `n` components at `p` (any alignment) handed to `f` as a T*.
-template <class T, class F>
-void withComponents(const void* p, int n, F&& f) {
-    std::array<T, 4> values{};
-    std::memcpy(values.data(), p, static_cast<std::size_t>(n) * sizeof(T));
-    f(values.data());
+// The immediate-mode call an array's components stand for, taking them as T.
+template <class T>
+struct TexCoordCall { static void call(const T* v, int n) { texCoordv(v, n); } };
+template <class T>
+struct ColorCall { static void call(const T* v, int n) { colorv(v, n); } };
+template <class T>
+struct NormalCall { static void call(const T* v, int) { normalv(v); } };
+template <class T>
+struct VertexCall { static void call(const T* v, int n) { vertexv(v, n); } };
+template <class T>
+struct EdgeFlagCall { static void call(const T* v, int) { setEdgeFlag(v[0] != 0); } };
+
+// The `n` components at `p` (any alignment) read as T and handed to Call.
+template <class T, template <class> class Call>
+void readComponents(const void* p, int n) {
+    T values[4]{};
+    for (int k = 0; k < n; ++k) std::memcpy(&values[k], static_cast<const unsigned char*>(p) + k * sizeof(T), sizeof(T));
+    Call<T>::call(values, n);
 }
 
-// Calls f(const T*) with the element's components in the array's type.
-template <class F>
-void withElement(const ClientArray& a, std::size_t i, F&& f) {
-    const void* p = a.element(i);
-    switch (a.type) {
-    case GL_BYTE: return withComponents<GLbyte>(p, a.size, f);
-    case GL_UNSIGNED_BYTE: return withComponents<GLubyte>(p, a.size, f);
-    case GL_SHORT: return withComponents<GLshort>(p, a.size, f);
-    case GL_UNSIGNED_SHORT: return withComponents<GLushort>(p, a.size, f);
-    case GL_INT: return withComponents<GLint>(p, a.size, f);
-    case GL_UNSIGNED_INT: return withComponents<GLuint>(p, a.size, f);
-    case GL_FLOAT: return withComponents<GLfloat>(p, a.size, f);
-    case GL_DOUBLE: return withComponents<GLdouble>(p, a.size, f);
-    default: return;
+// An enabled array as a draw reads it: where its elements start, their step, and the call its
+// components go through, chosen by type once per draw rather than per element.
+class ArrayReader {
+public:
+    ArrayReader() = default;
+    template <template <class> class Call>
+    static ArrayReader of(const ClientArray& a) {
+        ArrayReader r;
+        r.base_ = static_cast<const unsigned char*>(a.pointer);
+        r.step_ = a.stride ? static_cast<std::size_t>(a.stride) : static_cast<std::size_t>(a.size) * componentBytes(a.type);
+        r.size_ = a.size;
+        switch (a.type) {
+        case GL_BYTE: r.read_ = &readComponents<GLbyte, Call>; break;
+        case GL_UNSIGNED_BYTE: r.read_ = &readComponents<GLubyte, Call>; break;
+        case GL_SHORT: r.read_ = &readComponents<GLshort, Call>; break;
+        case GL_UNSIGNED_SHORT: r.read_ = &readComponents<GLushort, Call>; break;
+        case GL_INT: r.read_ = &readComponents<GLint, Call>; break;
+        case GL_UNSIGNED_INT: r.read_ = &readComponents<GLuint, Call>; break;
+        case GL_FLOAT: r.read_ = &readComponents<GLfloat, Call>; break;
+        case GL_DOUBLE: r.read_ = &readComponents<GLdouble, Call>; break;
+        default: r.read_ = nullptr;
+        }
+        return r;
     }
-}
+    void operator()(std::size_t i) const {
+        if (read_) read_(base_ + i * step_, size_);
+    }
 
-// glArrayElement(i): the enabled arrays' values in GL's order, the vertex last.
-void emitElement(const ClientArrays& arrays, std::size_t i) {
-    if (arrays.edgeFlag.enabled) {
-        GLubyte flag = 0;
-        std::memcpy(&flag, arrays.edgeFlag.element(i), 1);
-        setEdgeFlag(flag != 0);
+private:
+    const unsigned char* base_ = nullptr;
+    std::size_t step_ = 0;
+    int size_ = 0;
+    void (*read_)(const void*, int) = nullptr;
+};
+
+// The enabled arrays' readers in GL's order for an element, the vertex last.
+class ElementReader {
+public:
+    explicit ElementReader(const ClientArrays& arrays) {
+        if (arrays.edgeFlag.enabled) readers_[count_++] = ArrayReader::of<EdgeFlagCall>(arrays.edgeFlag);
+        if (arrays.texCoord.enabled) readers_[count_++] = ArrayReader::of<TexCoordCall>(arrays.texCoord);
+        if (arrays.color.enabled) readers_[count_++] = ArrayReader::of<ColorCall>(arrays.color);
+        if (arrays.normal.enabled) readers_[count_++] = ArrayReader::of<NormalCall>(arrays.normal);
+        if (arrays.vertex.enabled) readers_[count_++] = ArrayReader::of<VertexCall>(arrays.vertex);
     }
-    if (arrays.texCoord.enabled) withElement(arrays.texCoord, i, [&](const auto* v) { texCoordv(v, arrays.texCoord.size); });
-    if (arrays.color.enabled) withElement(arrays.color, i, [&](const auto* v) { colorv(v, arrays.color.size); });
-    if (arrays.normal.enabled) withElement(arrays.normal, i, [](const auto* v) { normalv(v); });
-    if (arrays.vertex.enabled) withElement(arrays.vertex, i, [&](const auto* v) { vertexv(v, arrays.vertex.size); });
-}
+    // glArrayElement(i).
+    void operator()(std::size_t i) const {
+        for (int k = 0; k < count_; ++k) readers_[static_cast<std::size_t>(k)](i);
+    }
+
+private:
+    std::array<ArrayReader, 5> readers_;
+    int count_ = 0;
+};
+
+void emitElement(const ClientArrays& arrays, std::size_t i) { ElementReader{arrays}(i); }
+
+// The arrays of a typical mesh (positions in float; colours in float or unsigned bytes; normals
+// and texture coordinates in float; no edge flags) read straight into the current attributes and
+// the pipeline's vertices. Once a draw's first element has set the vertex format through the
+// usual calls, each other element stores what those calls would store, without their lookups.
+class MeshArrays {
+public:
+    static std::optional<MeshArrays> of(const ClientArrays& a) {
+        const auto is = [](const ClientArray& array, GLenum type) { return !array.enabled || array.type == type; };
+        if (!a.vertex.enabled || a.vertex.type != GL_FLOAT || a.edgeFlag.enabled || !is(a.normal, GL_FLOAT) ||
+            !is(a.texCoord, GL_FLOAT) || !(is(a.color, GL_FLOAT) || is(a.color, GL_UNSIGNED_BYTE))) {
+            return std::nullopt;
+        }
+        return MeshArrays(a);
+    }
+
+    void emit(Context::State& s, std::size_t i) const {
+        float v[4];
+        if (texCoord_.size) s.texCoord = texCoord_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f});
+        if (color_.size) {
+            const glm::vec4 c = colorBytes_ ? colorFromBytes(i) : color_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f});
+            s.color = c;
+            s.vertexColor = saturate(c);
+        }
+        if (normal_.size) s.normal = glm::vec3(normal_.read(i, v, {}));
+        pushVertex(s, vertex_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f}));
+    }
+
+private:
+    struct Source {
+        const unsigned char* base = nullptr;
+        std::size_t step = 0;
+        int size = 0;  // 0: not enabled
+        // Element i's components, the missing ones taken from `rest`.
+        glm::vec4 read(std::size_t i, float (&v)[4], glm::vec4 rest) const {
+            std::memcpy(v, base + i * step, static_cast<std::size_t>(size) * sizeof(float));
+            for (int k = 0; k < size; ++k) rest[k] = v[k];
+            return rest;
+        }
+    };
+    static Source sourceOf(const ClientArray& a) {
+        if (!a.enabled) return {};
+        const std::size_t step = a.stride ? static_cast<std::size_t>(a.stride) : static_cast<std::size_t>(a.size) * componentBytes(a.type);
+        return {static_cast<const unsigned char*>(a.pointer), step, a.size};
+    }
+    explicit MeshArrays(const ClientArrays& a)
+        : vertex_(sourceOf(a.vertex)), color_(sourceOf(a.color)), normal_(sourceOf(a.normal)),
+          texCoord_(sourceOf(a.texCoord)), colorBytes_(a.color.type == GL_UNSIGNED_BYTE) {}
+
+    glm::vec4 colorFromBytes(std::size_t i) const {
+        GLubyte b[4] = {0, 0, 0, 0};
+        std::memcpy(b, color_.base + i * color_.step, static_cast<std::size_t>(color_.size));
+        return {toFloat(b[0]), toFloat(b[1]), toFloat(b[2]), color_.size > 3 ? toFloat(b[3]) : 1.0f};
+    }
+
+    Source vertex_, color_, normal_, texCoord_;
+    bool colorBytes_;
+};
 
 std::size_t readIndex(GLenum type, const void* indices, std::size_t k) {
     const auto* bytes = static_cast<const unsigned char*>(indices);
@@ -111,7 +209,12 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
     const bool edgeFlag = s.edgeFlag;
     endBatch(s);
     begin(mode, quadSplitOf(s, indexed));
-    for (std::size_t k = 0; k < elements.count; ++k) emitElement(arrays, elements[k]);
+    const ElementReader element(arrays);
+    const std::optional<MeshArrays> mesh = MeshArrays::of(arrays);
+    for (std::size_t k = 0; k < elements.count; ++k) {
+        if (k > 0 && mesh) mesh->emit(s, elements[k]);
+        else element(elements[k]);
+    }
     end();
     endBatch(s);
     s.color = color, s.vertexColor = vertexColor, s.texCoord = texCoord, s.normal = normal, s.edgeFlag = edgeFlag;
@@ -287,8 +390,8 @@ const EntryPoint kEntryPoints[] = {
     {"glGetPointerv", entry(+[](GLenum name, void** out) {
          Context::State* s = stateOutsideBeginEnd();
          if (!s || !out) return;
-         if (name == GL_SELECTION_BUFFER_POINTER) {
-             *out = s->selection.buffer;
+         if (name == GL_SELECTION_BUFFER_POINTER || name == GL_FEEDBACK_BUFFER_POINTER) {
+             *out = name == GL_SELECTION_BUFFER_POINTER ? static_cast<void*>(s->selection.buffer) : s->feedback.buffer;
              return;
          }
          const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;

@@ -1,13 +1,17 @@
 #pragma once
 // The reference's bitmap cache (Mesa's st_cb_bitmap.c): glBitmap calls of one colour and depth
 // whose bits fit in a 512 x 32 window area are gathered and drawn as one, when the next bitmap
-// does not fit, or at the next draw, clear, flush or read. The depth test and depth mask are
-// the ones in force then, not at glBitmap: that is what the reference draws (measured).
+// does not fit, or at the next draw, clear, flush or read. It is drawn with the state in force
+// at the last glBitmap call (the reference validates its state there, and flushes the cache
+// before validating at a draw or read): a glBitmap that does not fit draws the cache with the
+// state of that moment, a draw after a state change with the state before the change
+// (measured: docs/probes/bitmap_cache_state_probe.c).
 #include <array>
 #include <cstdint>
 
 #include <glm/vec4.hpp>
 #include <glrenderer/bitmap.h>
+#include <glrenderer/draw_state.h>
 
 namespace mygl {
 
@@ -26,6 +30,9 @@ public:
     // The whole cache as one bitmap to draw; then clear().
     glrenderer::Bitmap bitmap() const;
     void clear();
+    // The state of the last glBitmap call, which the cache is drawn with.
+    void setDrawState(const glrenderer::DrawState& state) { drawState_ = state; }
+    const glrenderer::DrawState& drawState() const { return drawState_; }
 
 private:
     static constexpr std::size_t kStride = kWidth / 8;
@@ -34,6 +41,7 @@ private:
     glm::vec4 color_{};
     float z_ = 0;
     std::array<std::uint8_t, kStride * kHeight> bits_{};
+    glrenderer::DrawState drawState_;
 };
 
 }  // namespace mygl

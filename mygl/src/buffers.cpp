@@ -18,11 +18,23 @@ void clear(GLbitfield mask) {
     if (mask & ~kKnown) return setError(*s, GL_INVALID_VALUE);
     if (s->renderMode != GL_RENDER) return;  // as the reference: selection clears nothing
     drawCachedBitmaps(*s);
-    const bool color = mask & GL_COLOR_BUFFER_BIT;
-    const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite;  // glDepthMask applies
-    s->pipeline.clear(color, glrenderer::clearColorRgba8(s->clearColor), depth,
-                      glrenderer::clearDepth24(s->clearDepth));
+    const bool color = (mask & GL_COLOR_BUFFER_BIT) && s->buffers.drawBuffer != GL_NONE;
+    // The scissor and the colour, depth and stencil masks apply.
+    const glrenderer::FragmentOps& ops = s->draw.fragmentOps;
+    s->pipeline.clear({.color = color,
+                       .depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite,
+                       .stencil = (mask & GL_STENCIL_BUFFER_BIT) != 0,
+                       .rgba = glrenderer::clearColorRgba8(s->clearColor),
+                       .depth24 = glrenderer::clearDepth24(s->clearDepth),
+                       .colorMask = ops.colorMask,
+                       .stencilValue = static_cast<std::uint8_t>(s->fragmentOps.clearStencil & 0xFF),
+                       .stencilMask = ops.stencil.writeMask,
+                       .scissor = ops.scissor});
     if (color) s->pipeline.resetStats();  // a frame's counts start at its clear, as the course did
+    if (mask & GL_ACCUM_BUFFER_BIT) {
+        s->pipeline.finish();
+        clearAccumBuffer(*s);
+    }
 }
 
 const EntryPoint kEntryPoints[] = {

@@ -3,6 +3,7 @@
 // projection when the plane is enabled or the projection changes; the pipeline clips with the
 // clip-space planes (DrawState::clipPlanes).
 #include "compiled.h"
+#include "matrix_math.h"
 #include "entry_points.h"
 
 namespace mygl {
@@ -14,13 +15,6 @@ constexpr int kPlanes = static_cast<int>(std::tuple_size_v<decltype(glrenderer::
 std::optional<std::size_t> planeIndex(GLenum plane) {
     if (plane < GL_CLIP_PLANE0 || plane >= GL_CLIP_PLANE0 + kPlanes) return std::nullopt;
     return plane - GL_CLIP_PLANE0;
-}
-
-// Mesa's _mesa_transform_vector: the row vector v times m, each component summed left to right.
-glm::vec4 timesMatrix(const glm::vec4& v, const Matrix& m) {
-    glm::vec4 u;
-    for (int i = 0; i < 4; ++i) u[i] = v.x * m[4 * i] + v.y * m[4 * i + 1] + v.z * m[4 * i + 2] + v.w * m[4 * i + 3];
-    return u;
 }
 
 void updateClipPlane(Context::State& s, std::size_t i, const Matrix& projectionInverse) {

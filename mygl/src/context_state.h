@@ -5,6 +5,7 @@
 #include <glrenderer/framebuffer.h>
 #include <glrenderer/lighting.h>
 #include <glrenderer/pipeline.h>
+#include <array>
 #include <map>
 #include <vector>
 
@@ -12,8 +13,10 @@
 
 #include "attrib_stack.h"
 #include "bitmap_cache.h"
+#include "buffer_state.h"
 #include "client_arrays.h"
 #include "evaluators.h"
+#include "feedback.h"
 #include "display_lists.h"
 #include "selection.h"
 #include "stack_matrix.h"
@@ -64,9 +67,26 @@ struct FogParameters {
     glm::vec4 color{0.0f};  // clamped, as set
 };
 
+// The per-fragment operations' parameters as GL keeps them for glGet (issue 16); the
+// pipeline's DrawState::fragmentOps is formed from them (fragment_ops.cpp).
+struct FragmentOpsParameters {
+    GLenum alphaFunc = GL_ALWAYS;
+    float alphaRef = 0.0f;  // clamped, as set
+    GLenum stencilFunc = GL_ALWAYS;
+    GLint stencilRef = 0;  // as given
+    GLuint stencilValueMask = 0xFF, stencilWriteMask = 0xFF;  // the reference starts at its 8 bits
+    GLenum stencilFail = GL_KEEP, stencilDepthFail = GL_KEEP, stencilDepthPass = GL_KEEP;
+    GLint clearStencil = 0;
+    GLenum blendSrc = GL_ONE, blendDst = GL_ZERO;
+    GLenum logicOp = GL_COPY;
+    bool indexLogicOp = false;  // accepted; an RGBA buffer has no indices
+    std::array<bool, 4> colorMask{true, true, true, true};
+};
+
 struct Context::State {
     State(int width, int height) : framebuffer(width, height), pipeline(framebuffer) {
         draw.viewport = {0, 0, width, height};
+        draw.fragmentOps.scissor = {false, 0, 0, width, height};
     }
 
     glrenderer::Framebuffer framebuffer;
@@ -106,6 +126,7 @@ struct Context::State {
                                    {GL_FOG_HINT, GL_DONT_CARE}};
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
+    BufferState buffers;
     PixelStoreModes pack, unpack;  // glPixelStore
     PixelModes pixelModes;  // glPixelTransfer, glPixelZoom
     PixelMaps pixelMaps;    // glPixelMap
@@ -126,6 +147,7 @@ struct Context::State {
     bool lightingOnProgramThread = false;
 
     FogParameters fog;  // (issue 16)
+    FragmentOpsParameters fragmentOps;  // (issue 16)
 
     // What the reference does when it validates state before a draw or a read: settle the
     // kinds of the current matrices and form their product.
@@ -145,9 +167,11 @@ struct Context::State {
     glm::vec4 rasterTexCoord{0, 0, 0, 1};
     float rasterDistance = 0;
 
-    // glRenderMode; in GL_SELECT, draws make hit records in the program's buffer instead of pixels.
+    // glRenderMode; in GL_SELECT, draws make hit records in the program's buffer instead of pixels,
+    // in GL_FEEDBACK feedback tokens.
     GLenum renderMode = GL_RENDER;
     Selection selection;
+    Feedback feedback;  // GL_FEEDBACK
     bool rasterValid = true;
     BitmapCache bitmapCache;
 

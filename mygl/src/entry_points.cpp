@@ -20,8 +20,9 @@ const std::vector<EntryPoint>& implementedTable() {
                           pixelRectangleEntryPoints(), pixelModeEntryPoints(),
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
                           clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
-                          polygonOffsetEntryPoints(), textureEntryPoints(), textureParameterEntryPoints(),
-                          textureGenEntryPoints()}) {
+                          polygonOffsetEntryPoints(), accumulationEntryPoints(), colorIndexEntryPoints(),
+                          drawBufferEntryPoints(), feedbackEntryPoints(), fragmentOpsEntryPoints(),
+                          textureEntryPoints(), textureParameterEntryPoints(), textureGenEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);

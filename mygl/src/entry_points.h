@@ -35,7 +35,24 @@ std::span<const EntryPoint> attribStackEntryPoints();
 std::span<const EntryPoint> clipPlaneEntryPoints();
 std::span<const EntryPoint> fogEntryPoints();
 std::span<const EntryPoint> polygonOffsetEntryPoints();
+std::span<const EntryPoint> fragmentOpsEntryPoints();
+// The colour bits draws write: glColorMask's, none with glDrawBuffer(GL_NONE).
+void updateColorWrites(Context::State& state);
 std::span<const EntryPoint> evaluatorEntryPoints();
+std::span<const EntryPoint> accumulationEntryPoints();
+std::span<const EntryPoint> colorIndexEntryPoints();
+std::span<const EntryPoint> drawBufferEntryPoints();
+std::span<const EntryPoint> feedbackEntryPoints();
+
+// GL_FEEDBACK: the tokens of what the pipeline drew since the last call; a glBitmap's token (after
+// those); leaving the mode (the tokens so far, then glRenderMode's answer: the count, or -1 after
+// an overflow).
+void writeFeedbackPrimitives(Context::State& state);
+void writeFeedbackBitmap(Context::State& state);
+GLint endFeedback(Context::State& state);
+
+// glClear's GL_ACCUM_BUFFER_BIT: the accumulation buffer filled with glClearAccum's value.
+void clearAccumBuffer(Context::State& state);
 std::span<const EntryPoint> textureEntryPoints();
 std::span<const EntryPoint> textureParameterEntryPoints();
 std::span<const EntryPoint> textureGenEntryPoints();

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include <glrenderer/color_convert.h>
 
@@ -159,6 +160,24 @@ void packDepths(std::span<const std::uint32_t> depth24, int width, int height, G
         float z = static_cast<float>(depth24[i]) / static_cast<float>(glrenderer::kDepthMax24);
         if (transfer) z = pixel.transferDepth(z);
         putDepth(p, depth24[i], z, fastPath, type, modes.swapBytes);
+    });
+}
+
+void packStencils(std::span<const std::uint32_t> stencil, int width, int height, GLenum type,
+                  const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps, const PackTarget& target) {
+    const bool swap = modes.swapBytes;
+    const std::vector<float>& map = maps.of(GL_PIXEL_MAP_S_TO_S);
+    packRows(width, height, GL_STENCIL_INDEX, type, modes, target, [&](std::uint8_t* p, std::size_t i) {
+        std::int64_t value = stencil[i];
+        value = pixel.indexShift >= 0 ? value << std::min(pixel.indexShift, 32) : value >> std::min(-pixel.indexShift, 32);
+        value += pixel.indexOffset;
+        if (pixel.mapStencil) value = static_cast<std::int64_t>(map[static_cast<std::size_t>(value) & (map.size() - 1)]);
+        switch (type) {
+        case GL_UNSIGNED_BYTE: case GL_BYTE: return put(p, static_cast<std::uint8_t>(value), swap);
+        case GL_UNSIGNED_SHORT: case GL_SHORT: return put(p, static_cast<std::uint16_t>(value), swap);
+        case GL_FLOAT: return put(p, static_cast<float>(value), swap);
+        default: return put(p, static_cast<std::uint32_t>(value), swap);
+        }
     });
 }
 

@@ -28,4 +28,9 @@ void packColors(std::span<const std::uint32_t> rgba8, int width, int height, GLe
 void packDepths(std::span<const std::uint32_t> depth24, int width, int height, GLenum type,
                 const PixelStoreModes& modes, const PixelModes& pixel, const PackTarget& target);
 
+// width x height stencil values, bottom row first, through the index shift and offset and
+// GL_MAP_STENCIL, as indices of `type` (integers as they are, GL_FLOAT as a float).
+void packStencils(std::span<const std::uint32_t> stencil, int width, int height, GLenum type,
+                  const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps, const PackTarget& target);
+
 }  // namespace mygl

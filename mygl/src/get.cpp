@@ -5,8 +5,10 @@
 #include <cstring>
 #include <vector>
 
+#include "capabilities.h"
 #include "entry_points.h"
 #include "fog_state.h"
+#include "fragment_ops_state.h"
 #include "polygon_offset_state.h"
 #include "pixel_modes.h"
 #include "textures.h"
@@ -55,6 +57,9 @@ Value query(const Context::State& s, GLenum name) {
     case GL_SHADE_MODEL: return one(s.shadeModel);
     case GL_POLYGON_MODE: return Value{{double(s.polygonModeFront), double(s.polygonModeBack)}};
     case GL_LINE_WIDTH: return one(d.lineWidth);
+    // The reference's limits for points and lines, smooth or not.
+    case GL_POINT_SIZE_RANGE: case GL_LINE_WIDTH_RANGE: return Value{{1.0, 255.0}};
+    case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: return one(0.1f);
     case GL_POINT_SIZE: return one(d.pointSize);
     case GL_DEPTH_RANGE: return Value{{d.depthNear, d.depthFar}, true};
     case GL_COLOR_CLEAR_VALUE: return Value{{s.clearColor.r, s.clearColor.g, s.clearColor.b, s.clearColor.a}, true};
@@ -69,10 +74,11 @@ Value query(const Context::State& s, GLenum name) {
     case GL_CURRENT_RASTER_TEXTURE_COORDS:
         return Value{{s.rasterTexCoord.s, s.rasterTexCoord.t, s.rasterTexCoord.p, s.rasterTexCoord.q}};
     case GL_CURRENT_RASTER_DISTANCE: return one(s.rasterDistance);
+    case GL_CURRENT_RASTER_INDEX: return one(1);  // an RGBA context's
     case GL_CURRENT_RASTER_POSITION_VALID: return flag(s.rasterValid);
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: return one(8);
     case GL_DEPTH_BITS: return one(24);
-    case GL_STENCIL_BITS: return one(0);
+    case GL_STENCIL_BITS: return one(8);
     case GL_SUBPIXEL_BITS: return one(8);
     case GL_PACK_ALIGNMENT: return one(s.pack.alignment);
     case GL_UNPACK_ALIGNMENT: return one(s.unpack.alignment);
@@ -109,11 +115,27 @@ Value query(const Context::State& s, GLenum name) {
     case GL_EDGE_FLAG_ARRAY_STRIDE: return one(s.arrays.edgeFlag.stride);
     case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
     case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT: return one(s.hints.at(name));
+    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS: return one(16);
+    case GL_ACCUM_CLEAR_VALUE: {
+        const auto& c = s.buffers.accumClear;
+        return Value{{c[0], c[1], c[2], c[3]}, true};
+    }
+    case GL_DRAW_BUFFER: return one(s.buffers.drawBuffer);
+    case GL_READ_BUFFER: return one(s.buffers.readBuffer);
+    case GL_AUX_BUFFERS: case GL_INDEX_BITS: return one(0);
+    case GL_STEREO: case GL_INDEX_MODE: return flag(false);
+    case GL_RGBA_MODE: return flag(true);
+    case GL_CURRENT_INDEX: return one(s.buffers.currentIndex);
+    // Kept unsigned, answered as signed integers, as the reference does.
+    case GL_INDEX_CLEAR_VALUE: return one(static_cast<GLint>(s.buffers.clearIndex));
+    case GL_INDEX_WRITEMASK: return one(static_cast<GLint>(s.buffers.indexMask));
     case GL_LIST_BASE: return one(s.lists.base);
     case GL_RENDER_MODE: return one(s.renderMode);
     case GL_NAME_STACK_DEPTH: return one(double(s.selection.names.size()));
     case GL_MAX_NAME_STACK_DEPTH: return one(double(Selection::kMaxNameStackDepth));
     case GL_SELECTION_BUFFER_SIZE: return one(s.selection.size);
+    case GL_FEEDBACK_BUFFER_SIZE: return one(s.feedback.size);
+    case GL_FEEDBACK_BUFFER_TYPE: return one(s.feedback.type);
     case GL_LIST_INDEX: return one(s.lists.compilingName());
     case GL_LIST_MODE: return one(s.lists.compilingMode());
     case GL_MAX_LIST_NESTING: return one(DisplayLists::kMaxNesting);
@@ -145,12 +167,15 @@ Value query(const Context::State& s, GLenum name) {
         if (name == GL_POLYGON_OFFSET_UNITS) return one(d.polygonOffset.units);
         if (std::optional<std::vector<double>> fog = fogQuery(s, name)) return Value{*fog, name == GL_FOG_COLOR};
         if (const std::optional<bool> enabled = evaluatorCapability(s, name)) return flag(*enabled);
+        if (name == GL_COLOR_WRITEMASK) return Value{*fragmentOpsQuery(s, name), false, true};
+        if (std::optional<std::vector<double>> op = fragmentOpsQuery(s, name)) return Value{*op, name == GL_ALPHA_TEST_REF};
         if (const std::optional<bool> enabled = textureCapability(s, name)) return flag(*enabled);
         if (const std::optional<bool> enabled = texGenCapability(s, name)) return flag(*enabled);
         if (std::optional<std::vector<double>> texture = textureQuery(s, name)) return Value{*texture};
         if (const std::optional<double> pixel = pixelModeValue(s.pixelModes, s.pixelMaps, name)) {
             return name == GL_MAP_COLOR || name == GL_MAP_STENCIL ? flag(*pixel != 0.0) : one(*pixel);
         }
+        if (const std::optional<bool> enabled = capabilityEnabled(s, name)) return flag(*enabled);  // the inert ones
         return {};
     }
 }

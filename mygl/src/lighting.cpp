@@ -268,9 +268,13 @@ void getMaterial(GLenum face, GLenum name, T* out, Convert convert) {
     for (std::size_t i = 0; i < values.size(); ++i) out[i] = convert(isColor(name), values[i]);
 }
 
-// Colours as integers scale [-1, 1] to the integer range (FLOAT_TO_INT); other values truncate.
+// Colours as integers scale [-1, 1] to the integer range (FLOAT_TO_INT); a light's other values
+// truncate, a material's (the shininess) round half away from zero (lroundf, measured).
 GLint toInteger(bool color, float v) {
     return color ? static_cast<GLint>(2147483647.0 * static_cast<double>(v)) : static_cast<GLint>(v);
+}
+GLint toMaterialInteger(bool color, float v) {
+    return color ? toInteger(color, v) : static_cast<GLint>(std::lround(v));
 }
 GLfloat asFloat(bool, float v) { return v; }
 
@@ -308,7 +312,7 @@ const EntryPoint kEntryPoints[] = {
     {"glGetLightfv", entry(+[](GLenum l, GLenum name, GLfloat* out) { getLight(l, name, out, asFloat); })},
     {"glGetLightiv", entry(+[](GLenum l, GLenum name, GLint* out) { getLight(l, name, out, toInteger); })},
     {"glGetMaterialfv", entry(+[](GLenum face, GLenum name, GLfloat* out) { getMaterial(face, name, out, asFloat); })},
-    {"glGetMaterialiv", entry(+[](GLenum face, GLenum name, GLint* out) { getMaterial(face, name, out, toInteger); })},
+    {"glGetMaterialiv", entry(+[](GLenum face, GLenum name, GLint* out) { getMaterial(face, name, out, toMaterialInteger); })},
 };
 
 }  // namespace

@@ -83,4 +83,10 @@ Matrix ortho(float left, float right, float bottom, float top, float nearVal, fl
     return m;
 }
 
+glm::vec4 timesMatrix(const glm::vec4& v, const Matrix& m) {
+    glm::vec4 u;
+    for (int i = 0; i < 4; ++i) u[i] = v.x * m[4 * i] + v.y * m[4 * i + 1] + v.z * m[4 * i + 2] + v.w * m[4 * i + 3];
+    return u;
+}
+
 }  // namespace mygl

@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 
+#include <glm/vec4.hpp>
 #include <glrenderer/matrix.h>
 
 namespace mygl {
@@ -18,6 +19,10 @@ Matrix multiply(const Matrix& a, const Matrix& b);
 // a * b for matrices whose bottom rows are taken as 0 0 0 1: the terms of the bottom rows are
 // left out, and the product's bottom row is 0 0 0 1.
 Matrix multiplyAffine(const Matrix& a, const Matrix& b);
+
+// Mesa's _mesa_transform_vector: the row vector v times m, each component summed left to right
+// (planes taken to eye space: glClipPlane, glTexGen's eye planes).
+glm::vec4 timesMatrix(const glm::vec4& v, const Matrix& m);
 
 // The matrices glRotate, glFrustum and glOrtho multiply onto the current one, built in float
 // as the reference builds them. No rotation at all (nullopt) for a zero angle or an axis of

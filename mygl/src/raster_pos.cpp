@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "compiled.h"
+#include "vertex_input.h"
 
 namespace mygl {
 namespace {
@@ -34,6 +35,12 @@ void rasterPos(const glm::vec4& object) {
                          clip.z * d * s->draw.depthScale() + s->draw.depthTranslate(), clip.w};
     s->rasterDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
     s->rasterColor = s->color;
+    if (s->lightingEnabled) {  // lit by the same vertex program as a vertex (the draw module's)
+        glrenderer::Vertex lit;
+        lit.position = object, lit.normal = s->normal, lit.color = s->color;
+        lightVertex(*s, lit);
+        s->rasterColor = lit.color;
+    }
     s->rasterTexCoord = transform(s->texture.top().matrix(), s->texCoord);
     if (s->renderMode == GL_SELECT) s->selection.rasterHits.add(s->rasterPosition.z);
 }
@@ -59,6 +66,7 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
+    if (s->renderMode == GL_FEEDBACK) writeFeedbackBitmap(*s);
     if (!s->rasterValid) return;
     // Beyond 2^29 pixels away nothing can be on screen (and position - origin must fit an int).
     constexpr float kFarAway = 1 << 29;
@@ -71,6 +79,7 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
         const int x = static_cast<int>(std::floor(s->rasterPosition.x + kEpsilon - xorig));
         const int y = static_cast<int>(std::floor(s->rasterPosition.y + kEpsilon - yorig));
         const float z = s->rasterPosition.z;
+        s->bitmapCache.setDrawState(s->draw);
         if (BitmapCache::cacheable(width, height)) {
             if (!s->bitmapCache.accepts(x, y, width, height, s->rasterColor, z)) drawCachedBitmaps(*s);
             s->bitmapCache.add(x, y, width, height, bits, stride, s->rasterColor, z);
@@ -127,7 +136,7 @@ const EntryPoint kEntryPoints[] = {
 void drawCachedBitmaps(Context::State& state) {
     if (state.bitmapCache.empty()) return;
     endBatch(state);
-    state.pipeline.drawBitmap(state.draw, state.bitmapCache.bitmap());
+    state.pipeline.drawBitmap(state.bitmapCache.drawState(), state.bitmapCache.bitmap());
     state.bitmapCache.clear();
 }
 

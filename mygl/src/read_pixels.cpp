@@ -48,10 +48,10 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
     s->updateModelviewProjection();  // the reference validates its state here
     if (!isPixelFormat(format)) return setError(*s, GL_INVALID_ENUM);
-    // An RGBA buffer has no colour indices, and there is no stencil buffer: the reference says
-    // so before it looks at the type.
-    if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX) return setError(*s, GL_INVALID_OPERATION);
-    if (!isPixelType(type) || type == GL_BITMAP) return setError(*s, GL_INVALID_ENUM);
+    const bool indexFormat = format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
+    if (!isPixelType(type) || (type == GL_BITMAP && !indexFormat)) return setError(*s, GL_INVALID_ENUM);
+    // An RGBA buffer has no colour indices; stencil is read as integers or floats.
+    if (format == GL_COLOR_INDEX || type == GL_BITMAP) return setError(*s, GL_INVALID_OPERATION);
     if (!pixels) return;
     drawCachedBitmaps(*s);
     s->pipeline.finish();
@@ -60,6 +60,10 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
     if (columns.count == 0 || rows.count == 0) return;
     const PackTarget target{pixels, width, static_cast<std::size_t>(columns.offset), static_cast<std::size_t>(rows.offset)};
     const int w = static_cast<int>(columns.count), h = static_cast<int>(rows.count);
+    if (format == GL_STENCIL_INDEX) {
+        const auto values = wordsInside(fb.stencil().data(), fb.width(), x, y, columns, rows);
+        return packStencils(values, w, h, type, s->pack, s->pixelModes, s->pixelMaps, target);
+    }
     if (format == GL_DEPTH_COMPONENT) {
         const auto depths = wordsInside(fb.depth().data(), fb.width(), x, y, columns, rows);
         return packDepths(depths, w, h, type, s->pack, s->pixelModes, target);

@@ -1,10 +1,10 @@
 // Selection (GL_SELECT, for picking): glRenderMode, glSelectBuffer and the name stack. What a
 // draw hits comes from the pipeline (DrawState::selection); a hit record is written whenever
-// the name stack changes or selection ends, as the reference writes it.
+// the name stack changes or selection ends, as the reference writes it. (glRenderMode also
+// enters and leaves GL_FEEDBACK: feedback.cpp writes its tokens.)
 #include <cstdint>
 
 #include "compiled.h"
-#include "not_implemented.h"
 
 namespace mygl {
 namespace {
@@ -43,8 +43,8 @@ void changeNames(Check&& check, Change&& change) {
     change(s->selection.names);
 }
 
-// As the reference: selection ends (its records written, its counts reset) before the new mode
-// is checked, and a mode without a buffer is entered with GL_INVALID_OPERATION.
+// As the reference: selection or feedback ends (its records written, its counts reset) before
+// the new mode is checked, and a mode without a buffer is entered with GL_INVALID_OPERATION.
 GLint renderMode(GLenum mode) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return 0;
@@ -57,18 +57,17 @@ GLint renderMode(GLenum mode) {
         sel.hits = 0;
         sel.names.clear();
     }
+    if (s->renderMode == GL_FEEDBACK) result = endFeedback(*s);
     if (mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) {
         setError(*s, GL_INVALID_ENUM);
         return 0;
     }
-    if (mode == GL_FEEDBACK) {  // not yet: said as an unimplemented function says it
-        reportNotImplemented("glRenderMode(GL_FEEDBACK)");
-        return 0;
-    }
-    if (mode == GL_SELECT && s->selection.size == 0) setError(*s, GL_INVALID_OPERATION);
+    if ((mode == GL_SELECT && s->selection.size == 0) || (mode == GL_FEEDBACK && s->feedback.size == 0))
+        setError(*s, GL_INVALID_OPERATION);
     if (mode != s->renderMode) endBatch(*s);
     s->renderMode = mode;
     s->draw.selection = mode == GL_SELECT;
+    s->draw.feedback = mode == GL_FEEDBACK;
     return result;
 }
 

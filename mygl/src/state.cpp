@@ -6,6 +6,7 @@
 #include "clamp_to_unit.h"
 #include "compiled.h"
 #include "fog_state.h"
+#include "fragment_ops_state.h"
 #include "polygon_offset_state.h"
 #include "textures.h"
 
@@ -19,8 +20,7 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH,
-    GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST,
+    GL_DITHER, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE,
 };
 
 bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
@@ -208,7 +208,8 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
         return true;
     }
     if (setLightingCapability(s, cap, enabled) || setClipPlaneCapability(s, cap, enabled) ||
-        setEvaluatorCapability(s, cap, enabled) || setPolygonOffsetCapability(s, cap, enabled)) {
+        setEvaluatorCapability(s, cap, enabled) || setPolygonOffsetCapability(s, cap, enabled) ||
+        setFragmentOpsCapability(s, cap, enabled)) {
         return true;
     }
     if (setTextureCapability(s, cap, enabled) || setTexGenCapability(s, cap, enabled)) return true;
@@ -235,6 +236,7 @@ std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (const std::optional<bool> gen = texGenCapability(s, cap)) return *gen;
     if (const std::optional<bool> offset = polygonOffsetCapability(s, cap)) return *offset;
     if (const std::optional<bool> map = evaluatorCapability(s, cap)) return *map;
+    if (const std::optional<bool> op = fragmentOpsCapability(s, cap)) return *op;
     if (!isInert(cap)) return std::nullopt;
     return std::find(s.otherEnabled.begin(), s.otherEnabled.end(), cap) != s.otherEnabled.end();
 }

@@ -1,6 +1,7 @@
 // glTexGen and glGetTexGen, and the GL_TEXTURE_GEN_S/T/R/Q capabilities. As the reference: an
 // eye plane is stored times the inverse of the modelview at the call.
 #include "compiled.h"
+#include "matrix_math.h"
 #include "textures.h"
 
 namespace mygl {
@@ -8,13 +9,6 @@ namespace {
 
 // The index of GL_S ... GL_Q, or -1.
 int coordinateIndex(GLenum coord) { return coord >= GL_S && coord <= GL_Q ? static_cast<int>(coord - GL_S) : -1; }
-
-// Mesa's _mesa_transform_vector: the row vector v times m, each component summed left to right.
-glm::vec4 timesMatrix(const glm::vec4& v, const Matrix& m) {
-    glm::vec4 u;
-    for (int i = 0; i < 4; ++i) u[i] = v.x * m[4 * i] + v.y * m[4 * i + 1] + v.z * m[4 * i + 2] + v.w * m[4 * i + 3];
-    return u;
-}
 
 std::size_t texGenCount(GLenum name) { return name == GL_OBJECT_PLANE || name == GL_EYE_PLANE ? 4 : 1; }
 

@@ -27,21 +27,25 @@ void lightVertex(Context::State& s, glrenderer::Vertex& v);
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
 // The vertex goes to the pipeline as given; its vertex stage transforms it. `size`: glVertex2, 3 or 4.
+// `pushVertex`: the vertex with the current attributes, once the vertex format has its position.
+[[gnu::always_inline]] inline void pushVertex(Context::State& s, const glm::vec4& object) {
+    glrenderer::Vertex& v = s.pipeline.addVertex();
+    v.position = object;
+    v.normal = s.normal;
+    v.edgeFlag = s.edgeFlag;
+    v.texCoord = s.texCoord;
+    if (!s.lightingEnabled) {
+        v.color = s.vertexColor;
+    } else {
+        v.color = s.color;  // lit by the pipeline's vertex stage, or here after glMaterial inside glBegin/glEnd
+        if (s.lightingOnProgramThread) lightVertex(s, v);
+    }
+}
 [[gnu::always_inline]] inline void addVertex(const glm::vec4& object, int size) {
     Context::State* s = currentState();
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
     s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
-    glrenderer::Vertex& v = s->pipeline.addVertex();
-    v.position = object;
-    v.normal = s->normal;
-    v.edgeFlag = s->edgeFlag;
-    v.texCoord = s->texCoord;
-    if (!s->lightingEnabled) {
-        v.color = s->vertexColor;
-    } else {
-        v.color = s->color;  // lit by the pipeline's vertex stage, or here after glMaterial inside glBegin/glEnd
-        if (s->lightingOnProgramThread) lightVertex(*s, v);
-    }
+    pushVertex(*s, object);
 }
 
 template <class T>

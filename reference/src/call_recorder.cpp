@@ -43,13 +43,15 @@ struct Kept<const void*> {
     const void* get() const { return data.empty() ? pointer : data.data(); }
 };
 
-// Names written by the call (glGenTextures): replayed into storage of their own, as the
-// program's array may be gone by then (the backend generates the same names again).
+// Words the call writes. With a count (glGenTextures' names) the replay writes storage of its
+// own, as the program's array may be gone by then (the backend generates the same names again);
+// without one (glSelectBuffer's hit buffer) the program's pointer is kept.
 template <>
 struct Kept<GLuint*> {
+    GLuint* pointer;
     mutable std::vector<GLuint> names;
-    Kept(GLuint*, std::size_t count) : names(count) {}
-    GLuint* get() const { return names.data(); }
+    Kept(GLuint* p, std::size_t count) : pointer(p), names(count) {}
+    GLuint* get() const { return names.empty() ? pointer : names.data(); }
 };
 
 // How many elements a pointer argument of the call points at: a number, or a function of the
@@ -204,7 +206,7 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
 }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, lighting, fog, polygon offset, textures, pixel rectangles, selection (the program's hit buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, lighting, fog, polygon offset, the per-fragment operations, textures, pixel rectangles, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -227,6 +229,9 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glColorMaterial, 0) \
     X(glad_glFogf, 0) X(glad_glFogi, 0) X(glad_glFogfv, fogCount<GLfloat>) X(glad_glFogiv, fogCount<GLint>) \
     X(glad_glPolygonOffset, 0) \
+    X(glad_glScissor, 0) X(glad_glAlphaFunc, 0) X(glad_glStencilFunc, 0) X(glad_glStencilOp, 0)             \
+    X(glad_glStencilMask, 0) X(glad_glClearStencil, 0) X(glad_glBlendFunc, 0) X(glad_glLogicOp, 0)           \
+    X(glad_glColorMask, 0) \
     X(glad_glGenTextures, generatedCount) X(glad_glBindTexture, 0) X(glad_glDeleteTextures, namesCount)       \
     X(glad_glPrioritizeTextures, priorityCount) X(glad_glTexImage1D, texImage1DBytes)                        \
     X(glad_glTexImage2D, texImage2DBytes) X(glad_glTexSubImage1D, texSubImage1DBytes)                        \
@@ -241,6 +246,8 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glTexCoord1dv, 1) X(glad_glTexCoord1fv, 1) X(glad_glTexCoord1iv, 1) X(glad_glTexCoord1sv, 1)      \
     X(glad_glTexCoord3dv, 3) X(glad_glTexCoord3fv, 3) X(glad_glTexCoord3iv, 3) X(glad_glTexCoord3sv, 3)      \
     X(glad_glTexCoord4dv, 4) X(glad_glTexCoord4fv, 4) X(glad_glTexCoord4iv, 4) X(glad_glTexCoord4sv, 4)      \
+    X(glad_glTexGend, 0) X(glad_glTexGenf, 0) X(glad_glTexGeni, 0) X(glad_glTexGendv, textureParameterCount<GLdouble>) \
+    X(glad_glTexGenfv, textureParameterCount<GLfloat>) X(glad_glTexGeniv, textureParameterCount<GLint>)       \
     X(glad_glPixelStoref, 0) \
     X(glad_glDrawPixels, drawPixelsBytes) X(glad_glCopyPixels, 0) X(glad_glPixelZoom, 0) \
     X(glad_glPixelTransferf, 0) X(glad_glPixelTransferi, 0) X(glad_glPixelMapfv, pixelMapCount<GLfloat>) \
@@ -252,7 +259,11 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glMapGrid2d, 0) X(glad_glEvalCoord1f, 0) X(glad_glEvalCoord1d, 0) X(glad_glEvalCoord1fv, 1)          \
     X(glad_glEvalCoord1dv, 1) X(glad_glEvalCoord2f, 0) X(glad_glEvalCoord2d, 0) X(glad_glEvalCoord2fv, 2)      \
     X(glad_glEvalCoord2dv, 2) X(glad_glEvalPoint1, 0) X(glad_glEvalPoint2, 0) X(glad_glEvalMesh1, 0)           \
-    X(glad_glEvalMesh2, 0)
+    X(glad_glEvalMesh2, 0) \
+    X(glad_glClearAccum, 0) X(glad_glAccum, 0) X(glad_glDrawBuffer, 0) X(glad_glReadBuffer, 0)              \
+    X(glad_glIndexd, 0) X(glad_glIndexf, 0) X(glad_glIndexi, 0) X(glad_glIndexs, 0) X(glad_glIndexub, 0)   \
+    X(glad_glIndexdv, 1) X(glad_glIndexfv, 1) X(glad_glIndexiv, 1) X(glad_glIndexsv, 1) X(glad_glIndexubv, 1) \
+    X(glad_glClearIndex, 0) X(glad_glIndexMask, 0) X(glad_glFeedbackBuffer, 0) X(glad_glPassThrough, 0)
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();

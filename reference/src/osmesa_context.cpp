@@ -16,7 +16,7 @@ struct OsmesaContext::Handle {
 OsmesaContext::OsmesaContext(int width, int height) : width_(width), height_(height) {
     if (width <= 0 || height <= 0) throw std::runtime_error("OSMesa context size must be positive");
     handle_ = new Handle;
-    handle_->context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
+    handle_->context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 16, nullptr);
     if (!handle_->context) {
         delete handle_;
         throw std::runtime_error("OSMesaCreateContextExt failed");

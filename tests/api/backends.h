@@ -4,7 +4,9 @@
 #include <mygl/context.h>
 #include <reference/osmesa_context.h>
 
+#include <algorithm>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace testing_support {
@@ -58,6 +60,17 @@ inline Frame readFrame(int width, int height) {
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, frame.color.data());
     glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, frame.depth.data());
     return frame;
+}
+
+// Where two walks of values (queries and errors, in call order) first differ, for a failure
+// message: "index: ours vs theirs", or "" if they are equal.
+inline std::string firstDifference(const std::vector<double>& ours, const std::vector<double>& theirs) {
+    const std::size_t n = std::min(ours.size(), theirs.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(ours[i] == theirs[i]) && !(ours[i] != ours[i] && theirs[i] != theirs[i]))
+            return std::to_string(i) + ": " + std::to_string(ours[i]) + " vs " + std::to_string(theirs[i]);
+    }
+    return ours.size() == theirs.size() ? "" : "sizes " + std::to_string(ours.size()) + " vs " + std::to_string(theirs.size());
 }
 
 }  // namespace testing_support

@@ -289,6 +289,8 @@ TEST(Lighting, StateAndErrorsMatchTheReference) {
         glLighti(GL_LIGHT2, GL_SPOT_CUTOFF, 45);
         glMaterialiv(GL_FRONT_AND_BACK, GL_EMISSION, iv);
         glMateriali(GL_BACK, GL_SHININESS, 17);
+        glMaterialf(GL_FRONT, GL_SHININESS, 60.5f);  // glGetMaterialiv rounds it, glGetLightiv truncates
+        glLightf(GL_LIGHT2, GL_SPOT_EXPONENT, 60.7f);
         glLightModeliv(GL_LIGHT_MODEL_AMBIENT, iv);
         glColorMaterial(GL_BACK, GL_SPECULAR);
         glColor4f(0.1f, 0.2f, 0.3f, 0.4f);

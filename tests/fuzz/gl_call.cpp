@@ -155,6 +155,7 @@ UnsignedStyle unsignedStyle(std::string_view name) {
     if (name.starts_with("glColor")) return UnsignedStyle::Number;
     if (name == "glClear" || name.ends_with("Attrib")) return UnsignedStyle::ClearMask;
     if (name == "glBegin") return UnsignedStyle::PrimitiveMode;
+    if (name.ends_with("List") || name.ends_with("Lists") || name == "glListBase") return UnsignedStyle::Number;
     return UnsignedStyle::Enum;
 }
 
@@ -221,7 +222,19 @@ std::string printReadPixels(const Call& call) {
 // Every entry point the fuzzer calls: the recorded (state and drawing) calls and the queries.
 #define MYGL_QUERY_CALLS(X)                                                                       \
     X(glad_glGetError, 0) X(glad_glGetBooleanv, 0) X(glad_glGetIntegerv, 0) X(glad_glGetFloatv, 0) \
-    X(glad_glGetDoublev, 0) X(glad_glIsEnabled, 0) X(glad_glGetString, 0)
+    X(glad_glGetDoublev, 0) X(glad_glIsEnabled, 0) X(glad_glGetString, 0)                        \
+    X(glad_glGetLightfv, 0) X(glad_glGetLightiv, 0) X(glad_glGetMaterialfv, 0) X(glad_glGetMaterialiv, 0) \
+    X(glad_glGetClipPlane, 0) X(glad_glIsList, 0)
+
+// Lighting, fog, polygon offset, clip planes and display lists: state calls the call recorder
+// lists apart (their pointers hold up to 4 values for every parameter name).
+#define MYGL_FEATURE_CALLS(X)                                                                     \
+    X(glad_glLightf, 0) X(glad_glLighti, 0) X(glad_glLightfv, 4) X(glad_glLightiv, 4)             \
+    X(glad_glMaterialf, 0) X(glad_glMateriali, 0) X(glad_glMaterialfv, 4) X(glad_glMaterialiv, 4) \
+    X(glad_glLightModelf, 0) X(glad_glLightModeli, 0) X(glad_glLightModelfv, 4) X(glad_glLightModeliv, 4) \
+    X(glad_glColorMaterial, 0) X(glad_glFogf, 0) X(glad_glFogi, 0) X(glad_glFogfv, 4) X(glad_glFogiv, 4) \
+    X(glad_glPolygonOffset, 0) X(glad_glClipPlane, 4)                                             \
+    X(glad_glNewList, 0) X(glad_glEndList, 0) X(glad_glCallList, 0) X(glad_glDeleteLists, 0) X(glad_glListBase, 0)
 
 const std::vector<FunctionInfo>& table() {
     static const std::vector<FunctionInfo> functions = [] {
@@ -231,6 +244,7 @@ const std::vector<FunctionInfo>& table() {
                  [](const Call& c) { return Entry<slot, count>::print(c, std::string_view(#slot).substr(5)); }});
         MYGL_RECORDED_CALLS(MYGL_FUZZ_ENTRY)
         MYGL_QUERY_CALLS(MYGL_FUZZ_ENTRY)
+        MYGL_FEATURE_CALLS(MYGL_FUZZ_ENTRY)
 #undef MYGL_FUZZ_ENTRY
         t.push_back({"glReadPixels", 6, &runReadPixels, &printReadPixels});
         return t;

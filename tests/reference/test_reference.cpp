@@ -142,9 +142,10 @@ TEST(CallRecorder, AFrameCallingFunctionsMyglLacksIsComparedWithoutACrash) {
     const auto display = [] {
         glClearColor(0.0f, 0.0f, 1.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        glAccum(GL_ADD, 0.5f);  // not implemented by MyGL yet (no accumulation buffer)
+        glPixelZoom(2.0f, 2.0f);  // not implemented by MyGL yet; changes nothing without pixel rectangles
         glRectf(-0.5f, -0.5f, 0.5f, 0.5f);
     };
+    if (mygl::implements("glPixelZoom")) GTEST_SKIP() << "glPixelZoom landed: call a function still on the stub";
     reference::CallRecorder recorder;
     mygl::Context mygl(32, 32);
     mygl.makeCurrent();

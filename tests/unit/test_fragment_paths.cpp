@@ -5,6 +5,7 @@
 // random triangles in every fragment state, whole or cut to a rectangle as tiles are.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -46,6 +47,17 @@ std::string describe(const FragmentKey& key) {
                 std::to_string(static_cast<int>(key.wrapT));
     }
     if (key.depthOffset) text += " offset";
+    if (key.alphaFunc != CompareFunc::Always) text += " alpha " + std::to_string(static_cast<int>(key.alphaFunc));
+    if (key.stencilTest) {
+        text += " stencil " + std::to_string(static_cast<int>(key.stencilFunc)) + " ops " +
+                std::to_string(static_cast<int>(key.stencilFail)) + std::to_string(static_cast<int>(key.stencilDepthFail)) +
+                std::to_string(static_cast<int>(key.stencilDepthPass));
+    }
+    if (key.blendSrc != BlendFactor::One || key.blendDst != BlendFactor::Zero) {
+        text += " blend " + std::to_string(static_cast<int>(key.blendSrc)) + " " + std::to_string(static_cast<int>(key.blendDst));
+    }
+    if (key.logicOp != LogicOp::Copy) text += " logic op " + std::to_string(static_cast<int>(key.logicOp));
+    if (key.colorMask) text += " colour mask";
     return text;
 }
 
@@ -68,12 +80,35 @@ std::vector<NamedRoutine> routinesOfThisCpu() {
     return routines;
 }
 
+// Per-fragment operations (issue 16), each on in about a third of the draws.
+FragmentOps randomFragmentOps(std::mt19937& random) {
+    std::uniform_int_distribution<int> func(0, 7), op(0, 5), factor(0, 10), logic(0, 15), third(0, 2), byte(0, 255);
+    FragmentOps ops;
+    ops.alphaTest = third(random) == 0;
+    ops.alphaFunc = static_cast<CompareFunc>(func(random));
+    ops.alphaRef = static_cast<std::uint8_t>(byte(random));
+    StencilState& s = ops.stencil;
+    s.enabled = third(random) == 0;
+    s.func = static_cast<CompareFunc>(func(random));
+    s.ref = static_cast<std::uint8_t>(byte(random)), s.valueMask = static_cast<std::uint8_t>(byte(random));
+    s.writeMask = third(random) == 0 ? 0xFF : static_cast<std::uint8_t>(byte(random));
+    s.fail = static_cast<StencilOp>(op(random)), s.depthFail = static_cast<StencilOp>(op(random));
+    s.depthPass = static_cast<StencilOp>(op(random));
+    ops.blend = third(random) == 0;
+    ops.blendSrc = static_cast<BlendFactor>(factor(random)), ops.blendDst = static_cast<BlendFactor>(factor(random));
+    ops.logicOpEnabled = third(random) == 0 && third(random) == 0;
+    ops.logicOp = static_cast<LogicOp>(logic(random));
+    if (third(random) == 0) ops.colorMask = static_cast<std::uint32_t>(byte(random)) * 0x01010101u & 0xFF00FF00u;
+    return ops;
+}
+
 FragmentKey randomKey(std::mt19937& random) {
     std::uniform_int_distribution<int> shading(0, 2), depthFunc(0, 7), coin(0, 1), fog(0, 3);
     FragmentKey key = makeFragmentKey(static_cast<Shading>(shading(random)), coin(random),
                                       static_cast<CompareFunc>(depthFunc(random)), coin(random));
     key.fog = static_cast<FogMode>(fog(random));
     key.depthOffset = key.depthTest && coin(random);
+    key = withFragmentOps(key, randomFragmentOps(random));
     if (coin(random)) {
         std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2);
         key = withTexture(key, static_cast<TextureEnv>(env(random)), coin(random), static_cast<TextureBase>(base(random)),
@@ -131,6 +166,8 @@ struct Target {
     Target(const std::vector<std::uint32_t>& color, const std::vector<std::uint32_t>& depth) {
         std::copy(color.begin(), color.end(), framebuffer.color().begin());
         std::copy(depth.begin(), depth.end(), framebuffer.depth().begin());
+        // Stencil values from the depths' low bytes: varied, and the same in every target.
+        std::transform(depth.begin(), depth.end(), framebuffer.stencil().begin(), [](std::uint32_t d) { return d & 0xFF; });
     }
 };
 
@@ -142,6 +179,10 @@ testing::AssertionResult same(const Target& expected, const Target& actual) {
     if (!std::equal(expected.framebuffer.depth().begin(), expected.framebuffer.depth().end(),
                     actual.framebuffer.depth().begin())) {
         return testing::AssertionFailure() << "depths differ";
+    }
+    if (!std::equal(expected.framebuffer.stencil().begin(), expected.framebuffer.stencil().end(),
+                    actual.framebuffer.stencil().begin())) {
+        return testing::AssertionFailure() << "stencil values differ";
     }
     if (expected.counts.fragments != actual.counts.fragments || expected.counts.passed != actual.counts.passed) {
         return testing::AssertionFailure() << "counts differ";
@@ -205,6 +246,7 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
             inputs.fogCoord = randomPlane(random, -2.0f, 40.0f);
             inputs.fog = randomFog(random);
             inputs.depthOffset = std::uniform_real_distribution<float>(-0.01f, 0.01f)(random);
+            inputs.ops = FragmentOpsConstants::of(randomFragmentOps(random));
             for (int k = 0; k < 2; ++k) inputs.texCoord[k] = randomPlane(random, -1.5f, 2.5f);
             inputs.texCoord[2] = randomPlane(random, 0.5f, 2.0f);
             inputs.texture = &textures[i % 2];
@@ -260,6 +302,7 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         if (fourth(random) == 0) methods.interpolation = Interpolation::ScreenLinear;
         if (fourth(random) == 0) state.fog = randomFog(random);
         if (fourth(random) == 0) state.polygonOffset = {1.5f, -3.0f, true, false, false};
+        state.fragmentOps = randomFragmentOps(random);
         if (fourth(random) == 0) {
             std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2);
             state.texture.env = static_cast<TextureEnv>(env(random));
@@ -281,7 +324,7 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         for (const FragmentPaths* paths : allPaths) {
             RasterTriangle triangle;
             const FragmentChoice choice(*paths, triangleFragmentKey(state, methods), state);
-            if (!prepareTriangle(setup, choice, RasterMethod::Exact, kWidth, kHeight, triangle)) break;
+            if (!prepareTriangle(setup, choice, RasterMethod::Exact, {0, kWidth - 1, 0, kHeight - 1}, triangle)) break;
             if (paths == allPaths.front()) ++drawn;
             Target expected(color, depth);
             rasterizeTriangleExact(triangle, rect, expected.framebuffer, expected.counts);

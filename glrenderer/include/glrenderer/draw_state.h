@@ -5,6 +5,7 @@
 #include <glm/vec4.hpp>
 
 #include "glrenderer/fog.h"
+#include "glrenderer/fragment_ops.h"
 #include "glrenderer/polygon_offset.h"
 #include "glrenderer/texture.h"
 
@@ -23,8 +24,6 @@ inline constexpr int kPrimitiveModeCount = 10;
 enum class QuadSplit : std::uint8_t { ByPath, V1V3 };
 
 enum class Face : std::uint8_t { Front, Back, FrontAndBack };
-enum class CompareFunc : std::uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual,
-                                        GreaterEqual, Always };
 enum class ShadeModel : std::uint8_t { Flat, Smooth };
 enum class PolygonMode : std::uint8_t { Point, Line, Fill };
 
@@ -59,6 +58,7 @@ struct DrawState {
     float lineWidth = 1.0f;
     float pointSize = 1.0f;
     bool selection = false;  // GL_SELECT: primitives make hits (Pipeline::takeHits), not pixels
+    bool feedback = false;   // GL_FEEDBACK: primitives are handed back (Pipeline::takeFeedback)
     // Two-sided lighting: filled triangles facing back take their vertices' back colours.
     bool twoSidedColors = false;
     UserClipPlanes clipPlanes;
@@ -66,6 +66,8 @@ struct DrawState {
     FogState fog;
     // Polygon offset (issue 16).
     PolygonOffset polygonOffset;
+    // Scissor, alpha test, stencil, blending, logic op, colour mask (issue 16).
+    FragmentOps fragmentOps;
     // Texturing (issue 16): env Off when disabled.
     TextureState texture;
     bool operator==(const DrawState&) const = default;

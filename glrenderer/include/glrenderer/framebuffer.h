@@ -4,10 +4,11 @@
 #include <memory>
 #include <new>
 #include <span>
+#include <vector>
 
 namespace glrenderer {
 
-// RGBA8 color and 24-bit depth, row 0 at the bottom (the layout of glReadPixels and OSMesa).
+// RGBA8 color, 24-bit depth and 8-bit stencil, row 0 at the bottom (the layout of glReadPixels and OSMesa).
 class Framebuffer {
 public:
     Framebuffer(int width, int height);
@@ -24,6 +25,14 @@ public:
     // Depth as an unsigned 24-bit integer (0 = near, 0xFFFFFF = far) per pixel.
     std::span<std::uint32_t> depth() { return {depth_.get(), count_}; }
     std::span<const std::uint32_t> depth() const { return {depth_.get(), count_}; }
+
+    // The accumulation buffer: R, G, B, A signed 16-bit words per pixel (the reference's
+    // GL_RGBA16_SNORM), allocated zeroed at the first use, as a program that never calls glAccum
+    // pays nothing for it.
+    std::span<std::int16_t> accum();
+    // Stencil values in the low byte of a word per pixel (the fragment stage's lanes are words).
+    std::span<std::uint32_t> stencil() { return {stencil_.get(), count_}; }
+    std::span<const std::uint32_t> stencil() const { return {stencil_.get(), count_}; }
 
     void clearColor(std::uint32_t rgba);
     void clearDepth(std::uint32_t depth24);
@@ -49,6 +58,8 @@ private:
     std::uint64_t writeGeneration_ = 0;
     Pixels color_;
     Pixels depth_;
+    std::vector<std::int16_t> accum_;
+    Pixels stencil_;
 };
 
 }  // namespace glrenderer

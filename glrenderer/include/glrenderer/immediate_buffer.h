@@ -48,6 +48,7 @@ public:
     bool endPrimitive(PrimitiveMode mode, std::size_t count, bool loopClosed);
 
     bool hasVertices() const { return vertices_ > 0; }
+    bool has(VertexAttribute attribute) const { return sizes_[index(attribute)] > 0; }
     // Draws what the buffer holds.
     void flush();
     // A state change, glFlush, glClear, a read: the vertices are drawn and the format forgotten.

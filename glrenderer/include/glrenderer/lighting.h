@@ -3,6 +3,7 @@
 // reference's arithmetic (Mesa's fixed-function vertex program as llvmpipe runs it; see
 // docs/reference-rules.md, "Lighting").
 #include <array>
+#include <span>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -57,46 +58,50 @@ struct LightingModelview {
     bool lengthPreserving;
 };
 
+// A light as the vertex program sees it, prepared when the state changes.
+struct PreparedLight {
+    glm::vec3 position;     // a point (positional) or the normalized direction
+    glm::vec3 halfVector;   // directional lights without a local viewer
+    glm::vec3 spotDirection;
+    float cosCutoff, spotExponent;
+    glm::vec3 attenuation;  // constant, linear, quadratic
+    glm::vec4 ambient, diffuse, specular;  // the light's colours
+    bool positional, spot, attenuated;
+};
+
 // The state prepared for lighting vertices, as the reference prepares it when state changes:
 // the lighting space (object space when nothing needs eye coordinates), light vectors in that
-// space, products of light and material colours.
+// space, the materials and which of their colours follow the current colour.
+struct PreparedLighting {
+    std::array<PreparedLight, kMaxLights> lights{};
+    int lightCount = 0;
+    std::array<float, 16> modelview{};
+    std::array<float, 16> inverse{};
+    std::array<Material, 2> materials;
+    std::array<ColorMaterial, 2> follows;
+    glm::vec4 modelAmbient{0.0f};
+    float normalScale = 1.0f;
+    bool eyeSpace = false, normalize = false, rescale = false, localViewer = false;
+    bool shininessIsZero = true;  // for both faces: no specular term in the program
+};
+
+// Lights vertices in the reference's arithmetic (docs/reference-rules.md, "Lighting"), several
+// at a time in the widest lanes the CPU has, with the same bits at every width.
 class VertexLighting {
 public:
     VertexLighting() = default;
     VertexLighting(const LightingState& state, const LightingModelview& modelview);
 
-    // The lit colour (not yet clamped) of a vertex at `object` with the object-space normal
-    // `normal`; `color`: the current colour, for the material colours that follow it. `face`
-    // 1 lights the back face (back material, the normal reversed) for two-sided lighting.
-    glm::vec4 light(const glm::vec4& object, const glm::vec3& normal, const glm::vec4& color, int face = 0) const;
-    // A vertex lit in place: its colour (the current colour as given, unclamped) becomes the
-    // lit colour and, with `twoSided`, its back colour the back face's, both clamped as the
-    // reference clamps vertex colours.
+    // Vertices lit in place: each one's colour (the current colour as given, unclamped) becomes
+    // the lit colour and, with `twoSided`, its back colour the back face's (the back material,
+    // the normal reversed), both clamped as the reference clamps vertex colours.
+    void lightVertices(std::span<Vertex> vertices, bool twoSided) const;
+    // One vertex, in one lane: the same bits without a block's work.
     void lightVertex(Vertex& vertex, bool twoSided) const;
+    const PreparedLighting& prepared() const { return prepared_; }
 
 private:
-    struct Light {
-        glm::vec3 position;     // a point (positional) or the normalized direction
-        glm::vec3 halfVector;   // directional lights without a local viewer
-        glm::vec3 spotDirection;
-        float cosCutoff, spotExponent;
-        glm::vec3 attenuation;  // constant, linear, quadratic
-        glm::vec4 ambient, diffuse, specular;  // the light's colours
-        bool positional, spot, attenuated;
-    };
-    glm::vec3 transformedNormal(const glm::vec3& normal) const;
-    glm::vec4 material(int face, int property, const glm::vec4& color) const;
-
-    std::array<Light, kMaxLights> lights_{};
-    int lightCount_ = 0;
-    std::array<float, 16> modelview_{};
-    std::array<float, 16> inverse_{};
-    std::array<Material, 2> materials_;
-    std::array<ColorMaterial, 2> follows_;
-    glm::vec4 modelAmbient_{0.0f};
-    float normalScale_ = 1.0f;
-    bool eyeSpace_ = false, normalize_ = false, rescale_ = false, localViewer_ = false;
-    bool shininessIsZero_ = true;
+    PreparedLighting prepared_;
 };
 
 }  // namespace glrenderer

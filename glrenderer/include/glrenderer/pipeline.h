@@ -8,6 +8,7 @@
 #include "glrenderer/bitmap.h"
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/feedback.h"
 #include "glrenderer/hit_range.h"
 #include "glrenderer/immediate_buffer.h"
 #include "glrenderer/lighting.h"
@@ -17,6 +18,16 @@
 #include "glrenderer/vertex.h"
 
 namespace glrenderer {
+
+// What glClear writes: the buffers cleared with their values (colour and depth converted by the
+// caller's rules, see color_convert.h), the colour and stencil bits written, the scissor box.
+struct ClearRequest {
+    bool color = false, depth = false, stencil = false;
+    std::uint32_t rgba = 0, depth24 = 0;
+    std::uint32_t colorMask = 0xFFFFFFFF;
+    std::uint8_t stencilValue = 0, stencilMask = 0xFF;
+    ScissorBox scissor;
+};
 
 class BatchDrawer;
 class BatchThread;
@@ -88,8 +99,15 @@ public:
     // Draws a glDrawPixels image's fragments likewise (see PixelImage for which pixels).
     void drawPixels(const DrawState& state, const PixelImage& image);
 
-    // Clears with colors/depth already converted by the caller's rules (see color_convert.h).
-    void clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);
+    // Whole colour and depth buffers are cleared tile by tile at the next flush; a clear cut by
+    // the scissor or masked, and the stencil buffer, at once.
+    void clear(const ClearRequest& request);
+    // Whole colour and depth buffers.
+    void clear(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24) {
+        ClearRequest request;
+        request.color = color, request.depth = depth, request.rgba = rgba, request.depth24 = depth24;
+        clear(request);
+    }
 
     // Takes effect for primitives submitted after the call.
     void setMethods(const Methods& methods) {
@@ -100,6 +118,8 @@ public:
 
     // The hits of what was submitted with DrawState::selection since the last call, drawn first.
     HitRange takeHits();
+    // The primitives of what was submitted with DrawState::feedback since the last call, in order.
+    FeedbackPrimitives takeFeedback();
 
     // Complete after finish().
     Stats stats() const;
