@@ -40,8 +40,9 @@ std::shared_ptr<const Texture> imageTexture(const PixelImage& image) {
     return texture;
 }
 
-// The state of the reference's quad: the draw's fragment operations with the whole window as
-// the viewport, depth range [0, 1], the image replacing the colour, nothing culled or offset.
+// The state of the reference's quad: the draw's fragment operations (depth, fog, scissor,
+// alpha, stencil, blending, logic op, masks) with the whole window as the viewport, depth range
+// [0, 1], the image replacing the colour, nothing culled or offset.
 DrawState quadState(const DrawState& state, int width, int height, std::shared_ptr<const Texture> texture) {
     DrawState quad;
     quad.depthTest = state.depthTest;
@@ -50,6 +51,7 @@ DrawState quadState(const DrawState& state, int width, int height, std::shared_p
     quad.shadeModel = ShadeModel::Flat;
     quad.viewport = {0, 0, width, height};
     quad.fog = state.fog;
+    quad.fragmentOps = state.fragmentOps;  // scissor, alpha test, stencil, blending, logic op, masks
     quad.texture.env = TextureEnv::Replace;
     quad.texture.base = TextureBase::Rgba;
     quad.texture.wrapS = quad.texture.wrapT = TextureWrap::ClampToEdge;

@@ -154,20 +154,37 @@ Run insideWindow(std::int64_t start, std::int64_t length, int limit) {
     return {first, std::max<std::int64_t>(end - first, 0)};
 }
 
-// The reference copies colours with a blit (no fragment operations, the source and target
-// cut to the window) when nothing would change them on the way, at zoom 1, and the cut
-// rectangles do not overlap (Mesa's blit_copy_pixels). Returns false when it would draw them.
+// The reference copies colours with a blit (no fragment operations but the scissor, the source
+// and target cut to the window and the scissor box) when nothing would change them on the way,
+// at zoom 1, and the cut rectangles do not overlap (Mesa's blit_copy_pixels: the colour mask is
+// not among its conditions, and a blit writes every channel). Returns false when it would draw.
 bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei height, int targetX, int targetY) {
-    const bool plainCopy = s.pixelModes.zoomX == 1.0f && s.pixelModes.zoomY == 1.0f &&
-                           (!s.draw.depthTest || (s.draw.depthFunc == glrenderer::CompareFunc::Always && !s.draw.depthWrite)) &&
-                           s.draw.fog.mode == glrenderer::FogMode::Off;
+    const glrenderer::DrawState& d = s.draw;
+    const glrenderer::FragmentOps& ops = d.fragmentOps;
+    const glrenderer::StencilState& stencil = ops.stencil;
+    const bool stencilKeeps = !stencil.enabled || (stencil.fail == glrenderer::StencilOp::Keep &&
+                                                   stencil.depthFail == glrenderer::StencilOp::Keep &&
+                                                   stencil.depthPass == glrenderer::StencilOp::Keep);
+    const bool plainCopy = s.pixelModes.zoomX == 1.0f && s.pixelModes.zoomY == 1.0f && !s.pixelModes.transfersColor() &&
+                           !ops.blend && !ops.alphaTest && (!ops.logicOpEnabled || ops.logicOp == glrenderer::LogicOp::Copy) &&
+                           (!d.depthTest || (d.depthFunc == glrenderer::CompareFunc::Always && !d.depthWrite)) &&
+                           d.fog.mode == glrenderer::FogMode::Off && stencilKeeps;
     if (!plainCopy) return false;
     auto& fb = s.framebuffer;
     // The source cut to the window, then the target (moving the source with it).
     Run columns = insideWindow(x, width, fb.width()), rows = insideWindow(y, height, fb.height());
     std::int64_t toX = targetX + (columns.first - x), toY = targetY + (rows.first - y);
-    const Run targetColumns = insideWindow(toX, columns.length, fb.width());
-    const Run targetRows = insideWindow(toY, rows.length, fb.height());
+    // The target is cut to the window, and to the scissor box when it is on.
+    const auto targetRun = [](std::int64_t start, std::int64_t length, int limit, bool scissor, int boxStart, int boxLength) {
+        Run run = insideWindow(start, length, limit);
+        if (!scissor) return run;
+        const std::int64_t first = std::max<std::int64_t>(run.first, boxStart);
+        const std::int64_t end = std::min<std::int64_t>(run.first + run.length, std::int64_t{boxStart} + boxLength);
+        return Run{first, std::max<std::int64_t>(end - first, 0)};
+    };
+    const glrenderer::ScissorBox& box = ops.scissor;
+    const Run targetColumns = targetRun(toX, columns.length, fb.width(), box.enabled, box.x, box.width);
+    const Run targetRows = targetRun(toY, rows.length, fb.height(), box.enabled, box.y, box.height);
     columns = {columns.first + (targetColumns.first - toX), targetColumns.length};
     rows = {rows.first + (targetRows.first - toY), targetRows.length};
     toX = targetColumns.first, toY = targetRows.first;

@@ -517,3 +517,67 @@ TEST(PixelRectangles, PixelModeStateQueriesErrorsAndAttribGroupEqualTheReference
     ASSERT_EQ(values.mygl.size(), values.osmesa.size());
     for (std::size_t i = 0; i < values.mygl.size(); ++i) EXPECT_EQ(values.mygl[i], values.osmesa[i]) << "value " << i;
 }
+
+TEST(PixelRectangles, DrawnAndCopiedPixelsGoThroughThePerFragmentOperations) {
+    const auto image = testImage(14, 11, GL_RGBA, GL_UNSIGNED_BYTE);
+    enum Operation { Blend, AlphaTest, Scissor, Stencil, ColorMask, LogicOp, StencilKeep, kOperations };
+    for (int operation = 0; operation < kOperations; ++operation) {
+        for (float zoom : {1.0f, 1.5f}) {
+            const auto frames = onBothBackends<Frame>([&] {
+                flatView();
+                colorfulScene();
+                glDisable(GL_DEPTH_TEST);
+                flatView();
+                glClearStencil(0);
+                glClear(GL_STENCIL_BUFFER_BIT);
+                switch (operation) {
+                case Blend:
+                    glEnable(GL_BLEND);
+                    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                    break;
+                case AlphaTest:
+                    glEnable(GL_ALPHA_TEST);
+                    glAlphaFunc(GL_GREATER, 0.4f);
+                    break;
+                case Scissor:
+                    glEnable(GL_SCISSOR_TEST);
+                    glScissor(5, 4, 20, 15);
+                    break;
+                case Stencil:
+                case StencilKeep:
+                    // A triangle marks the stencil; the images draw where it is 1 (and increment
+                    // it, or keep it).
+                    glEnable(GL_STENCIL_TEST);
+                    glStencilFunc(GL_ALWAYS, 1, 0xFF);
+                    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                    glBegin(GL_TRIANGLES);
+                    glVertex2f(0, 0);
+                    glVertex2f(40, 5);
+                    glVertex2f(12, 30);
+                    glEnd();
+                    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                    glStencilFunc(GL_EQUAL, 1, 0xFF);
+                    if (operation == Stencil) glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+                    else glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                    break;
+                case ColorMask: glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE); break;
+                case LogicOp:
+                    glEnable(GL_COLOR_LOGIC_OP);
+                    glLogicOp(GL_XOR);
+                    break;
+                }
+                glPixelZoom(zoom, zoom);
+                glRasterPos2i(2, 3);
+                glDrawPixels(14, 11, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+                glRasterPos2i(22, 14);
+                glCopyPixels(0, 0, 14, 12, GL_COLOR);
+                glDisable(GL_SCISSOR_TEST);
+                glDisable(GL_STENCIL_TEST);
+                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                return readFrame(kWidth, kHeight);
+            }, kWidth, kHeight);
+            expectSameFrames(frames, "operation " + std::to_string(operation) + " zoom " + std::to_string(zoom));
+        }
+    }
+}
