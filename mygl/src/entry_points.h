@@ -48,7 +48,10 @@ std::span<const EntryPoint> feedbackEntryPoints();
 // those); leaving the mode (the tokens so far, then glRenderMode's answer: the count, or -1 after
 // an overflow).
 void writeFeedbackPrimitives(Context::State& state);
-void writeFeedbackBitmap(Context::State& state);
+// The token of a glBitmap, glDrawPixels or glCopyPixels (GL_BITMAP_TOKEN, GL_DRAW_PIXEL_TOKEN,
+// GL_COPY_PIXEL_TOKEN) and the raster position, after the primitives before it; nothing when
+// the position is invalid.
+void writeFeedbackRasterPosition(Context::State& state, GLenum token);
 GLint endFeedback(Context::State& state);
 
 // glClear's GL_ACCUM_BUFFER_BIT: the accumulation buffer filled with glClearAccum's value.

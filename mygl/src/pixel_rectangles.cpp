@@ -102,6 +102,7 @@ void drawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     if (const GLenum error = drawPixelsError(width, height, format, type)) return setError(*s, error);
+    if (s->renderMode == GL_FEEDBACK) return writeFeedbackRasterPosition(*s, GL_DRAW_PIXEL_TOKEN);
     if (!pixels || width == 0 || height == 0 || !s->rasterValid || s->renderMode != GL_RENDER) return;
     if (format == GL_RGBA && type == GL_UNSIGNED_BYTE && !s->pixelModes.transfersColor()) {
         const std::vector<std::uint32_t> words = rgbaWords(pixels, width, height, s->unpack);
@@ -123,7 +124,10 @@ CompiledCall keptDrawPixels(const Context::State& s, GLsizei width, GLsizei heig
         return [=] { drawPixels(width, height, format, type, nullptr); };
     }
     return [width, height, colors = unpackDrawnImage(pixels, width, height, format, type, s.unpack)] {
-        if (Context::State* state = stateOutsideBeginEnd()) drawColors(*state, width, height, colors);
+        Context::State* state = stateOutsideBeginEnd();
+        if (!state) return;
+        if (state->renderMode == GL_FEEDBACK) return writeFeedbackRasterPosition(*state, GL_DRAW_PIXEL_TOKEN);
+        drawColors(*state, width, height, colors);
     };
 }
 
@@ -205,6 +209,7 @@ void copyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
     if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return setError(*s, GL_INVALID_ENUM);
     if (type != GL_COLOR) return setError(*s, GL_INVALID_OPERATION);  // not yet: depth and stencil copies
+    if (s->renderMode == GL_FEEDBACK) return writeFeedbackRasterPosition(*s, GL_COPY_PIXEL_TOKEN);
     if (width == 0 || height == 0 || !s->rasterValid || s->renderMode != GL_RENDER) return;
     int targetX = 0, targetY = 0;
     if (!imageCorner(*s, targetX, targetY)) return;

@@ -581,3 +581,36 @@ TEST(PixelRectangles, DrawnAndCopiedPixelsGoThroughThePerFragmentOperations) {
         }
     }
 }
+
+TEST(PixelRectangles, FeedbackGetsDrawAndCopyPixelTokensAtValidRasterPositions) {
+    const auto values = onBothBackends<std::vector<GLfloat>>([] {
+        flatView();
+        std::vector<GLfloat> buffer(256, -1.0f);
+        const GLubyte pixels[16] = {};
+        const GLuint list = glGenLists(1);
+        glNewList(list, GL_COMPILE);
+        glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+        glCopyPixels(0, 0, 3, 3, GL_COLOR);
+        glEndList();
+        glFeedbackBuffer(static_cast<GLsizei>(buffer.size()), GL_3D_COLOR_TEXTURE, buffer.data());
+        glRenderMode(GL_FEEDBACK);
+        glColor3f(0.25f, 0.5f, 0.75f);
+        glBegin(GL_POINTS);
+        glVertex2f(3, 4);
+        glEnd();
+        glRasterPos3f(5.5f, 6.25f, 0.5f);
+        glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+        glDrawPixels(0, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);  // a token all the same
+        glCopyPixels(1, 2, 3, 4, GL_COLOR);
+        glCallList(list);
+        glDrawPixels(-1, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels);  // an error: no token
+        glRasterPos2f(-5, 3);  // invalid: no tokens
+        glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+        glCopyPixels(1, 2, 3, 4, GL_COLOR);
+        std::vector<GLfloat> out{static_cast<GLfloat>(glRenderMode(GL_RENDER)), static_cast<GLfloat>(glGetError())};
+        out.insert(out.end(), buffer.begin(), buffer.end());
+        return out;
+    }, kWidth, kHeight);
+    EXPECT_EQ(values.mygl, values.osmesa);
+    EXPECT_GT(values.osmesa[0], 20.0f);  // the point and five raster tokens
+}
