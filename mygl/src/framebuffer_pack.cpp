@@ -11,26 +11,18 @@
 namespace mygl {
 namespace {
 
-template <class T>
-void put(std::uint8_t* p, T value, bool swapBytes) {
-    std::uint8_t bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    if (swapBytes) std::reverse(bytes, bytes + sizeof(T));
-    std::memcpy(p, bytes, sizeof(T));
-}
-
 // An 8-bit colour component as `type`: the reference converts unorm to unorm or snorm in
 // integers, rounding to nearest (x * max + 127) / 255, and to float as x / 255.
 void putByteComponent(std::uint8_t* p, std::uint32_t c, GLenum type, bool swap) {
     const auto rescaled = [c](std::int64_t max) { return (static_cast<std::int64_t>(c) * max + 127) / 255; };
     switch (type) {
-    case GL_UNSIGNED_BYTE: return put(p, static_cast<std::uint8_t>(c), swap);
-    case GL_BYTE: return put(p, static_cast<std::int8_t>(rescaled(127)), swap);
-    case GL_UNSIGNED_SHORT: return put(p, static_cast<std::uint16_t>(c * 257u), swap);
-    case GL_SHORT: return put(p, static_cast<std::int16_t>(rescaled(32767)), swap);
-    case GL_UNSIGNED_INT: return put(p, c * 16843009u, swap);
-    case GL_INT: return put(p, static_cast<std::int32_t>(rescaled(2147483647)), swap);
-    case GL_FLOAT: return put(p, static_cast<float>(c) * (1.0f / 255.0f), swap);
+    case GL_UNSIGNED_BYTE: return writeClientComponent(p, static_cast<std::uint8_t>(c), swap);
+    case GL_BYTE: return writeClientComponent(p, static_cast<std::int8_t>(rescaled(127)), swap);
+    case GL_UNSIGNED_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(c * 257u), swap);
+    case GL_SHORT: return writeClientComponent(p, static_cast<std::int16_t>(rescaled(32767)), swap);
+    case GL_UNSIGNED_INT: return writeClientComponent(p, c * 16843009u, swap);
+    case GL_INT: return writeClientComponent(p, static_cast<std::int32_t>(rescaled(2147483647)), swap);
+    case GL_FLOAT: return writeClientComponent(p, static_cast<float>(c) * (1.0f / 255.0f), swap);
     default: return;
     }
 }
@@ -47,14 +39,14 @@ void putFloatComponent(std::uint8_t* p, float v, GLenum type, bool swap) {
         return v > 1.0f ? static_cast<long long>(max) : std::llrint(v * max);
     };
     switch (type) {
-    case GL_UNSIGNED_BYTE: return put(p, static_cast<std::uint8_t>(scaled(255.0f)), swap);
-    case GL_BYTE: return put(p, static_cast<std::int8_t>(scaled(127.0f)), swap);
-    case GL_UNSIGNED_SHORT: return put(p, static_cast<std::uint16_t>(scaled(65535.0f)), swap);
-    case GL_SHORT: return put(p, static_cast<std::int16_t>(scaled(32767.0f)), swap);
+    case GL_UNSIGNED_BYTE: return writeClientComponent(p, static_cast<std::uint8_t>(scaled(255.0f)), swap);
+    case GL_BYTE: return writeClientComponent(p, static_cast<std::int8_t>(scaled(127.0f)), swap);
+    case GL_UNSIGNED_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(scaled(65535.0f)), swap);
+    case GL_SHORT: return writeClientComponent(p, static_cast<std::int16_t>(scaled(32767.0f)), swap);
     case GL_UNSIGNED_INT:
-        return put(p, v > 1.0f ? 4294967295u : static_cast<std::uint32_t>(scaled(4294967295.0f)), swap);
-    case GL_INT: return put(p, v > 1.0f ? 2147483647 : static_cast<std::int32_t>(scaled(2147483647.0f)), swap);
-    case GL_FLOAT: return put(p, v, swap);
+        return writeClientComponent(p, v > 1.0f ? 4294967295u : static_cast<std::uint32_t>(scaled(4294967295.0f)), swap);
+    case GL_INT: return writeClientComponent(p, v > 1.0f ? 2147483647 : static_cast<std::int32_t>(scaled(2147483647.0f)), swap);
+    case GL_FLOAT: return writeClientComponent(p, v, swap);
     default: return;
     }
 }
@@ -65,15 +57,15 @@ void putFloatComponent(std::uint8_t* p, float v, GLenum type, bool swap) {
 // transfer; otherwise through the float, truncated). `z` is the depth24's float, transferred.
 void putDepth(std::uint8_t* p, std::uint32_t depth24, float z, bool fastPath, GLenum type, bool swap) {
     switch (type) {
-    case GL_UNSIGNED_BYTE: return put(p, static_cast<std::uint8_t>(static_cast<int>(z * 255.0f)), swap);
-    case GL_BYTE: return put(p, static_cast<std::int8_t>((static_cast<int>(z * 255.0f) - 1) / 2), swap);
-    case GL_UNSIGNED_SHORT: return put(p, static_cast<std::uint16_t>(std::lrint(z * 65535.0f)), swap);
-    case GL_SHORT: return put(p, static_cast<std::int16_t>((static_cast<int>(z * 65535.0f) - 1) / 2), swap);
+    case GL_UNSIGNED_BYTE: return writeClientComponent(p, static_cast<std::uint8_t>(static_cast<int>(z * 255.0f)), swap);
+    case GL_BYTE: return writeClientComponent(p, static_cast<std::int8_t>((static_cast<int>(z * 255.0f) - 1) / 2), swap);
+    case GL_UNSIGNED_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(std::lrint(z * 65535.0f)), swap);
+    case GL_SHORT: return writeClientComponent(p, static_cast<std::int16_t>((static_cast<int>(z * 65535.0f) - 1) / 2), swap);
     case GL_UNSIGNED_INT:
-        if (!fastPath) return put(p, static_cast<std::uint32_t>(static_cast<double>(z) * 4294967295.0), swap);
-        return put(p, (depth24 << 8) | (depth24 >> 16), swap);
-    case GL_INT: return put(p, static_cast<std::int32_t>(2147483647.0 * static_cast<double>(z)), swap);
-    case GL_FLOAT: return put(p, z, swap);
+        if (!fastPath) return writeClientComponent(p, static_cast<std::uint32_t>(static_cast<double>(z) * 4294967295.0), swap);
+        return writeClientComponent(p, (depth24 << 8) | (depth24 >> 16), swap);
+    case GL_INT: return writeClientComponent(p, static_cast<std::int32_t>(2147483647.0 * static_cast<double>(z)), swap);
+    case GL_FLOAT: return writeClientComponent(p, z, swap);
     default: return;
     }
 }
@@ -173,10 +165,10 @@ void packStencils(std::span<const std::uint32_t> stencil, int width, int height,
         value += pixel.indexOffset;
         if (pixel.mapStencil) value = static_cast<std::int64_t>(map[static_cast<std::size_t>(value) & (map.size() - 1)]);
         switch (type) {
-        case GL_UNSIGNED_BYTE: case GL_BYTE: return put(p, static_cast<std::uint8_t>(value), swap);
-        case GL_UNSIGNED_SHORT: case GL_SHORT: return put(p, static_cast<std::uint16_t>(value), swap);
-        case GL_FLOAT: return put(p, static_cast<float>(value), swap);
-        default: return put(p, static_cast<std::uint32_t>(value), swap);
+        case GL_UNSIGNED_BYTE: case GL_BYTE: return writeClientComponent(p, static_cast<std::uint8_t>(value), swap);
+        case GL_UNSIGNED_SHORT: case GL_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(value), swap);
+        case GL_FLOAT: return writeClientComponent(p, static_cast<float>(value), swap);
+        default: return writeClientComponent(p, static_cast<std::uint32_t>(value), swap);
         }
     });
 }
