@@ -481,6 +481,70 @@ void addTextureCases(std::vector<Case>& out) {
                    [=](int, int) { draw(GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_MODULATE, false, true); }});
 }
 
+// Pixel rectangles: glDrawPixels and glCopyPixels at several zooms over a depth-tested
+// triangle, in window coordinates; float images beyond [0, 1] under fog (which the reference
+// may fog unclamped: an expected difference).
+void addPixelRectangleCases(std::vector<Case>& out) {
+    struct Zoom {
+        const char* name;
+        float x, y;
+        GLenum format, type;
+        bool copy, fog;
+    };
+    static const Zoom kZooms[] = {{"drawpixels_zoom_1", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, false, false},
+                                  {"drawpixels_zoom_half", 0.5f, 0.5f, GL_RGBA, GL_UNSIGNED_BYTE, false, false},
+                                  {"drawpixels_zoom_mirrored", -1.5f, 2.25f, GL_RGBA, GL_UNSIGNED_SHORT, false, false},
+                                  {"drawpixels_rgba_float_fog", 1.25f, 1.0f, GL_RGBA, GL_FLOAT, false, true},
+                                  {"copypixels_overlapping", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, true, false},
+                                  {"copypixels_zoomed", 0.75f, -1.5f, GL_RGBA, GL_UNSIGNED_BYTE, true, false},
+                                  {"drawpixels_float_fog_no_depth_test", 1.25f, 1.0f, GL_RGB, GL_FLOAT, false, true}};
+    for (const Zoom& z : kZooms) {
+        out.push_back({"pixel-rectangles", z.name, false, [z](int w, int h) {
+                           resetState(w, h);
+                           glMatrixMode(GL_PROJECTION);
+                           glLoadIdentity();
+                           glOrtho(0, w, 0, h, -1, 1);
+                           glMatrixMode(GL_MODELVIEW);
+                           if (!z.fog || z.format == GL_RGBA) glEnable(GL_DEPTH_TEST);
+                           glBegin(GL_TRIANGLES);
+                           glColor3f(0.2f, 0.7f, 0.3f);
+                           glVertex3f(2, 2, 0.8f);
+                           glColor3f(0.9f, 0.2f, 0.5f);
+                           glVertex3f(60, 10, -0.8f);
+                           glColor3f(0.1f, 0.3f, 0.9f);
+                           glVertex3f(20, 46, 0.0f);
+                           glEnd();
+                           constexpr int kImage = 20;
+                           float pixels[kImage * kImage * 4];
+                           GLushort shorts[kImage * kImage * 4];
+                           GLubyte bytes[kImage * kImage * 4];
+                           for (int i = 0; i < kImage * kImage * 4; ++i) {
+                               pixels[i] = static_cast<float>((i * 29) % 97) / 69.0f - 0.2f;
+                               shorts[i] = static_cast<GLushort>((i * 4099) % 65536);
+                               bytes[i] = static_cast<GLubyte>((i * 37) % 256);
+                           }
+                           if (z.fog) {
+                               glEnable(GL_FOG);
+                               glFogi(GL_FOG_MODE, GL_LINEAR);
+                               glFogf(GL_FOG_START, -1.0f);
+                               glFogf(GL_FOG_END, 2.0f);
+                           }
+                           glPixelZoom(z.x, z.y);
+                           glRasterPos3f(z.x < 0 ? 40.0f : 10.0f, 6.0f, 0.1f);
+                           if (z.copy) {
+                               glCopyPixels(4, 3, 30, 24, GL_COLOR);
+                           } else {
+                               const void* data = z.type == GL_FLOAT ? static_cast<const void*>(pixels)
+                                                  : z.type == GL_UNSIGNED_SHORT ? static_cast<const void*>(shorts)
+                                                                                : static_cast<const void*>(bytes);
+                               glDrawPixels(kImage, kImage, z.format, z.type, data);
+                           }
+                           glPixelZoom(1.0f, 1.0f);
+                           glDisable(GL_FOG);
+                       }});
+    }
+}
+
 }  // namespace
 
 std::vector<Case> allCases() {
@@ -494,6 +558,7 @@ std::vector<Case> allCases() {
     addSmoothAndStippleCases(cases);
     addFragmentOpsCases(cases);
     addTextureCases(cases);
+    addPixelRectangleCases(cases);
     return cases;
 }
 

@@ -210,6 +210,38 @@ void drawBenchTexturedCubes(int width, int height, int frame) {
     glDisable(GL_TEXTURE_2D);
 }
 
+// A 256 x 256 RGBA image (rings over a gradient) drawn with glDrawPixels each frame, zoomed
+// to cover the window and a little more every frame (the zoom cycles over 4 frames).
+void drawBenchDrawPixels(int width, int height, int frame) {
+    constexpr int kSize = 256;
+    static const std::vector<GLubyte> image = [] {
+        std::vector<GLubyte> pixels(kSize * kSize * 4);
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                GLubyte* p = &pixels[static_cast<std::size_t>((y * kSize + x) * 4)];
+                const int ring = ((x - 128) * (x - 128) + (y - 128) * (y - 128)) / 256;
+                p[0] = static_cast<GLubyte>(x);
+                p[1] = static_cast<GLubyte>(y);
+                p[2] = static_cast<GLubyte>(ring % 2 ? 255 : 64);
+                p[3] = 255;
+            }
+        }
+        return pixels;
+    }();
+    beginFrame(width, height, false, false);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, width, 0, height, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    const float grow = 1.0f + 0.05f * static_cast<float>(frame % 4);
+    glPixelZoom(static_cast<float>(width) / kSize * grow, static_cast<float>(height) / kSize * grow);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glRasterPos2i(0, 0);
+    glDrawPixels(kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+    glPixelZoom(1.0f, 1.0f);
+}
+
 void drawBenchTiny(int width, int height, int) {
     beginFrame(width, height, true, false);
     std::mt19937 random(1);

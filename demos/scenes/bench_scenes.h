@@ -14,5 +14,6 @@ void drawBenchLitTorus(int width, int height, int frame);  // 16k triangles lit 
 void drawBenchFogTerrain(int width, int height, int frame);  // the mesh's terrain under LINEAR fog
 void drawBenchParticles(int width, int height, int frame);  // 2000 alpha-blended quads and points over a floor
 void drawBenchTexturedCubes(int width, int height, int frame);  // bench-cubes textured: mipmaps, LINEAR_MIPMAP_LINEAR
+void drawBenchDrawPixels(int width, int height, int frame);  // a 256x256 RGBA image, zoomed over the window
 
 }  // namespace scenes

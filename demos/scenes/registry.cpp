@@ -41,6 +41,8 @@ std::span<const Scene> allScenes() {
         {"bench-particles", "benchmark: 2000 alpha-blended quads and points, depth-tested without writes", drawBenchParticles},
         {"bench-textured-cubes", "benchmark: the 1000 cubes textured (64x64 mipmaps, LINEAR_MIPMAP_LINEAR, MODULATE)",
          drawBenchTexturedCubes},
+        {"bench-draw-pixels", "benchmark: a 256x256 RGBA image drawn with glDrawPixels, zoomed over the window",
+         drawBenchDrawPixels},
     };
     return scenes;
 }

@@ -45,6 +45,10 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
                 TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
                 TextureWrap::Repeat, TextureWrap::Repeat),
+    // glDrawPixels' quad without fragment operations (bench-draw-pixels).
+    withTexture(makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false), TextureEnv::Replace, false,
+                TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
+                TextureWrap::ClampToEdge, TextureWrap::ClampToEdge),
 };
 
 // The fragment routines of one vector width: a fast path per key of kFastFragmentKeys, and one

@@ -1,6 +1,5 @@
 // What glPushAttrib and glPushClientAttrib save of each attribute group (GL 1.1's state tables),
-// over the state MyGL has. Groups MyGL has no state of yet (GL_PIXEL_MODE_BIT but its read
-// buffer) save nothing.
+// over the state MyGL has.
 #include <tuple>
 
 #include "attrib_stack.h"
@@ -104,7 +103,7 @@ const AttribGroup kServerGroups[] = {
                          o.blendSrc, o.blendDst, o.logicOp, o.colorMask);
      }>},
     {GL_ACCUM_BUFFER_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.accumClear); }>},
-    {GL_PIXEL_MODE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.readBuffer); }>},
+    {GL_PIXEL_MODE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.readBuffer, s.pixelModes); }>},
     {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities, saveFields<[](auto& s) {
          return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth);
      }>},

@@ -21,6 +21,7 @@
 #include "selection.h"
 #include "stack_matrix.h"
 #include "mygl/context.h"
+#include "pixel_modes.h"
 #include "pixel_store.h"
 #include "texture_state.h"
 
@@ -127,6 +128,8 @@ struct Context::State {
     double clearDepth = 1.0;
     BufferState buffers;
     PixelStoreModes pack, unpack;  // glPixelStore
+    PixelModes pixelModes;  // glPixelTransfer, glPixelZoom
+    PixelMaps pixelMaps;    // glPixelMap
     TextureUnit textures;  // (issue 16)
     DisplayLists lists;
     ClientArrays arrays;

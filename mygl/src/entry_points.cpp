@@ -17,6 +17,7 @@ const std::vector<EntryPoint>& implementedTable() {
         std::vector<EntryPoint> all;
         for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
                           bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
+                          pixelRectangleEntryPoints(), pixelModeEntryPoints(),
                           selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
                           clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
                           polygonOffsetEntryPoints(), stippleEntryPoints(), accumulationEntryPoints(), colorIndexEntryPoints(),

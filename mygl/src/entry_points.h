@@ -27,6 +27,8 @@ std::span<const EntryPoint> bufferEntryPoints();
 std::span<const EntryPoint> listEntryPoints();
 std::span<const EntryPoint> arrayEntryPoints();
 std::span<const EntryPoint> rasterPosEntryPoints();
+std::span<const EntryPoint> pixelRectangleEntryPoints();
+std::span<const EntryPoint> pixelModeEntryPoints();
 std::span<const EntryPoint> lightingEntryPoints();
 std::span<const EntryPoint> selectionEntryPoints();
 std::span<const EntryPoint> attribStackEntryPoints();
@@ -47,7 +49,10 @@ std::span<const EntryPoint> feedbackEntryPoints();
 // those); leaving the mode (the tokens so far, then glRenderMode's answer: the count, or -1 after
 // an overflow).
 void writeFeedbackPrimitives(Context::State& state);
-void writeFeedbackBitmap(Context::State& state);
+// The token of a glBitmap, glDrawPixels or glCopyPixels (GL_BITMAP_TOKEN, GL_DRAW_PIXEL_TOKEN,
+// GL_COPY_PIXEL_TOKEN) and the raster position, after the primitives before it; nothing when
+// the position is invalid.
+void writeFeedbackRasterPosition(Context::State& state, GLenum token);
 GLint endFeedback(Context::State& state);
 
 // glClear's GL_ACCUM_BUFFER_BIT: the accumulation buffer filled with glClearAccum's value.

@@ -90,10 +90,10 @@ void writeFeedbackPrimitives(Context::State& s) {
     }
 }
 
-void writeFeedbackBitmap(Context::State& s) {
+void writeFeedbackRasterPosition(Context::State& s, GLenum rasterToken) {
     writeFeedbackPrimitives(s);
     if (!s.rasterValid) return;
-    s.feedback.write(token(GL_BITMAP_TOKEN));
+    s.feedback.write(token(rasterToken));
     writeVertex(s.feedback, s.rasterPosition, s.rasterColor, s.rasterTexCoord);
 }
 

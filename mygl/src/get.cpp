@@ -10,6 +10,7 @@
 #include "fog_state.h"
 #include "fragment_ops_state.h"
 #include "polygon_offset_state.h"
+#include "pixel_modes.h"
 #include "textures.h"
 #include "gl12_lighting_enums.h"
 
@@ -173,6 +174,9 @@ Value query(const Context::State& s, GLenum name) {
         if (const std::optional<bool> enabled = textureCapability(s, name)) return flag(*enabled);
         if (const std::optional<bool> enabled = texGenCapability(s, name)) return flag(*enabled);
         if (std::optional<std::vector<double>> texture = textureQuery(s, name)) return Value{*texture};
+        if (const std::optional<double> pixel = pixelModeValue(s.pixelModes, s.pixelMaps, name)) {
+            return name == GL_MAP_COLOR || name == GL_MAP_STENCIL ? flag(*pixel != 0.0) : one(*pixel);
+        }
         if (const std::optional<bool> enabled = capabilityEnabled(s, name)) return flag(*enabled);  // the inert ones
         return {};
     }

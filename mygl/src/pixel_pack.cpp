@@ -7,25 +7,17 @@
 namespace mygl {
 namespace {
 
-template <class T>
-void writeComponent(std::uint8_t* p, T value, bool swapBytes) {
-    std::uint8_t bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    if (swapBytes) std::reverse(bytes, bytes + sizeof(T));
-    std::memcpy(p, bytes, sizeof(T));
-}
-
 // c (in [0, 1] for integer types) as a component of `type`, rounded to nearest even.
 void component(std::uint8_t* p, float c, GLenum type, bool swapBytes) {
     const double unit = std::clamp(static_cast<double>(c), 0.0, 1.0);
     switch (type) {
     case GL_UNSIGNED_BYTE: *p = static_cast<std::uint8_t>(std::nearbyint(unit * 255.0)); return;
     case GL_BYTE: *p = static_cast<std::uint8_t>(static_cast<std::int8_t>(std::nearbyint(unit * 127.0))); return;
-    case GL_UNSIGNED_SHORT: return writeComponent(p, static_cast<std::uint16_t>(std::nearbyint(unit * 65535.0)), swapBytes);
-    case GL_SHORT: return writeComponent(p, static_cast<std::int16_t>(std::nearbyint(unit * 32767.0)), swapBytes);
-    case GL_UNSIGNED_INT: return writeComponent(p, static_cast<std::uint32_t>(std::nearbyint(unit * 4294967295.0)), swapBytes);
-    case GL_INT: return writeComponent(p, static_cast<std::int32_t>(std::nearbyint(unit * 2147483647.0)), swapBytes);
-    case GL_FLOAT: return writeComponent(p, c, swapBytes);
+    case GL_UNSIGNED_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(std::nearbyint(unit * 65535.0)), swapBytes);
+    case GL_SHORT: return writeClientComponent(p, static_cast<std::int16_t>(std::nearbyint(unit * 32767.0)), swapBytes);
+    case GL_UNSIGNED_INT: return writeClientComponent(p, static_cast<std::uint32_t>(std::nearbyint(unit * 4294967295.0)), swapBytes);
+    case GL_INT: return writeClientComponent(p, static_cast<std::int32_t>(std::nearbyint(unit * 2147483647.0)), swapBytes);
+    case GL_FLOAT: return writeClientComponent(p, c, swapBytes);
     default: return;
     }
 }

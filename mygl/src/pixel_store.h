@@ -1,6 +1,9 @@
 #pragma once
 // glPixelStore's modes for one direction (unpack: from the program's memory; pack: into it).
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 #include <glad/gl.h>
 
@@ -32,5 +35,15 @@ struct ClientLayout {
     unsigned firstBit;      // for GL_BITMAP: the first pixel's bit in its byte (0 = the first bit)
 };
 ClientLayout clientLayout(int width, GLenum format, GLenum type, const PixelStoreModes& modes);
+
+// One component written into the program's memory at p, its bytes swapped under
+// GL_PACK_SWAP_BYTES.
+template <class T>
+void writeClientComponent(std::uint8_t* p, T value, bool swapBytes) {
+    std::uint8_t bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    if (swapBytes) std::reverse(bytes, bytes + sizeof(T));
+    std::memcpy(p, bytes, sizeof(T));
+}
 
 }  // namespace mygl

@@ -31,6 +31,22 @@ float component(const std::uint8_t* p, GLenum type, bool swapBytes) {
     }
 }
 
+// As component(), with 32-bit integers first narrowed to the 16 bits of the texture the
+// reference's glDrawPixels keeps them in: unsigned rounded ((x * 65535 + 2^31 - 1) / (2^32 - 1)),
+// signed by their top 16 bits; unsigned bytes as its sampler reads them, x * (1 / 255).
+float drawnComponent(const std::uint8_t* p, GLenum type, bool swapBytes) {
+    if (type == GL_UNSIGNED_BYTE) return static_cast<float>(*p) * (1.0f / 255.0f);
+    if (type == GL_UNSIGNED_INT) {
+        const std::uint64_t wide = readComponent<std::uint32_t>(p, swapBytes);
+        return static_cast<float>((wide * 65535u + 0x7FFFFFFFu) / 0xFFFFFFFFu) / 65535.0f;
+    }
+    if (type == GL_INT) {
+        const std::int32_t top = readComponent<std::int32_t>(p, swapBytes) >> 16;
+        return std::max(static_cast<float>(top) / 32767.0f, -1.0f);
+    }
+    return component(p, type, swapBytes);
+}
+
 // One pixel's components (in the client's order) as RGBA.
 glm::vec4 toRgba(const float* c, GLenum format) {
     switch (format) {
@@ -47,10 +63,9 @@ glm::vec4 toRgba(const float* c, GLenum format) {
     }
 }
 
-}  // namespace
-
-std::vector<glm::vec4> unpackImage(const void* pixels, int width, int height, GLenum format, GLenum type,
-                                   const PixelStoreModes& modes) {
+template <float (*Component)(const std::uint8_t*, GLenum, bool)>
+std::vector<glm::vec4> unpackWith(const void* pixels, int width, int height, GLenum format, GLenum type,
+                                  const PixelStoreModes& modes) {
     std::vector<glm::vec4> out(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
     if (!pixels) return out;
     const ClientLayout layout = clientLayout(width, format, type, modes);
@@ -61,11 +76,23 @@ std::vector<glm::vec4> unpackImage(const void* pixels, int width, int height, GL
         const std::uint8_t* p = base + static_cast<std::size_t>(y) * layout.rowStride;
         for (int x = 0; x < width; ++x) {
             float c[4] = {};
-            for (int i = 0; i < components; ++i, p += componentBytes) c[i] = component(p, type, modes.swapBytes);
+            for (int i = 0; i < components; ++i, p += componentBytes) c[i] = Component(p, type, modes.swapBytes);
             out[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = toRgba(c, format);
         }
     }
     return out;
+}
+
+}  // namespace
+
+std::vector<glm::vec4> unpackImage(const void* pixels, int width, int height, GLenum format, GLenum type,
+                                   const PixelStoreModes& modes) {
+    return unpackWith<component>(pixels, width, height, format, type, modes);
+}
+
+std::vector<glm::vec4> unpackDrawnImage(const void* pixels, int width, int height, GLenum format, GLenum type,
+                                        const PixelStoreModes& modes) {
+    return unpackWith<drawnComponent>(pixels, width, height, format, type, modes);
 }
 
 }  // namespace mygl

@@ -16,4 +16,9 @@ namespace mygl {
 std::vector<glm::vec4> unpackImage(const void* pixels, int width, int height, GLenum format, GLenum type,
                                    const PixelStoreModes& modes);
 
+// unpackImage for glDrawPixels: the reference keeps 32-bit integer components in a 16-bit
+// texture before drawing them, so they are narrowed to 16 bits first.
+std::vector<glm::vec4> unpackDrawnImage(const void* pixels, int width, int height, GLenum format, GLenum type,
+                                        const PixelStoreModes& modes);
+
 }  // namespace mygl

@@ -66,7 +66,7 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
-    if (s->renderMode == GL_FEEDBACK) writeFeedbackBitmap(*s);
+    if (s->renderMode == GL_FEEDBACK) writeFeedbackRasterPosition(*s, GL_BITMAP_TOKEN);
     if (!s->rasterValid) return;
     // Beyond 2^29 pixels away nothing can be on screen (and position - origin must fit an int).
     constexpr float kFarAway = 1 << 29;

@@ -175,6 +175,11 @@ std::size_t texSubImage1DBytes(GLenum, GLint, GLint, GLsizei w, GLenum format, G
 std::size_t texSubImage2DBytes(GLenum, GLint, GLint, GLint, GLsizei w, GLsizei h, GLenum format, GLenum type, const void*) {
     return imageBytes(w, h, format, type);
 }
+std::size_t drawPixelsBytes(GLsizei w, GLsizei h, GLenum format, GLenum type, const void*) {
+    return imageBytes(w, h, format, type);
+}
+template <class T>
+std::size_t pixelMapCount(GLenum, GLsizei n, const T*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
 std::size_t namesCount(GLsizei n, const GLuint*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
 std::size_t generatedCount(GLsizei n, GLuint*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
 std::size_t priorityCount(GLsizei n, const GLuint*, const GLclampf*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
@@ -216,7 +221,7 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
 }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, lighting, fog, polygon offset, stipple, the per-fragment operations, textures, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
+// lists, lighting, fog, polygon offset, stipple, the per-fragment operations, textures, pixel rectangles, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
 // replayed: the program's arrays must still hold the frame's data then, as static arrays do).
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
@@ -259,6 +264,9 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glTexGend, 0) X(glad_glTexGenf, 0) X(glad_glTexGeni, 0) X(glad_glTexGendv, textureParameterCount<GLdouble>) \
     X(glad_glTexGenfv, textureParameterCount<GLfloat>) X(glad_glTexGeniv, textureParameterCount<GLint>)       \
     X(glad_glPixelStoref, 0) \
+    X(glad_glDrawPixels, drawPixelsBytes) X(glad_glCopyPixels, 0) X(glad_glPixelZoom, 0) \
+    X(glad_glPixelTransferf, 0) X(glad_glPixelTransferi, 0) X(glad_glPixelMapfv, pixelMapCount<GLfloat>) \
+    X(glad_glPixelMapuiv, pixelMapCount<GLuint>) X(glad_glPixelMapusv, pixelMapCount<GLushort>) \
     X(glad_glRenderMode, 0) X(glad_glSelectBuffer, 0) X(glad_glInitNames, 0) X(glad_glLoadName, 0)          \
     X(glad_glPushName, 0) X(glad_glPopName, 0) X(glad_glClipPlane, 4) \
     X(glad_glMap1f, map1Count<GLfloat>) X(glad_glMap1d, map1Count<GLdouble>) X(glad_glMap2f, map2Count<GLfloat>) \

@@ -74,11 +74,13 @@ const GLenum kStateValues[] = {
     // Miscellaneous
     GL_LIST_BASE, GL_LIST_INDEX, GL_LIST_MODE, GL_ATTRIB_STACK_DEPTH, GL_CLIENT_ATTRIB_STACK_DEPTH,
     GL_NAME_STACK_DEPTH, GL_RENDER_MODE, GL_SELECTION_BUFFER_SIZE, GL_FEEDBACK_BUFFER_SIZE, GL_FEEDBACK_BUFFER_TYPE,
+    // Pixel modes
+    GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT, GL_INDEX_OFFSET, GL_RED_SCALE, GL_RED_BIAS, GL_GREEN_SCALE,
+    GL_GREEN_BIAS, GL_BLUE_SCALE, GL_BLUE_BIAS, GL_ALPHA_SCALE, GL_ALPHA_BIAS, GL_DEPTH_SCALE, GL_DEPTH_BIAS,
+    GL_ZOOM_X, GL_ZOOM_Y, GL_PIXEL_MAP_I_TO_I_SIZE, GL_PIXEL_MAP_S_TO_S_SIZE, GL_PIXEL_MAP_I_TO_R_SIZE,
+    GL_PIXEL_MAP_I_TO_G_SIZE, GL_PIXEL_MAP_I_TO_B_SIZE, GL_PIXEL_MAP_I_TO_A_SIZE, GL_PIXEL_MAP_R_TO_R_SIZE,
+    GL_PIXEL_MAP_G_TO_G_SIZE, GL_PIXEL_MAP_B_TO_B_SIZE, GL_PIXEL_MAP_A_TO_A_SIZE, GL_MAX_PIXEL_MAP_TABLE,
 };
-
-// Left out until their areas land, and then moved up into the list above:
-// - pixel rectangles: GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT/OFFSET, GL_*_SCALE and GL_*_BIAS, GL_ZOOM_X/Y,
-//   GL_PIXEL_MAP_*_SIZE, GL_MAX_PIXEL_MAP_TABLE.
 
 // Moves state off its initial values (each area's own tests go further).
 void changeState() {
@@ -123,6 +125,12 @@ void changeState() {
     glDrawBuffer(GL_BACK);
     glReadBuffer(GL_FRONT_AND_BACK);
     glIndexMask(0x0F);
+    glPixelZoom(-1.5f, 0.5f);
+    glPixelTransferf(GL_GREEN_SCALE, 0.75f);
+    glPixelTransferi(GL_INDEX_SHIFT, 2);
+    glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+    const GLfloat map[4] = {0.25f, 0.5f, 1.0f, 0.0f};
+    glPixelMapfv(GL_PIXEL_MAP_I_TO_B, 4, map);
     glClearColor(0.1f, 0.2f, 0.3f, 0.4f);
     glClearIndex(7.0f);
     glClearDepth(0.75);

@@ -21,7 +21,7 @@ namespace {
 // coverage (a coverage difference shows up as a pixel differing by far more than 1).
 const std::set<std::string> kFlatScenes = {
     "cube", "two-cubes", "two-cubes-nodepth", "concave-hexahedron", "concave-hexahedron-nodepth",
-    "xmutual", "xmutual-nodepth", "polygon5", "modes-flat", "wireframe-cube",
+    "xmutual", "xmutual-nodepth", "polygon5", "modes-flat", "wireframe-cube", "bench-draw-pixels",
 };
 
 struct Case {

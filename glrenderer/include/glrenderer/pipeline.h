@@ -12,6 +12,7 @@
 #include "glrenderer/hit_range.h"
 #include "glrenderer/immediate_buffer.h"
 #include "glrenderer/lighting.h"
+#include "glrenderer/pixel_image.h"
 #include "glrenderer/methods.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
@@ -95,6 +96,8 @@ public:
     // Draws a bitmap's fragments with the depth test and colour conversion of `state`, after
     // everything submitted before it. Bitmaps outside the framebuffer are cut to it.
     void drawBitmap(const DrawState& state, const Bitmap& bitmap);
+    // Draws a glDrawPixels image's fragments likewise (see PixelImage for which pixels).
+    void drawPixels(const DrawState& state, const PixelImage& image);
 
     // Whole colour and depth buffers are cleared tile by tile at the next flush; a clear cut by
     // the scissor or masked, and the stencil buffer, at once.
