@@ -6,7 +6,9 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -351,7 +353,8 @@ TEST(RasterPos, LitColorAsTheReference) {
         glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
         glNormal3f(0.2f, 0.5f, 0.8f);
         glClear(GL_COLOR_BUFFER_BIT);
-        const GLubyte bits[] = {0xff, 0xff, 0xff, 0xff};
+        GLubyte bits[16];  // 8 x 4 bits, rows of 4 bytes under the default unpack alignment
+        std::fill(std::begin(bits), std::end(bits), GLubyte{0xff});
         for (int i = 0; i < 2; ++i) {
             if (i == 1) glEnable(GL_COLOR_MATERIAL), glColor4f(2.0f, -1.0f, 0.5f, 0.3f);
             glRasterPos3f(-0.5f + 0.6f * static_cast<float>(i), 0.2f, 0.3f);
