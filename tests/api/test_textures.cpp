@@ -60,14 +60,7 @@ std::string describe(const TextureCase& c) {
 // A textured quad in perspective (coordinates beyond [0, 1] to show the wrap), smooth colours,
 // with the depth test; a smaller one flat and magnified.
 Frame drawTextured(const TextureCase& c) {
-    glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 30.0);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    testing_support::clearedPerspectiveView(0.0f);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     GLuint name = 0;
     glGenTextures(1, &name);
@@ -231,15 +224,8 @@ TEST(Textures, MipmappedFloorAcrossFilters) {
 // A scene under `setUp` (texture state), textured with a small 8 x 8 texture: a quad, a
 // sphere (normals for SPHERE_MAP) and a lit torus-like strip, in perspective.
 Frame drawWithTexturing(const std::function<void()>& setUp) {
-    glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 30.0);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glTranslatef(0.2f, -0.1f, -4.0f);
+    testing_support::clearedPerspectiveView(4.0f);
+    glTranslatef(0.2f, -0.1f, 0.0f);
     glRotatef(25.0f, 1.0f, 0.4f, 0.0f);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     GLuint name = 0;
