@@ -1,5 +1,5 @@
 #pragma once
-// How far two frames' colours are apart: the tests' comparison with OSMesa.
+// How far two frames are apart: the tests' comparison with OSMesa.
 #include <algorithm>
 #include <cstdlib>
 
@@ -22,6 +22,17 @@ inline ColorDifference difference(const Frame& a, const Frame& b) {
         d.maxChannel = std::max(d.maxChannel, most);
     }
     return d;
+}
+
+// Pixels whose colour or depth differs at all.
+inline int differingPixels(const Frame& a, const Frame& b) {
+    int pixels = 0;
+    for (std::size_t p = 0; p < a.depth.size(); ++p) {
+        bool differs = a.depth[p] != b.depth[p];
+        for (std::size_t c = 0; c < 4; ++c) differs = differs || a.color[4 * p + c] != b.color[4 * p + c];
+        pixels += differs;
+    }
+    return pixels;
 }
 
 }  // namespace testing_support

@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "backends.h"
+#include "color_difference.h"
 
+using testing_support::differingPixels;
 using testing_support::Frame;
 using testing_support::onBothBackends;
 using testing_support::readFrame;
@@ -61,16 +63,6 @@ Frame offsetFrame(Offset offset, GLenum mode, unsigned seed) {
     glColor3f(0.2f, 0.9f, 0.3f);
     draw();
     return readFrame(kWidth, kHeight);
-}
-
-int differingPixels(const Frame& a, const Frame& b) {
-    int pixels = 0;
-    for (std::size_t p = 0; p < a.depth.size(); ++p) {
-        bool differs = a.depth[p] != b.depth[p];
-        for (std::size_t c = 0; c < 4; ++c) differs = differs || a.color[4 * p + c] != b.color[4 * p + c];
-        pixels += differs;
-    }
-    return pixels;
 }
 
 }  // namespace
