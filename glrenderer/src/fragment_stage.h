@@ -86,18 +86,21 @@ public:
             w = L::div(L::floats(1.0f), invW_.at(x, y));
             if (key.shading == Shading::Perspective) r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
         }
-        // The texture environment, first.
+        // The texture environment, then the secondary colour, unclamped (the conversion clamps the sum).
+        Float secondary[3];
+        if (key.colorSum) {
+            secondary[0] = secondaryRed_.at(x, y), secondary[1] = secondaryGreen_.at(x, y), secondary[2] = secondaryBlue_.at(x, y);
+            if (key.shading == Shading::Perspective) {
+                for (Float& s : secondary) s = L::mul(s, w);
+            }
+        }
         if (textured) {
             Float texel[4], c[4] = {r, g, b, a};
             texture_.sample(key, x, y, w, live, texel);
-            applyTextureEnv<L>(key, texel, texture_.envColor(), c);
+            applyTextureEnv<L>(key, texel, texture_.envColor(), key.colorSum ? secondary : nullptr, c);
             r = c[0], g = c[1], b = c[2], a = c[3];
-        }
-        // The secondary colour, added unclamped (the conversion clamps the sum).
-        if (key.colorSum) {
-            Float sr = secondaryRed_.at(x, y), sg = secondaryGreen_.at(x, y), sb = secondaryBlue_.at(x, y);
-            if (key.shading == Shading::Perspective) sr = L::mul(sr, w), sg = L::mul(sg, w), sb = L::mul(sb, w);
-            r = L::add(r, sr), g = L::add(g, sg), b = L::add(b, sb);
+        } else if (key.colorSum) {
+            r = L::add(r, secondary[0]), g = L::add(g, secondary[1]), b = L::add(b, secondary[2]);
         }
         // Fog, after them: alpha keeps its value.
         if (key.fog != FogMode::Off) {

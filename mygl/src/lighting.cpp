@@ -5,7 +5,7 @@
 
 #include "clamp_to_unit.h"
 #include "compiled.h"
-#include "gl12_lighting_enums.h"
+#include <mygl/gl12_enums.h>
 #include "vertex_input.h"
 
 namespace mygl {

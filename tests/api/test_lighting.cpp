@@ -25,8 +25,6 @@ using testing_support::readFrame;
 namespace {
 
 constexpr int kWidth = 96, kHeight = 72;
-constexpr GLenum kRescaleNormal = 0x803A, kLightModelColorControl = 0x81F8, kSeparateSpecular = 0x81FA,
-                  kSingleColor = 0x81F9;
 
 void sphere(int slices = 24, int stacks = 16) {
     GLUquadric* q = gluNewQuadric();
@@ -164,7 +162,7 @@ TEST(Lighting, ColorMaterialNormalizeAndEightLightsMatchTheReference) {
     cases.emplace_back("uniform scale, rescale normal", [] {
         whiteLight(GL_LIGHT0, kPositional);
         material(10);
-        glEnable(kRescaleNormal);
+        glEnable(GL_RESCALE_NORMAL);
         glScalef(0.7f, 0.7f, 0.7f);
     });
     cases.emplace_back("eight lights", [] {
@@ -271,8 +269,8 @@ TEST(Lighting, StateAndErrorsMatchTheReference) {
         glMaterialf(GL_LEFT, GL_SHININESS, 1.0f), error();
         glMaterialf(GL_FRONT, GL_POSITION, 1.0f), error();
         glLightModelf(GL_LIGHT0, 0.0f), error();
-        glLightModeli(kLightModelColorControl, GL_FRONT), error();
-        glLightModeli(kLightModelColorControl, static_cast<GLint>(kSeparateSpecular)), error();
+        glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_FRONT), error();
+        glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR), error();
         glColorMaterial(GL_FRONT, GL_POSITION), error();
         glColorMaterial(GL_LEFT, GL_DIFFUSE), error();
         glBegin(GL_TRIANGLES);
@@ -323,16 +321,16 @@ TEST(Lighting, StateAndErrorsMatchTheReference) {
         glGetLightfv(GL_LIGHT0, GL_SHININESS, f), error();
         glGetMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, f), error();
         glGetMaterialfv(GL_FRONT, GL_POSITION, f), error();
-        for (GLenum name : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT0, GL_LIGHT7, GL_NORMALIZE, kRescaleNormal, GL_COLOR_MATERIAL,
+        for (GLenum name : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT0, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_COLOR_MATERIAL,
                             GL_MAX_LIGHTS, GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE,
-                            kLightModelColorControl, GL_COLOR_MATERIAL_FACE, GL_COLOR_MATERIAL_PARAMETER, GL_SHADE_MODEL}) {
+                            GL_LIGHT_MODEL_COLOR_CONTROL, GL_COLOR_MATERIAL_FACE, GL_COLOR_MATERIAL_PARAMETER, GL_SHADE_MODEL}) {
             GLfloat g[4] = {-9, -9, -9, -9};
             glGetFloatv(name, g);
             floats({g[0], g[1], g[2], g[3]});
             error();
         }
-        glEnable(GL_LIGHTING), glEnable(GL_LIGHT7), glEnable(GL_NORMALIZE), glEnable(kRescaleNormal);
-        for (GLenum cap : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT7, GL_NORMALIZE, kRescaleNormal, GL_COLOR_MATERIAL}) {
+        glEnable(GL_LIGHTING), glEnable(GL_LIGHT7), glEnable(GL_NORMALIZE), glEnable(GL_RESCALE_NORMAL);
+        for (GLenum cap : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_COLOR_MATERIAL}) {
             out.push_back(glIsEnabled(cap));
         }
         error();
@@ -511,7 +509,7 @@ TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
         glLightfv(GL_LIGHT1, GL_SPECULAR, bright);
         material(shininess);
         glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, dimMaterial);
-        glLightModeli(kLightModelColorControl, static_cast<GLint>(kSeparateSpecular));
+        glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
     };
     // A 4x4 texture of strong and weak texels, for the environments.
     const auto checker = [] {
@@ -534,7 +532,7 @@ TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
             {"flat", [=] { separate(20); glShadeModel(GL_FLAT); }},
             {"single colour again", [=] {
                  separate(20);
-                 glLightModeli(kLightModelColorControl, static_cast<GLint>(kSingleColor));
+                 glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
              }},
             {"spot, attenuated", [=] {
                  separate(30);
@@ -547,6 +545,35 @@ TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
                  separate(15);
                  checker();
                  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+             }},
+            {"decal texture", [=] {
+                 separate(15);
+                 checker();
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+             }},
+            {"blend texture", [=] {
+                 separate(15);
+                 checker();
+                 const GLfloat envColor[] = {0.3f, 0.9f, 0.6f, 0.5f};
+                 glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, envColor);
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);
+             }},
+            {"added texture under fog", [=] {
+                 separate(15);
+                 checker();
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+                 glEnable(GL_FOG);
+                 glFogi(GL_FOG_MODE, GL_EXP);
+                 glFogf(GL_FOG_DENSITY, 0.2f);
+             }},
+            {"added texture under fog, single colour", [=] {
+                 separate(15);
+                 glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+                 checker();
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+                 glEnable(GL_FOG);
+                 glFogi(GL_FOG_MODE, GL_EXP);
+                 glFogf(GL_FOG_DENSITY, 0.2f);
              }},
             {"decal texture, flat", [=] {
                  separate(15);
@@ -597,4 +624,33 @@ TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
             gluSphere(q, 1.0, 24, 16);
             gluDeleteQuadric(q);
         });
+}
+
+// A lit raster position under separate specular: the bitmap and the image drawn there are
+// compared whole with the reference's.
+TEST(Lighting, BitmapsAndImagesUnderSeparateSpecularMatchTheReference) {
+    const auto frames = onBothBackends<Frame>(
+        [] {
+            glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glEnable(GL_LIGHTING);
+            whiteLight(GL_LIGHT0, kDirectional);
+            material(8);
+            glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+            static const GLubyte bits[8 * 4] = {0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
+                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
+                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
+                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81};
+            glNormal3f(0.2f, 0.3f, 1.0f);
+            glRasterPos2f(-0.5f, -0.5f);
+            glBitmap(32, 8, 0.0f, 0.0f, 0.0f, 0.0f, bits);
+            static GLubyte image[8 * 8 * 4];
+            for (int i = 0; i < 64 * 4; ++i) image[i] = static_cast<GLubyte>(i * 7);
+            glRasterPos2f(0.2f, 0.2f);
+            glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, image);
+            return readFrame(kWidth, kHeight);
+        },
+        kWidth, kHeight);
+    const ColorDifference d = difference(frames.mygl, frames.osmesa);
+    EXPECT_EQ(d.pixels, 0) << "max channel difference " << d.maxChannel;
 }
