@@ -143,8 +143,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     if (outsideAny == 0) {
         const auto& v = call.vertices;
         setUpSidedTriangle(call, {windowVertices[t.v[0]], windowVertices[t.v[1]], windowVertices[t.v[2]]},
-                           {{&v[t.v[0]].backColor, &v[t.v[1]].backColor, &v[t.v[2]].backColor},
-                            provoking.color, provoking.backColor});
+                           std::array{&v[t.v[0]], &v[t.v[1]], &v[t.v[2]]}, provoking);
         return;
     }
     if (outcodes[t.v[0]] & outcodes[t.v[1]] & outcodes[t.v[2]]) {
@@ -171,26 +170,34 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     for (int i = 2; i < polygon.count; ++i) {
         const WindowVertex current = window(i);
         const auto k = static_cast<std::size_t>(i);
-        setUpSidedTriangle(call, {previous, current, first},
-                           {{&clipped[k - 1].backColor, &clipped[k].backColor, &clipped[0].backColor},
-                            provoking.color, provoking.backColor});
+        setUpSidedTriangle(call, {previous, current, first}, std::array{&clipped[k - 1], &clipped[k], &clipped[0]},
+                           provoking);
         previous = current;
     }
 }
 
 // With two-sided lighting a triangle that setup finds facing back (its fixed-point area, after
 // clipping) takes the back colours: the reference picks them in the fragment shader by
-// gl_FrontFacing, both colours interpolated as usual.
-void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window, const SidedColors& colors) {
+// gl_FrontFacing, both colours interpolated as usual. Under flat shading every vertex takes the
+// provoking vertex's secondary colour (the primary one goes as the flat colour).
+template <class Record>
+void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
+                                    std::array<const Record*, 3> records, const Vertex& provoking) {
     const DrawState& state = call.batch.state;
-    if (state.twoSidedColors) {
-        const std::int64_t area = fixedArea(snap(window[0]), snap(window[1]), snap(window[2]));
-        if (facingOf(area, state.frontFaceCCW) == Facing::Back) {
-            for (std::size_t i = 0; i < 3; ++i) window[i].color = *colors.back[i];
-            return setUpTriangle(call, window[0], window[1], window[2], colors.flatBack);
+    const bool back = state.twoSidedColors && facingOf(fixedArea(snap(window[0]), snap(window[1]), snap(window[2])),
+                                                       state.frontFaceCCW) == Facing::Back;
+    if (back) {
+        for (std::size_t i = 0; i < 3; ++i) window[i].color = records[i]->backColor;
+    }
+    if (state.secondaryColors) {
+        const bool flat = state.shadeModel == ShadeModel::Flat;
+        const glm::vec3& flatSecondary = back ? provoking.backSecondaryColor : provoking.secondaryColor;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const glm::vec3& own = back ? records[i]->backSecondaryColor : records[i]->secondaryColor;
+            window[i].secondaryColor = flat ? flatSecondary : own;
         }
     }
-    setUpTriangle(call, window[0], window[1], window[2], colors.flat);
+    setUpTriangle(call, window[0], window[1], window[2], back ? provoking.backColor : provoking.color);
 }
 
 void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1,

@@ -69,14 +69,11 @@ private:
         FeedbackOutput* feedback = nullptr;  // GL_FEEDBACK
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
-    // Two-sided colours: a triangle's window vertices with their back colours, and its provoking
-    // vertex's front and back colours.
-    struct SidedColors {
-        std::array<const glm::vec4*, 3> back;
-        const glm::vec4& flat;
-        const glm::vec4& flatBack;
-    };
-    void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window, const SidedColors& colors);
+    // A triangle's window vertices with the records they came from (Vertex or ClipVertex), for
+    // their back colours, and its provoking vertex, for its flat colours.
+    template <class Record>
+    void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window, std::array<const Record*, 3> records,
+                            const Vertex& provoking);
     Outcode run(const SubmittedBatch& batch);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);

@@ -21,6 +21,8 @@ ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& 
     v.position = from.position + t * (to.position - from.position);
     v.color = from.color + t * (to.color - from.color);
     v.backColor = from.backColor + t * (to.backColor - from.backColor);
+    v.secondaryColor = from.secondaryColor + t * (to.secondaryColor - from.secondaryColor);
+    v.backSecondaryColor = from.backSecondaryColor + t * (to.backSecondaryColor - from.backSecondaryColor);
     v.fogCoord = from.fogCoord + t * (to.fogCoord - from.fogCoord);
     v.texCoord = from.texCoord + t * (to.texCoord - from.texCoord);
     return v;

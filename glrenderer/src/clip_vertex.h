@@ -10,6 +10,7 @@ struct ClipVertex {
     glm::vec4 position;
     glm::vec4 color;
     glm::vec4 backColor{0.0f};  // only with DrawState::twoSidedColors
+    glm::vec3 secondaryColor{0.0f}, backSecondaryColor{0.0f};  // only with DrawState::secondaryColors
     bool edgeFlag = true;
     glm::vec3 eye{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};

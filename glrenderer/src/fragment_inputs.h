@@ -66,6 +66,7 @@ struct FragmentPath {
 // key reads are set.
 struct FragmentInputs {
     AttributePlane color[4];  // colour, or colour / w under perspective shading
+    AttributePlane secondaryColor[3];  // the same of the secondary colour, with a key that has the colour sum
     AttributePlane invW;      // 1 / w, under perspective shading
     AttributePlane depth;     // window z, with the depth test
     // Fog (issue 16), with a key that has it: the fog coordinate's plane, divided by w as a
@@ -91,8 +92,9 @@ struct FragmentInputs {
     template <class Planes, class... Vertices>
     void setTexture(const Texture* image, const glm::vec4& envColor, const Planes& planes, const Vertices&... v);
 
-    // The colour of a flat primitive: its word, and with fog its constant planes.
-    void setFlatColor(const glm::vec4& color);
+    // The colour of a flat primitive: its word, and with fog, texturing or the colour sum its
+    // constant planes (and the secondary colour's).
+    void setFlatColor(const glm::vec4& color, const glm::vec3& secondary = glm::vec3(0.0f));
 
     void setPath(const FragmentPath& path) {
         key = path.key;

@@ -58,6 +58,10 @@ struct FragmentKey {
     TextureFilter minFilter = TextureFilter::Nearest, magFilter = TextureFilter::Nearest;
     MipmapFilter mipFilter = MipmapFilter::None;
     TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+    // Separate specular colour (GL 1.2), after the texture environment and before fog: the
+    // secondary colour (FragmentInputs::secondaryColor, shaded as the colour is) added to the
+    // colour's red, green and blue.
+    bool colorSum = false;
 
     bool operator==(const FragmentKey&) const = default;
 };
@@ -124,7 +128,8 @@ inline FragmentKey withTexture(FragmentKey key, const TextureState& t) {
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).
 inline FragmentKey fragmentKey(const DrawState& state) {
     const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
-    const FragmentKey key = withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
+    FragmentKey key = withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
+    key.colorSum = state.secondaryColors;
     return withTexture(withFragmentOps(key, state.fragmentOps), state.texture);
 }
 

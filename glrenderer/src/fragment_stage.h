@@ -41,7 +41,8 @@ public:
     // `framebufferHeight` turns internal rows into the window rows the polygon stipple reads.
     FragmentLanes(const FragmentInputs& in, int framebufferHeight)
         : depth_(in.depth), invW_(in.invW), red_(in.color[0]), green_(in.color[1]), blue_(in.color[2]),
-          alpha_(in.color[3]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
+          alpha_(in.color[3]), secondaryRed_(in.secondaryColor[0]), secondaryGreen_(in.secondaryColor[1]),
+          secondaryBlue_(in.secondaryColor[2]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
           depthOffset_(L::floats(in.depthOffset)), alphaRef_(L::ints(in.ops.alphaRef)),
           stencilRef_(L::ints(in.ops.stencilRef)), stencilValueMask_(L::ints(in.ops.stencilValueMask)),
           stencilWriteMask_(L::ints(in.ops.stencilWriteMask)), colorMask_(L::ints(static_cast<int>(in.ops.colorMask))),
@@ -78,23 +79,33 @@ public:
     // The colour words of the lanes `live`, packed R, G, B, A from the low byte.
     [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y, typename L::Mask live) const {
         const bool textured = key.textureEnv != TextureEnv::Off;
-        if (key.shading == Shading::Flat && key.fog == FogMode::Off && !textured) return flat_;
+        if (key.shading == Shading::Flat && key.fog == FogMode::Off && !textured && !key.colorSum) return flat_;
         Float r = red_.at(x, y), g = green_.at(x, y), b = blue_.at(x, y), a = alpha_.at(x, y);
+        Float w{};
         if (key.shading == Shading::Perspective || key.fog != FogMode::Off || textured) {
-            const Float w = L::div(L::floats(1.0f), invW_.at(x, y));
+            w = L::div(L::floats(1.0f), invW_.at(x, y));
             if (key.shading == Shading::Perspective) r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
-            // The texture environment, first.
-            if (textured) {
-                Float texel[4], c[4] = {r, g, b, a};
-                texture_.sample(key, x, y, w, live, texel);
-                applyTextureEnv<L>(key, texel, texture_.envColor(), c);
-                r = c[0], g = c[1], b = c[2], a = c[3];
+        }
+        // The texture environment, then the secondary colour, unclamped (the conversion clamps the sum).
+        Float secondary[3];
+        if (key.colorSum) {
+            secondary[0] = secondaryRed_.at(x, y), secondary[1] = secondaryGreen_.at(x, y), secondary[2] = secondaryBlue_.at(x, y);
+            if (key.shading == Shading::Perspective) {
+                for (Float& s : secondary) s = L::mul(s, w);
             }
-            // Fog, after the texture environment: alpha keeps its value.
-            if (key.fog != FogMode::Off) {
-                const Float f = fog_.factor(key.fog, L::mul(fogCoord_.at(x, y), w));
-                r = fog_.apply(0, f, r), g = fog_.apply(1, f, g), b = fog_.apply(2, f, b);
-            }
+        }
+        if (textured) {
+            Float texel[4], c[4] = {r, g, b, a};
+            texture_.sample(key, x, y, w, live, texel);
+            applyTextureEnv<L>(key, texel, texture_.envColor(), key.colorSum ? secondary : nullptr, c);
+            r = c[0], g = c[1], b = c[2], a = c[3];
+        } else if (key.colorSum) {
+            r = L::add(r, secondary[0]), g = L::add(g, secondary[1]), b = L::add(b, secondary[2]);
+        }
+        // Fog, after them: alpha keeps its value.
+        if (key.fog != FogMode::Off) {
+            const Float f = fog_.factor(key.fog, L::mul(fogCoord_.at(x, y), w));
+            r = fog_.apply(0, f, r), g = fog_.apply(1, f, g), b = fog_.apply(2, f, b);
         }
         return L::bitOr(L::bitOr(fragmentToUnorm8<L>(r), L::template shiftLeft<8>(fragmentToUnorm8<L>(g))),
                         L::bitOr(L::template shiftLeft<16>(fragmentToUnorm8<L>(b)),
@@ -102,7 +113,7 @@ public:
     }
 
 private:
-    PlaneLanes<L> depth_, invW_, red_, green_, blue_, alpha_;
+    PlaneLanes<L> depth_, invW_, red_, green_, blue_, alpha_, secondaryRed_, secondaryGreen_, secondaryBlue_;
     Int flat_;
     PlaneLanes<L> fogCoord_;
     FogLanes<L> fog_;

@@ -217,44 +217,58 @@ private:
 };
 
 // The texture environment: the fragment's colour `c` (RGBA, in float) combined with the texel
-// as Mesa's fixed-function fragment program combines them for the texture's base format.
+// as Mesa's fixed-function fragment program combines them for the texture's base format, and
+// with the colour sum the secondary colour `secondary` (else null) added to red, green and blue.
 template <class L>
 [[gnu::always_inline]] inline void applyTextureEnv(const FragmentKey& key, const typename L::Float texel[4], const typename L::Float envColor[4],
-                     typename L::Float c[4]) {
+                     const typename L::Float* secondary, typename L::Float c[4]) {
     using Float = typename L::Float;
     const TextureBase base = key.textureBase;
     const bool hasColor = base != TextureBase::Alpha;
     const bool hasAlpha = base == TextureBase::Alpha || base == TextureBase::LuminanceAlpha ||
                           base == TextureBase::Intensity || base == TextureBase::Rgba;
     // Mesa's LRP as NIR lowers it for llvmpipe (nir_lower_flrp's strict form, no fused multiply-add):
-    // a * (1 - f) + b * f.
-    auto mix = [](Float a, Float b, Float f) {
-        return L::add(L::mul(a, L::sub(L::floats(1.0f), f)), L::mul(b, f));
+    // a * (1 - f) + b * f. A secondary colour `s` joins the second product first,
+    // a * (1 - f) + (b * f + s), as the reference's compiled program orders the sum (measured).
+    auto mix = [](Float a, Float b, Float f, const Float* s) {
+        const Float second = s ? L::add(L::mul(b, f), *s) : L::mul(b, f);
+        return L::add(L::mul(a, L::sub(L::floats(1.0f), f)), second);
     };
+    const auto sum = [&](int i) { return secondary ? &secondary[i] : nullptr; };
+    bool summed = false;  // the secondary colour is in
     switch (key.textureEnv) {
-    case TextureEnv::Off: return;
+    case TextureEnv::Off: break;
     case TextureEnv::Modulate:
         if (hasColor) for (int i = 0; i < 3; ++i) c[i] = L::mul(c[i], texel[i]);
         if (hasAlpha) c[3] = L::mul(c[3], texel[3]);
-        return;
+        break;
     case TextureEnv::Replace:
         if (hasColor) for (int i = 0; i < 3; ++i) c[i] = texel[i];
         if (hasAlpha) c[3] = texel[3];
-        return;
+        break;
     case TextureEnv::Decal:
         if (base == TextureBase::Rgb) for (int i = 0; i < 3; ++i) c[i] = texel[i];
-        if (base == TextureBase::Rgba) for (int i = 0; i < 3; ++i) c[i] = mix(c[i], texel[i], texel[3]);
-        return;
+        if (base == TextureBase::Rgba) {
+            for (int i = 0; i < 3; ++i) c[i] = mix(c[i], texel[i], texel[3], sum(i));
+            summed = true;
+        }
+        break;
     case TextureEnv::Blend:
-        if (hasColor) for (int i = 0; i < 3; ++i) c[i] = mix(c[i], envColor[i], texel[i]);
-        if (base == TextureBase::Intensity) c[3] = mix(c[3], envColor[3], texel[3]);
+        if (hasColor) {
+            for (int i = 0; i < 3; ++i) c[i] = mix(c[i], envColor[i], texel[i], sum(i));
+            summed = true;
+        }
+        if (base == TextureBase::Intensity) c[3] = mix(c[3], envColor[3], texel[3], nullptr);
         else if (hasAlpha) c[3] = L::mul(c[3], texel[3]);
-        return;
-    case TextureEnv::Add:
-        if (hasColor) for (int i = 0; i < 3; ++i) c[i] = L::add(c[i], texel[i]);
-        if (base == TextureBase::Intensity) c[3] = L::add(c[3], texel[3]);
+        break;
+    case TextureEnv::Add:  // saturated, as Mesa's program saturates its ADD
+        if (hasColor) for (int i = 0; i < 3; ++i) c[i] = clampUnit<L>(L::add(c[i], texel[i]));
+        if (base == TextureBase::Intensity) c[3] = clampUnit<L>(L::add(c[3], texel[3]));
         else if (hasAlpha) c[3] = L::mul(c[3], texel[3]);
-        return;
+        break;
+    }
+    if (secondary && !summed) {
+        for (int i = 0; i < 3; ++i) c[i] = L::add(c[i], secondary[i]);
     }
 }
 

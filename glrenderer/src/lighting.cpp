@@ -49,6 +49,7 @@ VertexLighting::VertexLighting(const LightingState& state, const LightingModelvi
     p.modelAmbient = state.modelAmbient;
     p.normalize = state.normalize;
     p.localViewer = state.localViewer;
+    p.separateSpecular = state.separateSpecular;
     bool anyPositional = false;
     for (const LightSource& l : state.lights) anyPositional = anyPositional || (l.enabled && l.position.w != 0.0f);
     // main/light.c: eye coordinates when a light is positional, the viewer local, or the

@@ -144,27 +144,45 @@ public:
 
     void lightVertices(std::span<Vertex> vertices, bool twoSided) const {
         VertexBlock<L> block;
-        alignas(64) float lit[2][4][L::kCount];
+        alignas(64) float lit[2][4][L::kCount], litSecondary[2][4][L::kCount];
         for (std::size_t first = 0; first < vertices.size(); first += L::kCount) {
             const std::span<Vertex> part = vertices.subspan(first, std::min<std::size_t>(L::kCount, vertices.size() - first));
             block.read(part);
             const Vec4 position = block.positions(), color = block.colors();
             const Vec3 normal = transformedNormal(block.normals());
             for (int face = 0; face < (twoSided ? 2 : 1); ++face) {
-                const Vec4 c = saturate(light(position, face == 0 ? normal : Lanes::negate(normal), color, face));
-                L::storeFloats(lit[face][0], c.x), L::storeFloats(lit[face][1], c.y);
-                L::storeFloats(lit[face][2], c.z), L::storeFloats(lit[face][3], c.w);
+                const LitColors c = light(position, face == 0 ? normal : Lanes::negate(normal), color, face);
+                store(lit[face], saturate(c.primary));
+                if (p_.separateSpecular) store(litSecondary[face], saturate(c.secondary));
             }
             for (std::size_t lane = 0; lane < part.size(); ++lane) {
-                for (int c = 0; c < 4; ++c) part[lane].color[c] = lit[0][c][lane];
+                Vertex& v = part[lane];
+                for (int c = 0; c < 4; ++c) v.color[c] = lit[0][c][lane];
                 if (twoSided) {
-                    for (int c = 0; c < 4; ++c) part[lane].backColor[c] = lit[1][c][lane];
+                    for (int c = 0; c < 4; ++c) v.backColor[c] = lit[1][c][lane];
+                }
+                if (p_.separateSpecular) {
+                    for (int c = 0; c < 3; ++c) v.secondaryColor[c] = litSecondary[0][c][lane];
+                    if (twoSided) {
+                        for (int c = 0; c < 3; ++c) v.backSecondaryColor[c] = litSecondary[1][c][lane];
+                    }
                 }
             }
         }
     }
 
 private:
+    // A face's lit colours, not yet clamped: with separate specular the specular terms are in
+    // `secondary` (which starts at 0), otherwise in `primary`.
+    struct LitColors {
+        Vec4 primary, secondary;
+    };
+
+    static void store(float (&lanes)[4][L::kCount], const Vec4& c) {
+        L::storeFloats(lanes[0], c.x), L::storeFloats(lanes[1], c.y);
+        L::storeFloats(lanes[2], c.z), L::storeFloats(lanes[3], c.w);
+    }
+
     // The reference's vertex stage saturates colours with max(0, c) then min(., 1), where a NaN
     // operand gives way to the second one: NaN stays NaN, then becomes 1 (saturate.h).
     static Vec4 saturate(const Vec4& c) {
@@ -200,13 +218,14 @@ private:
         return f.specular ? color : Lanes::broadcast(m.specular);
     }
 
-    // The lit colour, not yet clamped, of the vertices at `object` with the transformed normal `n`
-    // (reversed for the back face).
-    Vec4 light(const Vec4& object, const Vec3& n, const Vec4& color, int face) const {
+    // The lit colours of the vertices at `object` with the transformed normal `n` (reversed for
+    // the back face).
+    LitColors light(const Vec4& object, const Vec3& n, const Vec4& color, int face) const {
         const Vec4 diffuseMaterial = material(face, kDiffuse, color);
         const Vec4 ambientMaterial = material(face, kAmbient, color);
         // The scene colour: model ambient * material ambient + emission, alpha the diffuse alpha.
-        Vec4 sum = Lanes::sum(Lanes::mul(Lanes::broadcast(p_.modelAmbient), ambientMaterial), material(face, kEmission, color));
+        LitColors lit{Lanes::sum(Lanes::mul(Lanes::broadcast(p_.modelAmbient), ambientMaterial), material(face, kEmission, color)),
+                      Lanes::broadcast(glm::vec4(0.0f))};
         const Float alpha = diffuseMaterial.w;
         if (p_.lightCount > 0) {
             Vec3 eye{}, eyeDirection{};
@@ -217,21 +236,22 @@ private:
             const Vec4 specularMaterial = material(face, kSpecular, color);
             const Float shininess = L::floats(p_.materials[static_cast<std::size_t>(face)].shininess);
             for (int i = 0; i < p_.lightCount; ++i) {
-                sum = addLight(p_.lights[static_cast<std::size_t>(i)], n, eye, eyeDirection, shininess,
-                               {ambientMaterial, diffuseMaterial, specularMaterial}, sum);
+                lit = addLight(p_.lights[static_cast<std::size_t>(i)], n, eye, eyeDirection, shininess,
+                               {ambientMaterial, diffuseMaterial, specularMaterial}, lit);
             }
         }
-        sum.w = alpha;
-        return sum;
+        lit.primary.w = alpha;
+        return lit;
     }
 
     struct Materials {
         Vec4 ambient, diffuse, specular;
     };
 
-    // One light's terms added to `sum`.
-    Vec4 addLight(const PreparedLight& l, const Vec3& n, const Vec3& eye, const Vec3& eyeDirection, Float shininess,
-                  const Materials& material, Vec4 sum) const {
+    // One light's terms added to `lit`.
+    LitColors addLight(const PreparedLight& l, const Vec3& n, const Vec3& eye, const Vec3& eyeDirection, Float shininess,
+                       const Materials& material, LitColors lit) const {
+        Vec4& sum = lit.primary;
         Vec3 toLight = Lanes::broadcast(l.position);
         Float inverseDistance = L::floats(0.0f);
         if (l.positional) {  // SUB, DP3, RSQ, MUL
@@ -286,7 +306,9 @@ private:
             sum = Lanes::sum(ambient, sum);
         }
         sum = Lanes::scaleAdd(diffuseWeight, diffuse, sum);
-        return Lanes::scaleAdd(specularWeight, specular, sum);
+        Vec4& specularSum = p_.separateSpecular ? lit.secondary : sum;
+        specularSum = Lanes::scaleAdd(specularWeight, specular, specularSum);
+        return lit;
     }
 
     const PreparedLighting& p_;

@@ -32,6 +32,7 @@ WindowVertex LineStippler::interpolate(const WindowVertex& a, const WindowVertex
         v.color[c] = lerp(a.color[c], b.color[c], t);
         v.texCoord[c] = lerp(a.texCoord[c], b.texCoord[c], t);
     }
+    for (int c = 0; c < 3; ++c) v.secondaryColor[c] = lerp(a.secondaryColor[c], b.secondaryColor[c], t);
     v.fogCoord = lerp(a.fogCoord, b.fogCoord, t);
     return v;
 }

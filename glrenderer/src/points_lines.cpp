@@ -26,7 +26,11 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
         const auto toWindow = [&](const ClipVertex& v, Outcode outcode) {
             return outcode == 0 ? viewport.apply(v) : viewport.applyToClipped(v);
         };
-        segment(toWindow(a, outcodeA), toWindow(b, outcodeB), end.color, restart);
+        WindowVertex from = toWindow(a, outcodeA), to = toWindow(b, outcodeB);
+        if (state.secondaryColors && state.shadeModel == ShadeModel::Flat) {
+            from.secondaryColor = to.secondaryColor = end.secondaryColor;  // flat: both ends carry it
+        }
+        segment(from, to, end.color, restart);
     };
     const std::size_t n = vertices.size();
     switch (mode) {

@@ -255,10 +255,16 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
     fragment.ops = fragments.ops;
     const FragmentKey& key = fragments.varyingW.key;
     if (key.shading == Shading::Flat) {
-        fragment.setFlatColor(flatColor);
+        fragment.setFlatColor(flatColor, start.secondaryColor);  // both ends carry the flat secondary colour
     } else {
         for (int c = 0; c < 4; ++c) {
             fragment.color[c] = builder.plane(start.color[c] * start.invW, end.color[c] * end.invW);
+        }
+        if (key.colorSum) {
+            for (int c = 0; c < 3; ++c) {
+                fragment.secondaryColor[c] =
+                    builder.plane(start.secondaryColor[c] * start.invW, end.secondaryColor[c] * end.invW);
+            }
         }
         fragment.invW = builder.plane(start.invW, end.invW);
         fragment.setPath(fragments.path(fragment.invW));

@@ -64,11 +64,15 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
     // The color is set up divided by w and multiplied back per fragment, as for any
     // perspective-correct attribute of the reference; flat colors are used as they are.
     glm::vec4 c = point.color;
-    if (state.shadeModel == ShadeModel::Smooth) c = c * point.invW * (1.0f / point.invW);
+    glm::vec3 secondary = point.secondaryColor;
+    if (state.shadeModel == ShadeModel::Smooth) {
+        c = c * point.invW * (1.0f / point.invW);
+        secondary = secondary * point.invW * (1.0f / point.invW);
+    }
     FragmentInputs fragment;
     fragment.setPath(fragments.varyingW);
     fragment.ops = fragments.ops;
-    fragment.setFlatColor(c);
+    fragment.setFlatColor(c, secondary);
     fragment.depth = {point.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
     if (fragment.key.fog != FogMode::Off) {  // the fog coordinate as a perspective attribute, as the colour
         fragment.fog = fragments.fog;

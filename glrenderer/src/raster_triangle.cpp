@@ -69,7 +69,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     in.polygonStipple = fragments.polygonStipple;
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
-        in.setFlatColor(t.flatColor);
+        in.setFlatColor(t.flatColor, t.v[2].secondaryColor);  // every vertex has the flat secondary colour
         if (!key.depthTest && key.fog == FogMode::Off && key.textureEnv == TextureEnv::Off) return true;
     }
     // The reference sets up planes only for triangles counter-clockwise in its y-down view; one
@@ -82,9 +82,20 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     const PlaneBuilder planes(v0, v1, v2);
     if (key.shading == Shading::Linear) {
         for (int i = 0; i < 4; ++i) in.color[i] = planes.plane(v0.color[i], v1.color[i], v2.color[i]);
+        if (key.colorSum) {
+            for (int i = 0; i < 3; ++i) {
+                in.secondaryColor[i] = planes.plane(v0.secondaryColor[i], v1.secondaryColor[i], v2.secondaryColor[i]);
+            }
+        }
     } else if (key.shading == Shading::Perspective) {
         for (int i = 0; i < 4; ++i) {
             in.color[i] = planes.plane(v0.color[i] * v0.invW, v1.color[i] * v1.invW, v2.color[i] * v2.invW);
+        }
+        if (key.colorSum) {
+            for (int i = 0; i < 3; ++i) {
+                in.secondaryColor[i] = planes.plane(v0.secondaryColor[i] * v0.invW, v1.secondaryColor[i] * v1.invW,
+                                                    v2.secondaryColor[i] * v2.invW);
+            }
         }
         in.invW = planes.plane(v0.invW, v1.invW, v2.invW);
         in.setPath(fragments.path(in.invW));

@@ -121,17 +121,24 @@ public:
           pointFragments_(bestFragmentPaths(), flatFragmentKey(state), state) {}
 
     // One triangle out of the clipper (provoking vertex last) with its edge bits and the
-    // provoking vertex's colours (front, back).
+    // provoking vertex (for its flat colours).
     void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c,
-                  std::uint8_t edges, glm::vec4 flatColor, const glm::vec4& flatBackColor) {
+                  std::uint8_t edges, const ClipVertex& provoking) {
         WindowVertex w0 = a.window, w1 = b.window, w2 = c.window;
         const float det = drawModuleDeterminant(w0, w1, w2);
         const bool front = drawModuleFacing(det, state_.frontFaceCCW) == Facing::Front;
         // The draw module's two-sided stage: a triangle facing back by its determinant (not 0)
         // takes the back colours, whatever the mode draws.
-        if (state_.twoSidedColors && !front && det != 0.0f) {
-            w0.color = a.clip.backColor, w1.color = b.clip.backColor, w2.color = c.clip.backColor;
-            flatColor = flatBackColor;
+        const bool back = state_.twoSidedColors && !front && det != 0.0f;
+        if (back) w0.color = a.clip.backColor, w1.color = b.clip.backColor, w2.color = c.clip.backColor;
+        const glm::vec4& flatColor = back ? provoking.backColor : provoking.color;
+        // Secondary colours: under flat shading every vertex carries the provoking vertex's.
+        if (state_.secondaryColors) {
+            const auto secondary = [&](const ClipVertex& v) { return back ? v.backSecondaryColor : v.secondaryColor; };
+            const bool flat = state_.shadeModel == ShadeModel::Flat;
+            w0.secondaryColor = secondary(flat ? provoking : a.clip);
+            w1.secondaryColor = secondary(flat ? provoking : b.clip);
+            w2.secondaryColor = secondary(flat ? provoking : c.clip);
         }
         const bool culled = state_.cullEnabled &&
                             (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front);
@@ -237,8 +244,6 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
                                         std::uint8_t edges) {
         ++stats.triangles;
         const std::uint32_t index[3] = {i0, i1, i2};
-        const glm::vec4& flatColor = vertices[i2].color;
-        const glm::vec4& flatBackColor = vertices[i2].backColor;
         Polygon polygon;
         polygon.count = 3;
         for (std::size_t k = 0; k < 3; ++k) {
@@ -247,7 +252,7 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
         }
         const Outcode outside = outcodes[i0] | outcodes[i1] | outcodes[i2];
         if (outside == 0) {
-            drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, flatColor, flatBackColor);
+            drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, vertices[i2]);
             return;
         }
         if ((outcodes[i0] & outcodes[i1] & outcodes[i2]) || !clipPolygon(polygon, outside, viewport, state.clipPlanes)) {
@@ -264,7 +269,7 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
             if (i == 2 && first.edgeVisible) fanEdges |= kEdge2;
             if (i == 2) fanEdges |= kResetStipple;  // the clipper's first triangle, whatever the original's
             if (i == polygon.count - 1 && b.edgeVisible) fanEdges |= kEdge1;
-            drawer.triangle(a, b, first, fanEdges, flatColor, flatBackColor);
+            drawer.triangle(a, b, first, fanEdges, vertices[i2]);
         }
     });
 }

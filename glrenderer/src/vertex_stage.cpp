@@ -48,6 +48,9 @@ Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& v
         textureCoordinates(batch.vertices, batch.state.texture, batch.transform.modelview, texCoordinates_);
         for (std::size_t i = 0; i < count; ++i) windowVertices_[i].texCoord = texCoordinates_[i];
     }
+    if (batch.state.secondaryColors) {
+        for (std::size_t i = 0; i < count; ++i) windowVertices_[i].secondaryColor = batch.vertices[i].secondaryColor;
+    }
     const UserClipPlanes& user = batch.state.clipPlanes;
     if (user.enabled) {
         for (std::size_t i = 0; i < count; ++i) {
@@ -64,6 +67,8 @@ ClipVertex VertexStage::clipVertex(std::span<const Vertex> vertices, std::size_t
     out.position = clipPositions_[i];
     out.color = in.color;
     out.backColor = in.backColor;
+    out.secondaryColor = in.secondaryColor;
+    out.backSecondaryColor = in.backSecondaryColor;
     out.edgeFlag = in.edgeFlag;
     if (!fogCoordinates_.empty()) out.fogCoord = fogCoordinates_[i];
     if (!texCoordinates_.empty()) out.texCoord = texCoordinates_[i];

@@ -35,6 +35,7 @@ WindowVertex ViewportTransform::applyToClipped(const ClipVertex& vertex) const {
     out.y = p.y * out.invW * scaleY_ + translateY_;
     out.z = p.z * out.invW * scaleZ_ + translateZ_;
     out.color = vertex.color;
+    out.secondaryColor = vertex.secondaryColor;
     out.fogCoord = vertex.fogCoord;
     out.texCoord = vertex.texCoord;
     return out;

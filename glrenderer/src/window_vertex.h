@@ -12,6 +12,9 @@ struct WindowVertex {
     float x = 0, y = 0, z = 0;
     float invW = 1;  // 1 / w_clip, the perspective weight of the attributes
     glm::vec4 color;
+    // Only with DrawState::secondaryColors; under flat shading every vertex of a primitive
+    // carries its provoking vertex's (the flat primary colour goes apart, as a word).
+    glm::vec3 secondaryColor{0.0f};
     float fogCoord = 0;  // only with fog
     glm::vec4 texCoord{0.0f, 0.0f, 0.0f, 1.0f};  // only with texturing
 };
@@ -27,6 +30,7 @@ public:
     WindowVertex apply(const glm::vec4& clipPosition, const glm::vec4& color) const;
     WindowVertex apply(const ClipVertex& vertex) const {
         WindowVertex out = apply(vertex.position, vertex.color);
+        out.secondaryColor = vertex.secondaryColor;
         out.fogCoord = vertex.fogCoord;
         out.texCoord = vertex.texCoord;
         return out;

@@ -42,7 +42,7 @@ void popAttrib(Context::State* s, AttribStack& stack) {
     if (!saved) return setError(*s, GL_STACK_UNDERFLOW);
     const glrenderer::DrawState before = s->draw;
     for (const RestoreGroup& restore : *saved) restore(*s);
-    s->draw.twoSidedColors = s->lightingEnabled && s->lighting.twoSide;
+    updateLitColors(*s);
     s->lightingStale = true;  // the lights may have been restored
     updateClipPlanes(*s);     // so may the clip planes' equations
     // The batch keeps its own copy of the draw state, so it can end after the change.

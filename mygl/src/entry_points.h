@@ -69,6 +69,8 @@ Context::State* stateOutsideBeginEnd();
 // glEnable/glDisable of GL_LIGHTING, GL_LIGHTi, GL_NORMALIZE, GL_RESCALE_NORMAL and
 // GL_COLOR_MATERIAL (false for other capabilities), and their glIsEnabled (nullopt for others).
 bool setLightingCapability(Context::State& state, GLenum cap, bool enabled);
+// The draw state's lit colours (two-sided, separate specular) from the lighting state.
+void updateLitColors(Context::State& state);
 // The same for GL_CLIP_PLANEi; and the clip-space planes again from the current projection.
 bool setClipPlaneCapability(Context::State& state, GLenum cap, bool enabled);
 std::optional<bool> clipPlaneCapability(const Context::State& state, GLenum cap);

@@ -12,7 +12,7 @@
 #include "polygon_offset_state.h"
 #include "pixel_modes.h"
 #include "textures.h"
-#include "gl12_lighting_enums.h"
+#include <mygl/gl12_enums.h>
 
 namespace mygl {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "clamp_to_unit.h"
 #include "compiled.h"
-#include "gl12_lighting_enums.h"
+#include <mygl/gl12_enums.h>
 #include "vertex_input.h"
 
 namespace mygl {
@@ -175,12 +175,14 @@ void lightModel(GLenum name, const GLfloat* p) {
     case GL_LIGHT_MODEL_TWO_SIDE:
         endBatch(*s);
         l.twoSide = p[0] != 0.0f;
-        s->draw.twoSidedColors = s->lightingEnabled && l.twoSide;
+        updateLitColors(*s);
         break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
         if (p[0] == static_cast<GLfloat>(GL_SINGLE_COLOR)) l.separateSpecular = false;
         else if (p[0] == static_cast<GLfloat>(GL_SEPARATE_SPECULAR_COLOR)) l.separateSpecular = true;
         else return setError(*s, GL_INVALID_ENUM);
+        endBatch(*s);
+        updateLitColors(*s);
         break;
     default: return setError(*s, GL_INVALID_ENUM);
     }
@@ -327,7 +329,7 @@ bool setLightingCapability(Context::State& s, GLenum cap, bool enabled) {
     };
     if (cap == GL_LIGHTING) {
         flag(s.lightingEnabled);
-        s.draw.twoSidedColors = enabled && s.lighting.twoSide;
+        updateLitColors(s);
         return true;
     }
     if (cap == GL_NORMALIZE) return flag(s.lighting.normalize);
@@ -367,6 +369,11 @@ const glrenderer::VertexLighting& preparedLighting(Context::State& s) {
 void prepareLighting(Context::State& s) {
     if (!s.lightingEnabled) return s.pipeline.setUnlit();
     if (s.lightingStale) s.pipeline.setLighting(preparedLighting(s));
+}
+
+void updateLitColors(Context::State& s) {
+    s.draw.twoSidedColors = s.lightingEnabled && s.lighting.twoSide;
+    s.draw.secondaryColors = s.lightingEnabled && s.lighting.separateSpecular;
 }
 
 void lightVertex(Context::State& s, glrenderer::Vertex& v) {

@@ -7,7 +7,7 @@
 
 #include <glad/gl.h>
 
-#include "gl12_texture_enums.h"
+#include <mygl/gl12_enums.h>
 
 namespace mygl {
 

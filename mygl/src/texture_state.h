@@ -9,7 +9,7 @@
 
 #include <glad/gl.h>
 
-#include "gl12_texture_enums.h"
+#include <mygl/gl12_enums.h>
 
 #include <glm/vec4.hpp>
 #include <glrenderer/texture.h>

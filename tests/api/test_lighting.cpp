@@ -25,7 +25,6 @@ using testing_support::readFrame;
 namespace {
 
 constexpr int kWidth = 96, kHeight = 72;
-constexpr GLenum kRescaleNormal = 0x803A, kLightModelColorControl = 0x81F8, kSeparateSpecular = 0x81FA;
 
 void sphere(int slices = 24, int stacks = 16) {
     GLUquadric* q = gluNewQuadric();
@@ -163,7 +162,7 @@ TEST(Lighting, ColorMaterialNormalizeAndEightLightsMatchTheReference) {
     cases.emplace_back("uniform scale, rescale normal", [] {
         whiteLight(GL_LIGHT0, kPositional);
         material(10);
-        glEnable(kRescaleNormal);
+        glEnable(GL_RESCALE_NORMAL);
         glScalef(0.7f, 0.7f, 0.7f);
     });
     cases.emplace_back("eight lights", [] {
@@ -270,8 +269,8 @@ TEST(Lighting, StateAndErrorsMatchTheReference) {
         glMaterialf(GL_LEFT, GL_SHININESS, 1.0f), error();
         glMaterialf(GL_FRONT, GL_POSITION, 1.0f), error();
         glLightModelf(GL_LIGHT0, 0.0f), error();
-        glLightModeli(kLightModelColorControl, GL_FRONT), error();
-        glLightModeli(kLightModelColorControl, static_cast<GLint>(kSeparateSpecular)), error();
+        glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_FRONT), error();
+        glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR), error();
         glColorMaterial(GL_FRONT, GL_POSITION), error();
         glColorMaterial(GL_LEFT, GL_DIFFUSE), error();
         glBegin(GL_TRIANGLES);
@@ -322,16 +321,16 @@ TEST(Lighting, StateAndErrorsMatchTheReference) {
         glGetLightfv(GL_LIGHT0, GL_SHININESS, f), error();
         glGetMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, f), error();
         glGetMaterialfv(GL_FRONT, GL_POSITION, f), error();
-        for (GLenum name : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT0, GL_LIGHT7, GL_NORMALIZE, kRescaleNormal, GL_COLOR_MATERIAL,
+        for (GLenum name : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT0, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_COLOR_MATERIAL,
                             GL_MAX_LIGHTS, GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE,
-                            kLightModelColorControl, GL_COLOR_MATERIAL_FACE, GL_COLOR_MATERIAL_PARAMETER, GL_SHADE_MODEL}) {
+                            GL_LIGHT_MODEL_COLOR_CONTROL, GL_COLOR_MATERIAL_FACE, GL_COLOR_MATERIAL_PARAMETER, GL_SHADE_MODEL}) {
             GLfloat g[4] = {-9, -9, -9, -9};
             glGetFloatv(name, g);
             floats({g[0], g[1], g[2], g[3]});
             error();
         }
-        glEnable(GL_LIGHTING), glEnable(GL_LIGHT7), glEnable(GL_NORMALIZE), glEnable(kRescaleNormal);
-        for (GLenum cap : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT7, GL_NORMALIZE, kRescaleNormal, GL_COLOR_MATERIAL}) {
+        glEnable(GL_LIGHTING), glEnable(GL_LIGHT7), glEnable(GL_NORMALIZE), glEnable(GL_RESCALE_NORMAL);
+        for (GLenum cap : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_COLOR_MATERIAL}) {
             out.push_back(glIsEnabled(cap));
         }
         error();
@@ -496,4 +495,162 @@ TEST(Lighting, LitQuadsAreSplitAsTheReferenceSplitsThem) {
              }},
         },
         cube);
+}
+
+// GL_SEPARATE_SPECULAR_COLOR: the specular terms go into a second colour, clamped per vertex
+// and interpolated apart, added to the colour after the texture environment and before fog.
+// A bright material and a bright light make both colours reach 1, so that a sum clamped per
+// vertex and one clamped per fragment differ.
+TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
+    const auto separate = [](float shininess) {
+        const GLfloat bright[] = {0.9f, 0.8f, 0.7f, 1}, dimMaterial[] = {0.5f, 0.2f, 0.3f, 0.6f};
+        whiteLight(GL_LIGHT0, kDirectional);
+        whiteLight(GL_LIGHT1, kPositional);
+        glLightfv(GL_LIGHT1, GL_SPECULAR, bright);
+        material(shininess);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, dimMaterial);
+        glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+    };
+    // A 4x4 texture of strong and weak texels, for the environments.
+    const auto checker = [] {
+        static GLubyte texels[4 * 4 * 4];
+        for (int i = 0; i < 16; ++i) {
+            const GLubyte v = ((i + i / 4) % 2) ? 255 : 60;
+            texels[4 * i] = v, texels[4 * i + 1] = static_cast<GLubyte>(v / 2), texels[4 * i + 2] = 200,
+                       texels[4 * i + 3] = v;
+        }
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glEnable(GL_TEXTURE_2D);
+    };
+    expectSameFrames(
+        {
+            {"shininess 10", [=] { separate(10); }},
+            {"shininess 60", [=] { separate(60); }},
+            {"shininess 0", [=] { separate(0); }},
+            {"flat", [=] { separate(20); glShadeModel(GL_FLAT); }},
+            {"single colour again", [=] {
+                 separate(20);
+                 glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+             }},
+            {"spot, attenuated", [=] {
+                 separate(30);
+                 glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 35.0f);
+                 glLightf(GL_LIGHT1, GL_SPOT_EXPONENT, 2.0f);
+                 glLightf(GL_LIGHT1, GL_QUADRATIC_ATTENUATION, 0.1f);
+             }},
+            {"modulated texture", [=] { separate(15); checker(); }},
+            {"replaced texture", [=] {
+                 separate(15);
+                 checker();
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+             }},
+            {"decal texture", [=] {
+                 separate(15);
+                 checker();
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+             }},
+            {"blend texture", [=] {
+                 separate(15);
+                 checker();
+                 const GLfloat envColor[] = {0.3f, 0.9f, 0.6f, 0.5f};
+                 glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, envColor);
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);
+             }},
+            {"added texture under fog", [=] {
+                 separate(15);
+                 checker();
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+                 glEnable(GL_FOG);
+                 glFogi(GL_FOG_MODE, GL_EXP);
+                 glFogf(GL_FOG_DENSITY, 0.2f);
+             }},
+            {"added texture under fog, single colour", [=] {
+                 separate(15);
+                 glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+                 checker();
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+                 glEnable(GL_FOG);
+                 glFogi(GL_FOG_MODE, GL_EXP);
+                 glFogf(GL_FOG_DENSITY, 0.2f);
+             }},
+            {"decal texture, flat", [=] {
+                 separate(15);
+                 checker();
+                 glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+                 glShadeModel(GL_FLAT);
+             }},
+            {"fog", [=] {
+                 separate(15);
+                 const GLfloat fogColor[] = {0.2f, 0.6f, 0.3f, 1};
+                 glEnable(GL_FOG);
+                 glFogi(GL_FOG_MODE, GL_LINEAR);
+                 glFogf(GL_FOG_START, 3.0f);
+                 glFogf(GL_FOG_END, 5.5f);
+                 glFogfv(GL_FOG_COLOR, fogColor);
+             }},
+            {"blended", [=] {
+                 separate(15);
+                 glEnable(GL_BLEND);
+                 glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+             }},
+            {"two-sided, clipped by the near plane", [=] {
+                 separate(25);
+                 const GLfloat backSpecular[] = {0.2f, 0.9f, 0.5f, 1};
+                 glMaterialfv(GL_BACK, GL_SPECULAR, backSpecular);
+                 glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+                 glTranslatef(0.0f, 0.0f, 2.7f);
+             }},
+            {"lines", [=] { separate(20); glPolygonMode(GL_FRONT_AND_BACK, GL_LINE); }},
+            {"points", [=] { separate(20); glPolygonMode(GL_FRONT_AND_BACK, GL_POINT); glPointSize(3.0f); }},
+            {"lines, flat", [=] {
+                 separate(20);
+                 glShadeModel(GL_FLAT);
+                 glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+             }},
+            {"material inside glBegin", [=] {
+                 separate(20);
+                 glBegin(GL_TRIANGLES);
+                 glMaterialf(GL_FRONT, GL_SHININESS, 5.0f);
+                 glNormal3f(0.0f, 0.0f, 1.0f);
+                 glVertex3f(-1.5f, -1.2f, 1.2f), glVertex3f(1.5f, -1.2f, 1.2f), glVertex3f(0.0f, 1.4f, 1.2f);
+                 glEnd();
+             }},
+        },
+        [] {
+            GLUquadric* q = gluNewQuadric();
+            gluQuadricTexture(q, GL_TRUE);
+            gluSphere(q, 1.0, 24, 16);
+            gluDeleteQuadric(q);
+        });
+}
+
+// A lit raster position under separate specular: the bitmap and the image drawn there are
+// compared whole with the reference's.
+TEST(Lighting, BitmapsAndImagesUnderSeparateSpecularMatchTheReference) {
+    const auto frames = onBothBackends<Frame>(
+        [] {
+            glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            glEnable(GL_LIGHTING);
+            whiteLight(GL_LIGHT0, kDirectional);
+            material(8);
+            glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+            static const GLubyte bits[8 * 4] = {0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
+                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
+                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
+                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81};
+            glNormal3f(0.2f, 0.3f, 1.0f);
+            glRasterPos2f(-0.5f, -0.5f);
+            glBitmap(32, 8, 0.0f, 0.0f, 0.0f, 0.0f, bits);
+            static GLubyte image[8 * 8 * 4];
+            for (int i = 0; i < 64 * 4; ++i) image[i] = static_cast<GLubyte>(i * 7);
+            glRasterPos2f(0.2f, 0.2f);
+            glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, image);
+            return readFrame(kWidth, kHeight);
+        },
+        kWidth, kHeight);
+    const ColorDifference d = difference(frames.mygl, frames.osmesa);
+    EXPECT_EQ(d.pixels, 0) << "max channel difference " << d.maxChannel;
 }

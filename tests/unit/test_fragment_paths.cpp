@@ -58,6 +58,7 @@ std::string describe(const FragmentKey& key) {
     }
     if (key.logicOp != LogicOp::Copy) text += " logic op " + std::to_string(static_cast<int>(key.logicOp));
     if (key.colorMask) text += " colour mask";
+    if (key.colorSum) text += " colour sum";
     return text;
 }
 
@@ -109,6 +110,7 @@ FragmentKey randomKey(std::mt19937& random) {
     key.fog = static_cast<FogMode>(fog(random));
     key.depthOffset = key.depthTest && coin(random);
     key = withFragmentOps(key, randomFragmentOps(random));
+    key.colorSum = coin(random) && coin(random);
     if (coin(random)) {
         std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2);
         key = withTexture(key, static_cast<TextureEnv>(env(random)), coin(random), static_cast<TextureBase>(base(random)),
@@ -240,6 +242,7 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
         for (int i = 0; i < 300; ++i) {
             FragmentInputs inputs;
             for (AttributePlane& c : inputs.color) c = randomPlane(random, -0.1f, 1.1f);
+            for (AttributePlane& c : inputs.secondaryColor) c = randomPlane(random, -0.1f, 1.1f);
             inputs.invW = randomPlane(random, 0.25f, 4.0f);
             inputs.depth = randomPlane(random, -0.1f, 1.1f);
             inputs.flatColor = word(random);

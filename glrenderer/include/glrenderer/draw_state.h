@@ -62,6 +62,9 @@ struct DrawState {
     bool feedback = false;   // GL_FEEDBACK: primitives are handed back (Pipeline::takeFeedback)
     // Two-sided lighting: filled triangles facing back take their vertices' back colours.
     bool twoSidedColors = false;
+    // Separate specular colour (GL 1.2): lit vertices carry their specular terms as a secondary
+    // colour, interpolated apart and added to the fragment's after the texture environment.
+    bool secondaryColors = false;
     UserClipPlanes clipPlanes;
     // Fog (issue 16): its mode (Off when disabled) and constants.
     FogState fog;

@@ -83,6 +83,7 @@ struct PreparedLighting {
     float normalScale = 1.0f;
     bool eyeSpace = false, normalize = false, rescale = false, localViewer = false;
     bool shininessIsZero = true;  // for both faces: no specular term in the program
+    bool separateSpecular = false;  // the specular terms go to the secondary colours
 };
 
 // Lights vertices in the reference's arithmetic (docs/reference-rules.md, "Lighting"), several
@@ -94,7 +95,8 @@ public:
 
     // Vertices lit in place: each one's colour (the current colour as given, unclamped) becomes
     // the lit colour and, with `twoSided`, its back colour the back face's (the back material,
-    // the normal reversed), both clamped as the reference clamps vertex colours.
+    // the normal reversed), both clamped as the reference clamps vertex colours; with separate
+    // specular, the specular terms go to the secondary colours instead, clamped likewise.
     void lightVertices(std::span<Vertex> vertices, bool twoSided) const;
     // One vertex, in one lane: the same bits without a block's work.
     void lightVertex(Vertex& vertex, bool twoSided) const;

@@ -14,6 +14,8 @@ struct Vertex {
     glm::vec4 position;
     glm::vec4 color;
     glm::vec4 backColor{0.0f};  // lit for the back face: only with DrawState::twoSidedColors
+    // The specular terms, front and back, with DrawState::secondaryColors (no alpha).
+    glm::vec3 secondaryColor{0.0f}, backSecondaryColor{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     glm::vec4 texCoord{0.0f, 0.0f, 0.0f, 1.0f};
     bool edgeFlag = true;

@@ -6,6 +6,7 @@
 #define MYGL_GLU_H
 
 #include <glad/gl.h>
+#include <mygl/gl12_enums.h>
 
 #ifdef __cplusplus
 extern "C" {
