@@ -475,7 +475,8 @@ void addTextureCases(std::vector<Case>& out) {
             }
         }
     }
-    out.push_back({"textures", "texture_constant_color", false,
+    // A constant colour under texturing is exact (the reference takes it as a uniform).
+    out.push_back({"textures", "texture_constant_color", true,
                    [=](int, int) { draw(GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, true, false); }});
     out.push_back({"textures", "texture_clipped_quad", false,
                    [=](int, int) { draw(GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_MODULATE, false, true); }});
