@@ -475,7 +475,14 @@ void addTextureCases(std::vector<Case>& out) {
             }
         }
     }
-    out.push_back({"textures", "texture_constant_color", false,
+    out.push_back({"textures", "texture_linear_clamp_border_color", false, [=](int, int) {
+                       const GLfloat border[] = {0.9f, 0.4f, 0.1f, 0.7f}, none[] = {0.0f, 0.0f, 0.0f, 0.0f};
+                       glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+                       draw(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP, GL_DECAL, false, false);
+                       glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, none);  // for the next cases
+                   }});
+    // A constant colour under texturing is exact (the reference takes it as a uniform).
+    out.push_back({"textures", "texture_constant_color", true,
                    [=](int, int) { draw(GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, true, false); }});
     out.push_back({"textures", "texture_clipped_quad", false,
                    [=](int, int) { draw(GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_MODULATE, false, true); }});

@@ -23,6 +23,9 @@ struct BatchHeader {
     PrimitiveMode mode = PrimitiveMode::Points;
     QuadSplit quadSplit = QuadSplit::ByPath;
     bool colorsPerVertex = false;  // glColor was called inside its glBegin/glEnd blocks
+    // The reference's vertex format holds a colour (glColor inside a glBegin/glEnd since the
+    // last flush): its fragment shader then interpolates the colour, even one set outside.
+    bool colorInFormat = false;
     // Its vertices carry edge flags in the reference's vertex format (glEdgeFlag since the last
     // flush). Without them, the current edge flag, false, hides every edge: the reference then
     // culls the faces drawn as lines or points, whole (Mesa's _PolygonModeAlwaysCulls).
@@ -73,10 +76,13 @@ struct BatchChunk {
 
     // The entry's batch as the reference draws it. Without a color per vertex the color is a
     // constant of the draw, not an interpolation of equal values (which perspective would blur
-    // by one unit here and there): flat.
+    // by one unit here and there): flat. Under texturing only when the reference's vertex
+    // format has no colour either (Mesa's vertex program then reads the current colour as a
+    // uniform, which the fragment shader takes exactly).
     SubmittedBatch batch(const BatchEntry& entry) const {
         SubmittedBatch batch{entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
-        if (!batch.colorsPerVertex && batch.state.texture.env == TextureEnv::Off) batch.state.shadeModel = ShadeModel::Flat;
+        const bool textured = batch.state.texture.env != TextureEnv::Off;
+        if (!batch.colorsPerVertex && !(textured && batch.colorInFormat)) batch.state.shadeModel = ShadeModel::Flat;
         return batch;
     }
     void clear() {

@@ -81,7 +81,7 @@ struct FragmentInputs {
     // set too) and the draw's texture.
     AttributePlane texCoord[3];
     const Texture* texture = nullptr;
-    glm::vec4 textureEnvColor{0.0f};
+    glm::vec4 textureEnvColor{0.0f}, textureBorderColor{0.0f};
     // The path's key and routine, as two fields so that the flat colour packs between them.
     FragmentKey key;
     std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
@@ -90,7 +90,8 @@ struct FragmentInputs {
     // The texture planes of s, t and q through `planes` (a PlaneBuilder or a line's), each
     // coordinate divided by w as a perspective colour is, with the plane of 1 / w.
     template <class Planes, class... Vertices>
-    void setTexture(const Texture* image, const glm::vec4& envColor, const Planes& planes, const Vertices&... v);
+    void setTexture(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor, const Planes& planes,
+                    const Vertices&... v);
 
     // The colour of a flat primitive: its word, and with fog, texturing or the colour sum its
     // constant planes (and the secondary colour's).
@@ -111,10 +112,11 @@ struct FragmentInputs {
 namespace glrenderer {
 
 template <class Planes, class... Vertices>
-void FragmentInputs::setTexture(const Texture* image, const glm::vec4& envColor, const Planes& planes,
-                                const Vertices&... v) {
+void FragmentInputs::setTexture(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor,
+                                const Planes& planes, const Vertices&... v) {
     texture = image;
     textureEnvColor = envColor;
+    textureBorderColor = borderColor;
     invW = planes.plane(v.invW...);
     texCoord[0] = planes.plane((v.texCoord.s * v.invW)...);
     texCoord[1] = planes.plane((v.texCoord.t * v.invW)...);

@@ -20,6 +20,7 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, cons
     polygonStipple = state.polygonStipple.pattern;
     texture = state.texture.texture.get();
     textureEnvColor = state.texture.envColor;
+    textureBorderColor = state.texture.borderColor;
 }
 
 FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {

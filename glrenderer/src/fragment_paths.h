@@ -110,9 +110,9 @@ struct FragmentChoice {
     const PolygonStipplePattern* polygonStipple = nullptr;  // the draw's, for filled triangles
     ScissorBox scissor;           // the draw's, for the bounds of lines (drawableRect)
     // The draw's texture (kept alive by the batch drawer until its triangles are drawn) and
-    // environment colour, when the key has texturing.
+    // environment and border colours, when the key has texturing.
     const Texture* texture = nullptr;
-    glm::vec4 textureEnvColor{0.0f};
+    glm::vec4 textureEnvColor{0.0f}, textureBorderColor{0.0f};
 };
 
 }  // namespace glrenderer

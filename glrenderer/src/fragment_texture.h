@@ -1,29 +1,19 @@
 #pragma once
 // Texturing in the fragment stage, over a lane type L (fragment_stage.h), in the reference's
 // arithmetic: llvmpipe's 8-bit (AoS) sampler for RGBA8-like textures with REPEAT or
-// CLAMP_TO_EDGE wraps (lp_bld_sample_aos.c), its level of detail per 2 x 2 quad
-// (lp_bld_sample.c), then Mesa's fixed-function texture environment in float.
+// CLAMP_TO_EDGE wraps (lp_bld_sample_aos.c), its float (SoA) sampler for a GL_CLAMP wrap
+// (fragment_texture_float.h), its level of detail per 2 x 2 quad (lp_bld_sample.c), then Mesa's
+// fixed-function texture environment in float.
 // docs/reference-rules.md, Textures, has the measurements.
 #include <cstdint>
 
 #include "fragment_inputs.h"
+#include "fragment_texture_float.h"
 #include "glrenderer/texture.h"
+#include "texel_lanes.h"
 #include "triangle_setup.h"
 
 namespace glrenderer {
-
-// A texture channel as a float channel: the byte times 1/255 in float.
-template <class L>
-typename L::Float unormToFloat(typename L::Int byte) {
-    return L::mul(L::toFloat(byte), L::floats(1.0f / 255.0f));
-}
-
-// Byte `Shift / 8` of each word.
-template <class L, int Shift>
-typename L::Int channel(typename L::Int word) {
-    if constexpr (Shift == 24) return L::template shiftRightUnsigned<24>(word);
-    else return L::bitAnd(L::template shiftRightUnsigned<Shift>(word), L::ints(0xFF));
-}
 
 // The four bytes of words a and b lerped with weights w (0-255, 256 being one), as gallivm's
 // lerp of unorm8 values: a + ((w * (b - a) + 128) >> 8), the rounding of SSSE3's pmulhrsw.
@@ -52,7 +42,8 @@ public:
     explicit TextureLanes(const FragmentInputs& in)
         : s_(in.texCoord[0]), t_(in.texCoord[1]), q_(in.texCoord[2]), invW_(in.invW), texture_(in.texture),
           envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]), L::floats(in.textureEnvColor[2]),
-                    L::floats(in.textureEnvColor[3])} {}
+                    L::floats(in.textureEnvColor[3])},
+          floatSampler_(in.texture, in.textureBorderColor) {}
 
     // The texel colour of the fragments at (x, y) (w their interpolated w), each channel in
     // [0, 1], read for the lanes of `live`.
@@ -60,12 +51,25 @@ public:
                                               Float texel[4]) const {
         Float s, t;
         coordinates(x, y, w, s, t);
-        const Level zero = level(0);
+        if (samplesInFloat(key)) {
+            // The level of detail of the lane's quad and of the other quad of its 4 x 2 block
+            // (the reference's 8 lanes), when the filters differ.
+            Float lod = L::floats(0.0f), otherLod = lod;
+            if (key.mipFilter != MipmapFilter::None || key.minFilter != key.magFilter) {
+                const Int qx = L::bitAnd(L::roundToInt(x), L::ints(~1)), qy = L::bitAnd(L::roundToInt(y), L::ints(~1));
+                lod = quadLod(key, L::toFloat(qx), L::toFloat(qy));
+                if (key.minFilter != key.magFilter) otherLod = quadLod(key, L::toFloat(L::bitXor(qx, L::ints(2))), L::toFloat(qy));
+            }
+            floatSampler_.sample(key, s, t, lod, otherLod, live, texel);
+            return;
+        }
+        const Level zero = Level::of(*texture_, 0);
         Int word;
         if (key.mipFilter == MipmapFilter::None && key.minFilter == key.magFilter) {
             word = sampleLevel(key, key.minFilter, s, t, zero, live);
         } else {
-            const Float lod = quadLod(key, x, y);
+            const Float lod = quadLod(key, L::toFloat(L::bitAnd(L::roundToInt(x), L::ints(~1))),
+                                      L::toFloat(L::bitAnd(L::roundToInt(y), L::ints(~1))));
             word = minified(key, s, t, lod, live);
             if (key.minFilter != key.magFilter) {
                 // Magnified where lod <= 0: the magnification filter on level 0.
@@ -73,28 +77,13 @@ public:
                 word = L::select(minifiedLanes, word, sampleLevel(key, key.magFilter, s, t, zero, live));
             }
         }
-        texel[0] = unormToFloat<L>(channel<L, 0>(word));
-        texel[1] = unormToFloat<L>(channel<L, 8>(word));
-        texel[2] = unormToFloat<L>(channel<L, 16>(word));
-        texel[3] = unormToFloat<L>(channel<L, 24>(word));
+        wordToFloats<L>(word, texel);
     }
 
     const Float* envColor() const { return envColor_; }
 
 private:
-    // One level's size and place for each lane.
-    struct Level {
-        Int width, height, offset;
-    };
-    Level level(int index) const {
-        const auto i = static_cast<std::size_t>(index);
-        return {L::ints(static_cast<int>(texture_->width[i])), L::ints(static_cast<int>(texture_->height[i])),
-                L::ints(static_cast<int>(texture_->offset[i]))};
-    }
-    Level level(Int index, Mask live) const {
-        return {L::gather(texture_->width.data(), index, live), L::gather(texture_->height.data(), index, live),
-                L::gather(texture_->offset.data(), index, live)};
-    }
+    using Level = LevelLanes<L>;
 
     static Float planeAt(const AttributePlane& p, Float x, Float y) {
         return L::fma(L::floats(p.dady), y, L::fma(L::floats(p.dadx), x, L::floats(p.a0)));
@@ -109,14 +98,12 @@ private:
         coordinates(x, y, L::div(L::floats(1.0f), planeAt(invW_, x, y)), s, t);
     }
 
-    // The level of detail of each lane's 2 x 2 quad (aligned on even internal x and y): the
+    // The level of detail of the 2 x 2 quads at (qx, qy) (even internal x and y): the
     // coordinates' differences from its top-left pixel to the next in x and in y, scaled by
     // level 0's size, rho the larger of the two squared lengths, lod = log2(rho) / 2
     // (lp_build_rho without its approximations, lp_build_fast_log2). A 1D texture takes s alone,
     // squared too (measured: the unsquared form of newer Mesa differs by up to 16).
-    [[gnu::always_inline]] inline Float quadLod(const FragmentKey& key, Float x, Float y) const {
-        const Float qx = L::toFloat(L::bitAnd(L::roundToInt(x), L::ints(~1)));
-        const Float qy = L::toFloat(L::bitAnd(L::roundToInt(y), L::ints(~1)));
+    [[gnu::always_inline]] inline Float quadLod(const FragmentKey& key, Float qx, Float qy) const {
         Float s00, t00, s10, t10, s01, t01;
         coordinates(qx, qy, s00, t00);
         coordinates(L::add(qx, L::floats(1.0f)), qy, s10, t10);
@@ -134,10 +121,10 @@ private:
     // The minification filter with the mipmap filter at `lod`.
     [[gnu::always_inline]] inline Int minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
         const Int last = L::ints(texture_->levelCount - 1);
-        if (key.mipFilter == MipmapFilter::None) return sampleLevel(key, key.minFilter, s, t, level(0), live);
+        if (key.mipFilter == MipmapFilter::None) return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, 0), live);
         if (key.mipFilter == MipmapFilter::Nearest) {
             const Int index = L::minInt(L::maxInt(L::roundToInt(lod), L::ints(0)), last);
-            return sampleLevel(key, key.minFilter, s, t, level(index, live), live);
+            return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index, live), live);
         }
         // Linear: floor and fraction of lod; the fraction in 8 bits, truncated, weighs the two levels.
         const Float floor = L::floor(lod);
@@ -145,39 +132,23 @@ private:
         const Int index0 = L::minInt(L::maxInt(first, L::ints(0)), last);
         const Int index1 = L::minInt(L::maxInt(L::add(first, L::ints(1)), L::ints(0)), last);
         const Int weight = L::maxInt(L::truncateToInt(L::mul(L::sub(lod, floor), L::floats(256.0f))), L::ints(0));
-        const Int word0 = sampleLevel(key, key.minFilter, s, t, level(index0, live), live);
-        const Int word1 = sampleLevel(key, key.minFilter, s, t, level(index1, live), live);
+        const Int word0 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index0, live), live);
+        const Int word1 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index1, live), live);
         return lerpWords<L>(weight, word0, word1);
     }
 
     [[gnu::always_inline]] inline Int sampleLevel(const FragmentKey& key, TextureFilter filter, Float s, Float t, const Level& l, Mask live) const {
         if (filter == TextureFilter::Nearest) {
-            const Int i = nearest(key.wrapS, s, l.width, texture_->powerOfTwoWidth);
-            const Int j = nearest(key.wrapT, t, l.height, texture_->powerOfTwoHeight);
-            return fetch(l, i, j, live);
+            const Int i = nearestIndex<L>(key.wrapS, s, l.width, texture_->powerOfTwoWidth);
+            const Int j = nearestIndex<L>(key.wrapT, t, l.height, texture_->powerOfTwoHeight);
+            return l.fetch(*texture_, i, j, live);
         }
         Int i0, i1, j0, j1, wi, wj;
         linear(key.wrapS, s, l.width, texture_->powerOfTwoWidth, i0, i1, wi);
         linear(key.wrapT, t, l.height, texture_->powerOfTwoHeight, j0, j1, wj);
-        const Int top = lerpWords<L>(wi, fetch(l, i0, j0, live), fetch(l, i1, j0, live));
-        const Int bottom = lerpWords<L>(wi, fetch(l, i0, j1, live), fetch(l, i1, j1, live));
+        const Int top = lerpWords<L>(wi, l.fetch(*texture_, i0, j0, live), l.fetch(*texture_, i1, j0, live));
+        const Int bottom = lerpWords<L>(wi, l.fetch(*texture_, i0, j1, live), l.fetch(*texture_, i1, j1, live));
         return lerpWords<L>(wj, top, bottom);
-    }
-
-    // The texel index of coordinate c under NEAREST: floor(c * size), wrapped. REPEAT masks
-    // the index when level 0's side is a power of two (`pot`, the reference's static
-    // pot_width and pot_height).
-    static Int nearest(TextureWrap wrap, Float c, Int size, bool pot) {
-        const Float sizeF = L::toFloat(size);
-        const Int last = L::sub(size, L::ints(1));
-        if (wrap == TextureWrap::Repeat && !pot) {
-            // fract, kept below one, times the size, truncated.
-            const Float f = L::min(L::sub(c, L::floor(c)), L::floats(0x1.fffffep-1f));
-            return L::truncateToInt(L::mul(f, sizeF));
-        }
-        const Int i = L::roundToInt(L::floor(L::mul(c, sizeF)));
-        if (wrap == TextureWrap::Repeat) return L::bitAnd(i, last);
-        return L::minInt(L::maxInt(i, L::ints(0)), last);
     }
 
     // The two texel indices and the weight (0-255) of coordinate c under LINEAR, in 8.8 fixed
@@ -207,13 +178,10 @@ private:
         }
     }
 
-    Int fetch(const Level& l, Int i, Int j, Mask live) const {
-        return L::gather(texture_->texels.data(), L::add(l.offset, L::add(L::mul(j, l.width), i)), live);
-    }
-
     AttributePlane s_, t_, q_, invW_;
     const Texture* texture_;
     Float envColor_[4];
+    FloatTextureSampler<L> floatSampler_;
 };
 
 // The texture environment: the fragment's colour `c` (RGBA, in float) combined with the texel

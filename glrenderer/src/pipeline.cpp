@@ -73,6 +73,7 @@ void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSp
         closeBatch();
     }
     batch.edgeFlagsPerVertex = edgeFlags;
+    batch.colorInFormat = buffer_.has(VertexAttribute::Color);
     batch.state = drawn;
     batch.methods = methods_;
     batch.mode = mode;
@@ -90,9 +91,10 @@ void Pipeline::keepOpenVertices(std::size_t count) {
 }
 
 void Pipeline::closeBatchInPrimitive() {
-    const bool colors = batch_->colorsPerVertex;  // a full buffer keeps the reference's vertex format
+    // A full buffer keeps the reference's vertex format.
+    const bool colors = batch_->colorsPerVertex, colorInFormat = batch_->colorInFormat;
     closeBatch();
-    batch_->colorsPerVertex = colors;
+    batch_->colorsPerVertex = colors, batch_->colorInFormat = colorInFormat;
 }
 
 void Pipeline::handOverPart() {

@@ -275,7 +275,9 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
         fragment.invW = builder.plane(start.invW, end.invW);
         fragment.fogCoord = builder.plane(start.fogCoord * start.invW, end.fogCoord * end.invW);
     }
-    if (key.textureEnv != TextureEnv::Off) fragment.setTexture(fragments.texture, fragments.textureEnvColor, builder, start, end);
+    if (key.textureEnv != TextureEnv::Off) {
+        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, builder, start, end);
+    }
     fillQuad(quad, fragment, drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height()), framebuffer, stats);
 }
 

@@ -79,7 +79,10 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
         fragment.invW = {point.invW, 0.0f, 0.0f};
         fragment.fogCoord = {point.fogCoord * point.invW, 0.0f, 0.0f};
     }
-    if (fragment.key.textureEnv != TextureEnv::Off) fragment.setTexture(fragments.texture, fragments.textureEnvColor, ConstantPlanes{}, point);
+    if (fragment.key.textureEnv != TextureEnv::Off) {
+        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, ConstantPlanes{},
+                            point);
+    }
     FragmentCounts counts;
     for (std::int64_t row = box.y0; row <= box.y1; ++row) {
         fragment.shadeSpan(static_cast<int>(row), static_cast<int>(box.x0), static_cast<int>(box.x1), framebuffer, counts);

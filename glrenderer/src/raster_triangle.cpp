@@ -107,7 +107,9 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         in.invW = planes.plane(v0.invW, v1.invW, v2.invW);
         in.fogCoord = planes.plane(v0.fogCoord * v0.invW, v1.fogCoord * v1.invW, v2.fogCoord * v2.invW);
     }
-    if (key.textureEnv != TextureEnv::Off) in.setTexture(fragments.texture, fragments.textureEnvColor, planes, v0, v1, v2);
+    if (key.textureEnv != TextureEnv::Off) {
+        in.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, planes, v0, v1, v2);
+    }
     return true;
 }
 

@@ -260,6 +260,26 @@ const EntryPoint kEntryPoints[] = {
      })},
 };
 
+glrenderer::TextureWrap wrapOf(GLenum wrap, bool blends) {
+    if (wrap == GL_REPEAT) return glrenderer::TextureWrap::Repeat;
+    return wrap == GL_CLAMP && blends ? glrenderer::TextureWrap::Clamp : glrenderer::TextureWrap::ClampToEdge;
+}
+
+// A colour as a texture of base format `base` holds it (Mesa's st_translate_color): what the
+// border colour becomes.
+glm::vec4 asBaseFormat(const glm::vec4& c, glrenderer::TextureBase base) {
+    using glrenderer::TextureBase;
+    switch (base) {
+    case TextureBase::Alpha: return {0.0f, 0.0f, 0.0f, c.a};
+    case TextureBase::Luminance: return {c.r, c.r, c.r, 1.0f};
+    case TextureBase::LuminanceAlpha: return {c.r, c.r, c.r, c.a};
+    case TextureBase::Intensity: return {c.r, c.r, c.r, c.r};
+    case TextureBase::Rgb: return {c.r, c.g, c.b, 1.0f};
+    case TextureBase::Rgba: break;
+    }
+    return c;
+}
+
 }  // namespace
 
 void updateTexturing(Context::State& s) {
@@ -286,10 +306,15 @@ void updateTexturing(Context::State& s) {
         next.mipFilter = !isMipmapFilter(min) ? MipmapFilter::None
                        : min == GL_NEAREST_MIPMAP_NEAREST || min == GL_LINEAR_MIPMAP_NEAREST ? MipmapFilter::Nearest
                                                                                              : MipmapFilter::Linear;
-        // GL_CLAMP as GL_CLAMP_TO_EDGE: the same under NEAREST; its border under LINEAR is not
-        // reproduced (tests/conformance/expected_differences.txt).
-        next.wrapS = t->wrapS == GL_REPEAT ? glrenderer::TextureWrap::Repeat : glrenderer::TextureWrap::ClampToEdge;
-        next.wrapT = t->wrapT == GL_REPEAT ? glrenderer::TextureWrap::Repeat : glrenderer::TextureWrap::ClampToEdge;
+        // GL_CLAMP samples as GL_CLAMP_TO_EDGE when no filter reaches past a texel (the
+        // reference's float sampler gives the same bits then); a 1D texture has no T.
+        const bool blends = next.minFilter == TextureFilter::Linear || next.magFilter == TextureFilter::Linear ||
+                            next.mipFilter == MipmapFilter::Linear;
+        next.wrapS = wrapOf(t->wrapS, blends);
+        next.wrapT = next.oneDimensional ? glrenderer::TextureWrap::Repeat : wrapOf(t->wrapT, blends);
+        if (next.wrapS == glrenderer::TextureWrap::Clamp || next.wrapT == glrenderer::TextureWrap::Clamp) {
+            next.borderColor = asBaseFormat(t->borderColor, next.base);
+        }
         next.envColor = unit.envColor;
         next.gen = unit.gen;
         const bool sphere = ((unit.gen.enabled & 1u) && unit.genMode[0] == GL_SPHERE_MAP) ||

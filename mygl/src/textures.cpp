@@ -123,6 +123,7 @@ void texSubImage(GLenum target, int dims, GLint level, GLint x, GLint y, GLsizei
     for (int row = y0; row < y1; ++row) {
         for (int column = x0; column < x1; ++column) inner.push_back(rgba[static_cast<std::size_t>((row - y) * width + column - x)]);
     }
+    endBatch(*s);  // the reference draws its pending vertices and forgets their format
     writeSubImage(defined, x0, y0, x1 - x0, y1 - y0, inner);
     texture.snapshot.reset();  // batches queued with the old images keep them
 }

@@ -307,13 +307,15 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         if (fourth(random) == 0) state.polygonOffset = {1.5f, -3.0f, true, false, false};
         state.fragmentOps = randomFragmentOps(random);
         if (fourth(random) == 0) {
-            std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2);
+            std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2), wrap(0, 2);
             state.texture.env = static_cast<TextureEnv>(env(random));
             state.texture.base = static_cast<TextureBase>(base(random));
             state.texture.minFilter = static_cast<TextureFilter>(coin(random));
             state.texture.magFilter = static_cast<TextureFilter>(coin(random));
             state.texture.mipFilter = static_cast<MipmapFilter>(mip(random));
-            state.texture.wrapS = static_cast<TextureWrap>(coin(random));
+            state.texture.wrapS = static_cast<TextureWrap>(wrap(random));
+            state.texture.wrapT = static_cast<TextureWrap>(wrap(random));
+            state.texture.borderColor = {0.3f, 0.6f, 0.9f, 0.5f};  // (for GL_CLAMP: the float sampler)
             state.texture.texture = texture;
         }
         // Every other triangle is drawn within a random rectangle, as a tile draws its part.

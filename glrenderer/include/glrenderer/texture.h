@@ -19,8 +19,10 @@ enum class TextureBase : std::uint8_t { Alpha, Luminance, LuminanceAlpha, Intens
 enum class TextureFilter : std::uint8_t { Nearest, Linear };
 // The mipmap filter of the minification filter: None for GL_NEAREST and GL_LINEAR.
 enum class MipmapFilter : std::uint8_t { None, Nearest, Linear };
-// GL_CLAMP samples as GL_CLAMP_TO_EDGE under NEAREST (its border is never reached).
-enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge };
+// GL_CLAMP under NEAREST filters samples as GL_CLAMP_TO_EDGE (its border is never reached);
+// Clamp is GL_CLAMP where a filter is LINEAR (or the mipmap filter): the reference samples it
+// in float, the border colour beyond the edges (fragment_texture_float.h).
+enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge, Clamp };
 
 // A texture's images (its mipmap levels, or level 0 alone), their texels expanded to RGBA8
 // words (R in the low byte) as the reference's 8-bit sampler sees them: luminance L as
@@ -58,6 +60,9 @@ struct TextureState {
     MipmapFilter mipFilter = MipmapFilter::None;
     TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
     glm::vec4 envColor{0.0f};  // GL_TEXTURE_ENV_COLOR, clamped
+    // GL_TEXTURE_BORDER_COLOR as a Clamp wrap samples it: clamped, then taken as the base
+    // format takes a colour (luminance (R, R, R, 1), ...); zero without a Clamp wrap.
+    glm::vec4 borderColor{0.0f};
     TextureGen gen;
     Matrix matrix = kIdentity;  // the texture matrix
     bool identityMatrix = true;
