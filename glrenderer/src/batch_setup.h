@@ -76,7 +76,9 @@ private:
         const glm::vec4& flat;
         const glm::vec4& flatBack;
     };
-    void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window, const SidedColors& colors);
+    // (The vertices by reference: most triangles take them as they are.)
+    void setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
+                            const SidedColors& colors);
     Outcode run(const SubmittedBatch& batch);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);
