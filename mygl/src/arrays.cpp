@@ -270,6 +270,7 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
     const glm::vec3 normal = s.normal;
     const bool edgeFlag = s.edgeFlag;
     endBatch(s);
+    s.pipeline.drawFromArrays(true);
     begin(mode, quadSplitOf(s, indexed));
     const ElementReader element(arrays);
     const std::optional<MeshArrays> mesh = MeshArrays::of(arrays);
@@ -284,6 +285,7 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
     }
     end();
     endBatch(s);
+    s.pipeline.drawFromArrays(false);
     s.color = color, s.vertexColor = vertexColor, s.texCoord = texCoord, s.normal = normal, s.edgeFlag = edgeFlag;
 }
 

@@ -74,6 +74,9 @@ public:
         std::span<std::uint32_t> indices;
     };
     static bool acceptsIndexedParts(const DrawState& state, PrimitiveMode mode);
+    // Between the calls, primitives are glDrawArrays or glDrawElements draws, which the
+    // reference does not pass through its immediate-mode buffer (see ImmediateBuffer).
+    void drawFromArrays(bool fromArrays) { buffer_.setFromArrays(fromArrays); }
     IndexedPart addIndexedPart(std::size_t vertexCount, std::size_t indexCount);
     // glColor inside glBegin/glEnd. The reference's vertex buffer then gains a color per vertex
     // until its draw ends, and what it held before is drawn as a draw of its own (it decides
