@@ -140,12 +140,17 @@ private:
         const unsigned char* base = nullptr;
         std::size_t step = 0;
         int size = 0;  // 0: not enabled
-        // Element i's components, the missing ones taken from `rest` (a float at a time: a copy
-        // of a size known only at run time is a library call).
+        // Element i's components, the missing ones taken from `rest` (copies of a size known
+        // when compiled: one of a size known only at run time is a library call).
         glm::vec4 read(std::size_t i, glm::vec4 rest) const {
             const unsigned char* element = base + i * step;
-            for (int k = 0; k < size; ++k) std::memcpy(&rest[k], element + k * sizeof(float), sizeof(float));
-            return rest;
+            float v[4];
+            switch (size) {
+            case 4: std::memcpy(v, element, 4 * sizeof(float)); return {v[0], v[1], v[2], v[3]};
+            case 3: std::memcpy(v, element, 3 * sizeof(float)); return {v[0], v[1], v[2], rest.w};
+            case 2: std::memcpy(v, element, 2 * sizeof(float)); return {v[0], v[1], rest.z, rest.w};
+            default: std::memcpy(v, element, sizeof(float)); return {v[0], rest.y, rest.z, rest.w};
+            }
         }
     };
     static Source sourceOf(const ClientArray& a) {
