@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -35,9 +36,11 @@ struct BatchHeader {
     const VertexLighting* lighting = nullptr;
 };
 
-// One draw with its vertices as the program gave them.
+// One draw with its vertices as the program gave them. An indexed one (a part of glDrawElements)
+// draws the vertices its `indices` name, in their order; the others draw `vertices` in order.
 struct SubmittedBatch : BatchHeader {
     std::span<const Vertex> vertices;
+    std::span<const std::uint32_t> indices;
 };
 
 // One draw after the vertex stage, its vertices assembled (VertexStage::assemble).
@@ -48,6 +51,7 @@ struct Batch : BatchHeader {
 // A batch's place in its chunk.
 struct BatchEntry : BatchHeader {
     std::size_t first = 0, count = 0;  // its vertices in the chunk
+    std::size_t firstIndex = 0, indexCount = 0;  // its indices in the chunk (none: not indexed)
 };
 
 // The vertices a chunk is made for: a part of a long primitive (Pipeline::kPartVertices) plus
@@ -61,10 +65,12 @@ struct BatchChunk {
     BatchChunk(std::size_t vertexCapacity, std::size_t batchCapacity) {
         vertices.reserve(vertexCapacity);
         batches.reserve(batchCapacity);
+        indices.reserve(vertexCapacity);
         setUpTriangles.reserve(vertexCapacity);  // strips and fans: a triangle per vertex
     }
 
     std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;  // of its indexed batches, into their own vertices
     std::vector<BatchEntry> batches;
     bool lit = false;  // lightChunk has lit its batches' vertices
     // Set when the chunk's poster has set its triangles up (BatchSetup, into slots of the
@@ -80,13 +86,15 @@ struct BatchChunk {
     // format has no colour either (Mesa's vertex program then reads the current colour as a
     // uniform, which the fragment shader takes exactly).
     SubmittedBatch batch(const BatchEntry& entry) const {
-        SubmittedBatch batch{entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count)};
+        SubmittedBatch batch{entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count),
+                             std::span<const std::uint32_t>(indices).subspan(entry.firstIndex, entry.indexCount)};
         const bool textured = batch.state.texture.env != TextureEnv::Off;
         if (!batch.colorsPerVertex && !(textured && batch.colorInFormat)) batch.state.shadeModel = ShadeModel::Flat;
         return batch;
     }
     void clear() {
         vertices.clear();
+        indices.clear();
         batches.clear();
         lit = false;
         setUp = false;

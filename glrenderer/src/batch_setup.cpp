@@ -1,6 +1,10 @@
 #include "batch_setup.h"
 
-#include <cmath>
+#include <immintrin.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
 
 #include "clip.h"
 #include "decompose.h"
@@ -17,10 +21,20 @@ constexpr std::uint32_t kQuadSegmentVertices = 4096;
 // dropped rather than fed to the fixed-point conversion.
 constexpr float kMaxWindowCoordinate = 1 << 24;
 
-bool isUsable(const WindowVertex& v) {
-    return std::fabs(v.x) < kMaxWindowCoordinate && std::fabs(v.y) < kMaxWindowCoordinate &&
-           std::isfinite(v.z) && std::isfinite(v.invW) && std::isfinite(v.color.r) &&
-           std::isfinite(v.color.g) && std::isfinite(v.color.b) && std::isfinite(v.color.a);
+// |x| and |y| below kMaxWindowCoordinate, z, 1 / w and the colour finite, in two comparisons of
+// four lanes (NaN fails every one).
+static_assert(offsetof(WindowVertex, invW) == 12 && offsetof(WindowVertex, color) == 16);
+__m128 usableLanes(const WindowVertex& v) {
+    const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
+    const __m128 infinity = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    const __m128 limits = _mm_setr_ps(kMaxWindowCoordinate, kMaxWindowCoordinate, std::numeric_limits<float>::infinity(),
+                                      std::numeric_limits<float>::infinity());
+    return _mm_and_ps(_mm_cmplt_ps(_mm_and_ps(_mm_loadu_ps(&v.x), magnitude), limits),
+                      _mm_cmplt_ps(_mm_and_ps(_mm_loadu_ps(&v.color.x), magnitude), infinity));
+}
+
+bool areUsable(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2) {
+    return _mm_movemask_ps(_mm_and_ps(_mm_and_ps(usableLanes(v0), usableLanes(v1)), usableLanes(v2))) == 0xF;
 }
 
 bool isCulled(const DrawState& state, Facing facing) {
@@ -77,7 +91,16 @@ Batch BatchSetup::stage(const SubmittedBatch& batch) {
 }
 
 void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stats& stats) {
-    const Outcode anyOutside = run(batch);
+    Outcode anyOutside = run(batch);
+    const bool indexed = !batch.indices.empty();
+    const std::span<const Outcode> outcodes = vertexStage_.outcodes();
+    // The outcode of the primitive's i-th vertex: an indexed batch's vertices include some it
+    // does not draw.
+    const auto outcodeAt = [&](std::uint32_t i) { return outcodes[indexed ? batch.indices[i] : i]; };
+    if (indexed && anyOutside != 0) {
+        anyOutside = 0;
+        for (std::uint32_t i = 0; i < batch.indices.size(); ++i) anyOutside |= outcodeAt(i);
+    }
     const ViewportTransform viewport(batch.state, framebuffer_.height());
     const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
                            batch.quadSplit == QuadSplit::V1V3;
@@ -91,22 +114,21 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
                         path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
                             batch.methods.culling == CullMethod::WindowArea};
         decomposeTriangles(batch.mode, count, path, v1v3Quads, [&](TriangleIndices t) {
-            for (std::uint32_t& v : t.v) v += first;
+            for (std::uint32_t& v : t.v) v = indexed ? batch.indices[v + first] : v + first;
             setUpTriangle(call, t, viewport);
         });
     };
-    const auto count = static_cast<std::uint32_t>(batch.vertices.size());
+    const auto count = static_cast<std::uint32_t>(indexed ? batch.indices.size() : batch.vertices.size());
     if (batch.mode != PrimitiveMode::Quads || anyOutside == 0 || count <= kQuadSegmentVertices) {
         return decompose(0, count, anyOutside);
     }
     // The reference's draw module takes a long draw of quads in segments of 4096 vertices and
     // chooses the path per segment: one without a vertex to clip goes the direct way, and its
     // quads are split along the other diagonal (measured with OSMesa).
-    const std::span<const Outcode> outcodes = vertexStage_.outcodes();
     for (std::uint32_t first = 0; first < count; first += kQuadSegmentVertices) {
         const std::uint32_t size = std::min(kQuadSegmentVertices, count - first);
         Outcode segmentOutside = 0;
-        for (std::uint32_t i = first; i < first + size; ++i) segmentOutside |= outcodes[i];
+        for (std::uint32_t i = first; i < first + size; ++i) segmentOutside |= outcodeAt(i);
         decompose(first, size, segmentOutside);
     }
 }
@@ -142,7 +164,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     const Outcode outsideAny = outcodes[t.v[0]] | outcodes[t.v[1]] | outcodes[t.v[2]];
     if (outsideAny == 0) {
         const auto& v = call.vertices;
-        setUpSidedTriangle(call, {windowVertices[t.v[0]], windowVertices[t.v[1]], windowVertices[t.v[2]]},
+        setUpSidedTriangle(call, {&windowVertices[t.v[0]], &windowVertices[t.v[1]], &windowVertices[t.v[2]]},
                            std::array{&v[t.v[0]], &v[t.v[1]], &v[t.v[2]]}, provoking);
         return;
     }
@@ -170,7 +192,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     for (int i = 2; i < polygon.count; ++i) {
         const WindowVertex current = window(i);
         const auto k = static_cast<std::size_t>(i);
-        setUpSidedTriangle(call, {previous, current, first}, std::array{&clipped[k - 1], &clipped[k], &clipped[0]},
+        setUpSidedTriangle(call, {&previous, &current, &first}, std::array{&clipped[k - 1], &clipped[k], &clipped[0]},
                            provoking);
         previous = current;
     }
@@ -181,23 +203,24 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
 // gl_FrontFacing, both colours interpolated as usual. Under flat shading every vertex takes the
 // provoking vertex's secondary colour (the primary one goes as the flat colour).
 template <class Record>
-void BatchSetup::setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window,
+void BatchSetup::setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
                                     std::array<const Record*, 3> records, const Vertex& provoking) {
     const DrawState& state = call.batch.state;
-    const bool back = state.twoSidedColors && facingOf(fixedArea(snap(window[0]), snap(window[1]), snap(window[2])),
+    const bool back = state.twoSidedColors && facingOf(fixedArea(snap(*window[0]), snap(*window[1]), snap(*window[2])),
                                                        state.frontFaceCCW) == Facing::Back;
-    if (back) {
-        for (std::size_t i = 0; i < 3; ++i) window[i].color = records[i]->backColor;
-    }
-    if (state.secondaryColors) {
-        const bool flat = state.shadeModel == ShadeModel::Flat;
-        const glm::vec3& flatSecondary = back ? provoking.backSecondaryColor : provoking.secondaryColor;
-        for (std::size_t i = 0; i < 3; ++i) {
+    const glm::vec4& flatColor = back ? provoking.backColor : provoking.color;
+    const bool flatSecondary = state.secondaryColors && state.shadeModel == ShadeModel::Flat;
+    if (!back && !flatSecondary) return setUpTriangle(call, *window[0], *window[1], *window[2], flatColor);
+    std::array<WindowVertex, 3> changed{*window[0], *window[1], *window[2]};
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (back) changed[i].color = records[i]->backColor;
+        if (state.secondaryColors) {
             const glm::vec3& own = back ? records[i]->backSecondaryColor : records[i]->secondaryColor;
-            window[i].secondaryColor = flat ? flatSecondary : own;
+            const glm::vec3& flat = back ? provoking.backSecondaryColor : provoking.secondaryColor;
+            changed[i].secondaryColor = flatSecondary ? flat : own;
         }
     }
-    setUpTriangle(call, window[0], window[1], window[2], back ? provoking.backColor : provoking.color);
+    setUpTriangle(call, changed[0], changed[1], changed[2], flatColor);
 }
 
 void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1,
@@ -212,7 +235,7 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
                                const WindowVertex& v2, const glm::vec4& flatColor) {
     const DrawState& state = call.batch.state;
     const Methods& methods = call.batch.methods;
-    if (!isUsable(v0) || !isUsable(v1) || !isUsable(v2)) {
+    if (!areUsable(v0, v1, v2)) {
         ++call.stats.clippedAway;
         return;
     }
@@ -234,7 +257,7 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         call.feedback->triangle(v0, v1, v2);
         return;
     }
-    SetupTriangle triangle{{v0, v1, v2}, {snap(v0), snap(v1), snap(v2)}, 0, flatColor};
+    SetupTriangle triangle{{&v0, &v1, &v2}, {snap(v0), snap(v1), snap(v2)}, 0, &flatColor};
     triangle.area = fixedArea(triangle.fixed[0], triangle.fixed[1], triangle.fixed[2]);
     const Facing facing = facingOf(triangle.area, state.frontFaceCCW);
     if (facing == Facing::ZeroArea) {

@@ -69,11 +69,12 @@ private:
         FeedbackOutput* feedback = nullptr;  // GL_FEEDBACK
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
-    // A triangle's window vertices with the records they came from (Vertex or ClipVertex), for
-    // their back colours, and its provoking vertex, for its flat colours.
+    // A triangle's window vertices (by address: most triangles take them as they are) with the
+    // records they came from (Vertex or ClipVertex), for their back colours, and its provoking
+    // vertex, for its flat colours.
     template <class Record>
-    void setUpSidedTriangle(const Call& call, std::array<WindowVertex, 3> window, std::array<const Record*, 3> records,
-                            const Vertex& provoking);
+    void setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
+                            std::array<const Record*, 3> records, const Vertex& provoking);
     Outcode run(const SubmittedBatch& batch);
     void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);

@@ -60,7 +60,7 @@ bool ImmediateBuffer::endPrimitive(PrimitiveMode mode, std::size_t count, bool l
 }
 
 void ImmediateBuffer::flush() {
-    usedBytes_ += vertices_ * vertexFloats_ * sizeof(float);
+    if (!fromArrays_) usedBytes_ += vertices_ * vertexFloats_ * sizeof(float);
     if (kBufferBytes <= usedBytes_ + kMinFreeBytes) usedBytes_ = 0;  // a new buffer object
     updateMaxVertices();
     vertices_ = 0;

@@ -173,6 +173,22 @@ void Pipeline::endPrimitive() {
     }
 }
 
+bool Pipeline::acceptsIndexedParts(const DrawState& state, PrimitiveMode mode) {
+    return mode == PrimitiveMode::Triangles && !state.selection && !state.feedback &&
+           state.polygonFront == PolygonMode::Fill && state.polygonBack == PolygonMode::Fill;
+}
+
+Pipeline::IndexedPart Pipeline::addIndexedPart(std::size_t vertexCount, std::size_t indexCount) {
+    closeBatchInPrimitive();  // the part before, or the primitive's vertices so far
+    BatchChunk& chunk = *chunk_;
+    const std::size_t firstVertex = chunk.vertices.size(), firstIndex = chunk.indices.size();
+    chunk.vertices.resize(firstVertex + vertexCount);
+    chunk.indices.resize(firstIndex + indexCount);
+    batch_->indexCount = indexCount;
+    submitted_.vertices += indexCount;
+    return {std::span(chunk.vertices).subspan(firstVertex), std::span(chunk.indices).subspan(firstIndex)};
+}
+
 void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
     beginPrimitive(state, mode, QuadSplit::ByPath);
     colorPerVertex();  // vertices given whole carry their own colors and edge flags
@@ -217,8 +233,10 @@ void Pipeline::closeBatch() {
     batch_->count = batchSize();
     chunk_->batches.push_back(*batch_);
     batch_->first = chunk_->vertices.size();
+    batch_->firstIndex = chunk_->indices.size();
+    batch_->indexCount = 0;
     batch_->colorsPerVertex = false;
-    if (chunk_->vertices.size() >= kPartVertices) handOverChunk();
+    if (chunk_->vertices.size() >= kPartVertices || chunk_->indices.size() >= kPartVertices) handOverChunk();
 }
 
 void Pipeline::handOverChunk() {
@@ -231,6 +249,7 @@ void Pipeline::handOverChunk() {
         chunk_->clear();
     }
     batch_->first = 0;
+    batch_->firstIndex = 0;
 }
 
 void Pipeline::drawSubmitted() {

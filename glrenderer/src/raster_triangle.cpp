@@ -47,11 +47,11 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     std::int64_t minX = ceilToPixel(std::min({a.x, b.x, c.x})), maxX = floorToPixel(std::max({a.x, b.x, c.x}));
     std::int64_t minY = ceilToPixel(std::min({a.y, b.y, c.y})), maxY = floorToPixel(std::max({a.y, b.y, c.y}));
     out.method = method;
-    out.meanDepth = (t.v[0].z + t.v[1].z + t.v[2].z) / 3.0f;
+    out.meanDepth = (t.v[0]->z + t.v[1]->z + t.v[2]->z) / 3.0f;
     if (method == RasterMethod::Scanline || method == RasterMethod::BoundingBoxFloat) {
         // Float methods may reach a pixel past the snapped bounds.
         --minX, ++maxX, --minY, ++maxY;
-        for (int i = 0; i < 3; ++i) out.windowX[i] = t.v[i].x, out.windowY[i] = t.v[i].y;
+        for (int i = 0; i < 3; ++i) out.windowX[i] = t.v[i]->x, out.windowY[i] = t.v[i]->y;
     }
     out.minX = static_cast<int>(std::max<std::int64_t>(minX, drawable.minX));
     out.maxX = static_cast<int>(std::min<std::int64_t>(maxX, drawable.maxX));
@@ -69,16 +69,16 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     in.polygonStipple = fragments.polygonStipple;
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
-        in.setFlatColor(t.flatColor, t.v[2].secondaryColor);  // every vertex has the flat secondary colour
+        in.setFlatColor(*t.flatColor, t.v[2]->secondaryColor);  // every vertex has the flat secondary colour
         if (!key.depthTest && key.fog == FogMode::Off && key.textureEnv == TextureEnv::Off) return true;
     }
     // The reference sets up planes only for triangles counter-clockwise in its y-down view; one
     // clockwise in GL's window (area > 0 here) is set up as (v1, v0, v2), keeping the provoking
     // vertex last. The planes' last bits follow that order.
     const bool clockwise = t.area > 0;
-    const WindowVertex& v0 = clockwise ? t.v[1] : t.v[0];
-    const WindowVertex& v1 = clockwise ? t.v[0] : t.v[1];
-    const WindowVertex& v2 = t.v[2];
+    const WindowVertex& v0 = clockwise ? *t.v[1] : *t.v[0];
+    const WindowVertex& v1 = clockwise ? *t.v[0] : *t.v[1];
+    const WindowVertex& v2 = *t.v[2];
     const PlaneBuilder planes(v0, v1, v2);
     if (key.shading == Shading::Linear) {
         for (int i = 0; i < 4; ++i) in.color[i] = planes.plane(v0.color[i], v1.color[i], v2.color[i]);

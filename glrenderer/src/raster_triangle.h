@@ -15,11 +15,12 @@ namespace glrenderer {
 
 // A triangle ready for snapping and rasterization: window vertices in the reference's order,
 // their snapped positions and the nonzero fixed-point area. flatColor is used under flat shading.
+// (The vertices and the colour by address: setup reads them where the vertex stage left them.)
 struct SetupTriangle {
-    WindowVertex v[3];
+    const WindowVertex* v[3];
     FixedPoint fixed[3];
     std::int64_t area;
-    glm::vec4 flatColor;
+    const glm::vec4* flatColor;
 };
 
 // E(p) = (b - a) x (p - a) for a triangle oriented so that its interior is E > 0, at pixel

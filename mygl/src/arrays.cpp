@@ -2,7 +2,9 @@
 // glDrawElements, glInterleavedArrays and glGetPointerv. An element is fed through the same
 // calls as glColor/glNormal/glTexCoord/glEdgeFlag/glVertex; a draw is one glBegin/glEnd of its
 // own, as the reference draws it, leaving the current attributes as they were.
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -108,27 +110,47 @@ public:
     }
 
     void emit(Context::State& s, std::size_t i) const {
-        float v[4];
-        if (texCoord_.size) s.texCoord = texCoord_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f});
+        if (texCoord_.size) s.texCoord = texCoord_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
         if (color_.size) {
-            const glm::vec4 c = colorBytes_ ? colorFromBytes(i) : color_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f});
+            const glm::vec4 c = colorBytes_ ? colorFromBytes(i) : color_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
             s.color = c;
             s.vertexColor = saturate(c);
         }
-        if (normal_.size) s.normal = glm::vec3(normal_.read(i, v, {}));
-        pushVertex(s, vertex_.read(i, v, {0.0f, 0.0f, 0.0f, 1.0f}));
+        if (normal_.size) s.normal = glm::vec3(normal_.read(i, {}));
+        pushVertex(s, vertex_.read(i, {0.0f, 0.0f, 0.0f, 1.0f}));
     }
+
+    // The vertex emit() would push for element i, the current attributes left as they are.
+    void fill(const Context::State& s, std::size_t i, glrenderer::Vertex& out) const {
+        out.position = vertex_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
+        out.texCoord = texCoord_.size ? texCoord_.read(i, {0.0f, 0.0f, 0.0f, 1.0f}) : s.texCoord;
+        out.normal = normal_.size ? glm::vec3(normal_.read(i, {})) : s.normal;
+        out.edgeFlag = s.edgeFlag;
+        if (!color_.size) {
+            out.color = s.lightingEnabled ? s.color : s.vertexColor;
+            return;
+        }
+        const glm::vec4 c = colorBytes_ ? colorFromBytes(i) : color_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
+        out.color = s.lightingEnabled ? c : saturate(c);  // lit unclamped by the pipeline (pushVertex)
+    }
+    bool hasColors() const { return color_.size > 0; }
 
 private:
     struct Source {
         const unsigned char* base = nullptr;
         std::size_t step = 0;
         int size = 0;  // 0: not enabled
-        // Element i's components, the missing ones taken from `rest`.
-        glm::vec4 read(std::size_t i, float (&v)[4], glm::vec4 rest) const {
-            std::memcpy(v, base + i * step, static_cast<std::size_t>(size) * sizeof(float));
-            for (int k = 0; k < size; ++k) rest[k] = v[k];
-            return rest;
+        // Element i's components, the missing ones taken from `rest` (copies of a size known
+        // when compiled: one of a size known only at run time is a library call).
+        glm::vec4 read(std::size_t i, glm::vec4 rest) const {
+            const unsigned char* element = base + i * step;
+            float v[4];
+            switch (size) {
+            case 4: std::memcpy(v, element, 4 * sizeof(float)); return {v[0], v[1], v[2], v[3]};
+            case 3: std::memcpy(v, element, 3 * sizeof(float)); return {v[0], v[1], v[2], rest.w};
+            case 2: std::memcpy(v, element, 2 * sizeof(float)); return {v[0], v[1], rest.z, rest.w};
+            default: std::memcpy(v, element, sizeof(float)); return {v[0], rest.y, rest.z, rest.w};
+            }
         }
     };
     static Source sourceOf(const ClientArray& a) {
@@ -141,8 +163,7 @@ private:
           texCoord_(sourceOf(a.texCoord)), colorBytes_(a.color.type == GL_UNSIGNED_BYTE) {}
 
     glm::vec4 colorFromBytes(std::size_t i) const {
-        GLubyte b[4] = {0, 0, 0, 0};
-        std::memcpy(b, color_.base + i * color_.step, static_cast<std::size_t>(color_.size));
+        const unsigned char* b = color_.base + i * color_.step;
         return {toFloat(b[0]), toFloat(b[1]), toFloat(b[2]), color_.size > 3 ? toFloat(b[3]) : 1.0f};
     }
 
@@ -171,6 +192,52 @@ struct Elements {
     GLenum type = 0;
     std::size_t operator[](std::size_t k) const { return indices ? readIndex(type, indices, k) : first + k; }
 };
+
+// Index k at `indices`, of type Index (read at any alignment).
+template <class Index>
+std::uint32_t indexAt(const void* indices, std::size_t k) {
+    Index index;
+    std::memcpy(&index, static_cast<const unsigned char*>(indices) + k * sizeof(Index), sizeof(Index));
+    return index;
+}
+
+// glDrawElements' independent triangles from a typical mesh's arrays, drawn in the pipeline's
+// indexed parts: each part's elements between its smallest and largest index are read once
+// (most are shared by several triangles), and its indices point into them. A part whose indices
+// spread wider than their number takes a vertex per index instead.
+template <class Index>
+void drawIndexedParts(Context::State& s, const MeshArrays& mesh, const void* indices, std::size_t count) {
+    constexpr std::size_t kPart = glrenderer::Pipeline::kPartVertices;
+    count -= count % 3;  // glEnd drops an incomplete triangle
+    for (std::size_t first = 0; first < count; first += kPart) {
+        const std::size_t n = std::min(kPart, count - first);
+        std::uint32_t low = indexAt<Index>(indices, first), high = low;
+        for (std::size_t k = first + 1; k < first + n; ++k) {
+            const std::uint32_t index = indexAt<Index>(indices, k);
+            low = std::min(low, index), high = std::max(high, index);
+        }
+        const bool compact = high - low < n;
+        const glrenderer::Pipeline::IndexedPart part = s.pipeline.addIndexedPart(compact ? high - low + 1 : n, n);
+        if (compact) {
+            for (std::size_t j = 0; j < part.vertices.size(); ++j) mesh.fill(s, low + j, part.vertices[j]);
+            for (std::size_t k = 0; k < n; ++k) part.indices[k] = indexAt<Index>(indices, first + k) - low;
+        } else {
+            for (std::size_t k = 0; k < n; ++k) {
+                mesh.fill(s, indexAt<Index>(indices, first + k), part.vertices[k]);
+                part.indices[k] = static_cast<std::uint32_t>(k);
+            }
+        }
+    }
+}
+
+void drawIndexedParts(Context::State& s, const MeshArrays& mesh, const Elements& elements) {
+    if (mesh.hasColors()) s.pipeline.colorPerVertex();  // as glColor inside glBegin/glEnd
+    switch (elements.type) {
+    case GL_UNSIGNED_BYTE: return drawIndexedParts<GLubyte>(s, mesh, elements.indices, elements.count);
+    case GL_UNSIGNED_SHORT: return drawIndexedParts<GLushort>(s, mesh, elements.indices, elements.count);
+    default: return drawIndexedParts<GLuint>(s, mesh, elements.indices, elements.count);
+    }
+}
 
 // The elements a draw reads, copied, with arrays that point into the copy: what a display list
 // keeps of glArrayElement, glDrawArrays and glDrawElements (GL reads the arrays when the command
@@ -208,15 +275,22 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
     const glm::vec3 normal = s.normal;
     const bool edgeFlag = s.edgeFlag;
     endBatch(s);
+    s.pipeline.drawFromArrays(true);
     begin(mode, quadSplitOf(s, indexed));
     const ElementReader element(arrays);
     const std::optional<MeshArrays> mesh = MeshArrays::of(arrays);
-    for (std::size_t k = 0; k < elements.count; ++k) {
-        if (k > 0 && mesh) mesh->emit(s, elements[k]);
-        else element(elements[k]);
+    if (mesh && elements.indices && !s.lightingOnProgramThread &&
+        glrenderer::Pipeline::acceptsIndexedParts(s.draw, static_cast<glrenderer::PrimitiveMode>(mode))) {
+        drawIndexedParts(s, *mesh, elements);
+    } else {
+        for (std::size_t k = 0; k < elements.count; ++k) {
+            if (k > 0 && mesh) mesh->emit(s, elements[k]);
+            else element(elements[k]);
+        }
     }
     end();
     endBatch(s);
+    s.pipeline.drawFromArrays(false);
     s.color = color, s.vertexColor = vertexColor, s.texCoord = texCoord, s.normal = normal, s.edgeFlag = edgeFlag;
 }
 

@@ -199,3 +199,86 @@ TEST(VertexArrays, StateQueriesAndCurrentValuesAnswerAsTheReference) {
     });
     EXPECT_EQ(answers.mygl, answers.osmesa);
 }
+
+// glDrawElements of many triangles goes to the pipeline in indexed parts (each with the elements
+// between its smallest and largest index): a grid of several parts crossing the near plane and
+// the sides, culled, in every index type; lit from a normal array; with a part whose indices
+// spread wider than their count (a vertex per index); with float and byte colours.
+TEST(VertexArrays, LongIndexedTriangleDrawsMatchTheReference) {
+    constexpr int kSide = 48;  // 48 x 48 quads: 13824 indices, five parts
+    std::vector<GLfloat> positions, normals, colors;
+    std::vector<GLubyte> colorBytes;
+    for (int j = 0; j <= kSide; ++j) {
+        for (int i = 0; i <= kSide; ++i) {
+            const float x = -3.0f + 6.0f * static_cast<float>(i) / kSide, y = -3.0f + 6.0f * static_cast<float>(j) / kSide;
+            const float h = 0.4f * std::sin(2.0f * x) * std::cos(1.5f * y);
+            positions.insert(positions.end(), {x, y, h});
+            normals.insert(normals.end(), {-0.8f * std::cos(2.0f * x) * std::cos(1.5f * y), 0.6f * std::sin(2.0f * x) * std::sin(1.5f * y), 1.0f});
+            colors.insert(colors.end(), {0.5f + h, 0.4f - h, 0.6f + 2.0f * h});
+            colorBytes.insert(colorBytes.end(), {static_cast<GLubyte>(i * 5), static_cast<GLubyte>(j * 5), 140, 255});
+        }
+    }
+    std::vector<GLuint> grid;
+    for (int j = 0; j < kSide; ++j) {
+        for (int i = 0; i < kSide; ++i) {
+            const auto v = static_cast<GLuint>(j * (kSide + 1) + i);
+            grid.insert(grid.end(), {v, v + 1, v + kSide + 2, v, v + kSide + 2, v + kSide + 1});
+        }
+    }
+    const std::vector<GLushort> shortGrid(grid.begin(), grid.end());
+    // Fans of triangles between the first row and the last: every part spreads over the grid.
+    std::vector<GLuint> spread;
+    for (GLuint i = 0; i + 1 < kSide; ++i) {
+        const GLuint last = kSide * (kSide + 1);
+        spread.insert(spread.end(), {i, i + 1, last + i + 1, i, last + i + 1, last + i});
+    }
+    const GLubyte smallGrid[] = {0, 1, 50, 0, 50, 49, 1, 2, 51, 1, 51, 50, 2, 3};  // an incomplete last triangle
+    const std::pair<const char*, std::function<void()>> draws[] = {
+        {"uint grid, float colours", [&] {
+             glColorPointer(3, GL_FLOAT, 0, colors.data());
+             glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid.size()), GL_UNSIGNED_INT, grid.data());
+         }},
+        {"ushort grid, byte colours", [&] {
+             glColorPointer(4, GL_UNSIGNED_BYTE, 0, colorBytes.data());
+             glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(shortGrid.size()), GL_UNSIGNED_SHORT, shortGrid.data());
+         }},
+        {"spread indices", [&] {
+             glColorPointer(3, GL_FLOAT, 0, colors.data());
+             glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(spread.size()), GL_UNSIGNED_INT, spread.data());
+         }},
+        {"ubyte indices", [&] {
+             glColorPointer(3, GL_FLOAT, 0, colors.data());
+             glDrawElements(GL_TRIANGLES, 14, GL_UNSIGNED_BYTE, smallGrid);
+         }},
+        {"lit grid", [&] {
+             glDisableClientState(GL_COLOR_ARRAY);
+             glEnableClientState(GL_NORMAL_ARRAY);
+             glNormalPointer(GL_FLOAT, 0, normals.data());
+             const GLfloat position[] = {1.0f, 2.0f, 3.0f, 0.0f}, specular[] = {0.6f, 0.6f, 0.6f, 1.0f};
+             glLightfv(GL_LIGHT0, GL_POSITION, position);
+             glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
+             glMaterialf(GL_FRONT, GL_SHININESS, 20.0f);
+             glEnable(GL_LIGHTING);
+             glEnable(GL_LIGHT0);
+             glEnable(GL_NORMALIZE);
+             glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid.size()), GL_UNSIGNED_INT, grid.data());
+         }},
+    };
+    for (const auto& [name, draw] : draws) {
+        const auto frames = onBothBackends<Frame>(
+            [&] {
+                testing_support::clearedPerspectiveView(2.2f);
+                glRotatef(-60.0f, 1.0f, 0.0f, 0.0f);
+                glRotatef(20.0f, 0.0f, 0.0f, 1.0f);
+                glEnable(GL_CULL_FACE);
+                glEnableClientState(GL_VERTEX_ARRAY);
+                glEnableClientState(GL_COLOR_ARRAY);
+                glVertexPointer(3, GL_FLOAT, 0, positions.data());
+                draw();
+                return readFrame(kWidth, kHeight);
+            },
+            kWidth, kHeight);
+        EXPECT_EQ(frames.mygl.color, frames.osmesa.color) << name;
+        EXPECT_EQ(frames.mygl.depth, frames.osmesa.depth) << name;
+    }
+}

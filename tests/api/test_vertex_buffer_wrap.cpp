@@ -8,8 +8,11 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
+#include <utility>
 
 #include "backends.h"
 
@@ -208,4 +211,45 @@ TEST(VertexBufferWrap, ASecondWrapOfALineLoopKeepsItsSegments) {
     EXPECT_EQ(twice.mygl, once.osmesa);
     EXPECT_EQ(once.mygl, once.osmesa);
     EXPECT_NE(twice.osmesa, once.osmesa) << "the reference now keeps the segment: follow it";
+}
+
+TEST(VertexBufferWrap, ArrayDrawsUseNoneOfTheBuffer) {
+    // glDrawElements and glDrawArrays are drawn from the arrays, not through the immediate-mode
+    // buffer: the quads after them wrap where they would without the draw (the draw's 24-byte
+    // vertices would fill the little room left several times over). Independent triangles and a
+    // strip, which MyGL reads in different ways.
+    static GLfloat positions[4 * 3 * 2];
+    static GLuint indices[600];
+    for (int i = 0; i < 4; ++i) {
+        const GLfloat corner[6] = {-0.9f + 0.5f * static_cast<float>(i), -0.9f, 0.2f, 0.3f, 0.6f, 0.9f};
+        std::copy(corner, corner + 6, positions + 6 * i);
+    }
+    for (int i = 0; i < 600; ++i) indices[i] = static_cast<GLuint>(i % 3 + (i / 3) % 2);
+    const std::pair<const char*, std::function<void()>> draws[] = {
+        {"triangles by index", [] { glDrawElements(GL_TRIANGLES, 600, GL_UNSIGNED_INT, indices); }},
+        {"strip by index", [] { glDrawElements(GL_TRIANGLE_STRIP, 600, GL_UNSIGNED_INT, indices); }},
+        {"strip", [] { glDrawArrays(GL_TRIANGLE_STRIP, 0, 4); }},
+    };
+    for (const auto& [name, draw] : draws) {
+        for (const int used : {64900, 65100}) {
+            expectSameFrames(
+                [&] {
+                    useBuffer(used);
+                    glEnableClientState(GL_VERTEX_ARRAY);
+                    glEnableClientState(GL_COLOR_ARRAY);
+                    glVertexPointer(3, GL_FLOAT, 6 * sizeof(GLfloat), positions);
+                    glColorPointer(3, GL_FLOAT, 6 * sizeof(GLfloat), positions + 3);
+                    for (int repeat = 0; repeat < 150; ++repeat) draw();
+                    glDisableClientState(GL_COLOR_ARRAY);
+                    glDisableClientState(GL_VERTEX_ARRAY);
+                    glBegin(GL_QUADS);
+                    for (int i = 0; i < 4 * 64; ++i) {
+                        glColor3f(wave(i, 0), wave(i, 1), wave(i, 2));
+                        gridVertex(i, 3);
+                    }
+                    glEnd();
+                },
+                (std::string(name) + " after " + std::to_string(used)).c_str());
+        }
+    }
 }

@@ -286,14 +286,16 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
     int drawn = 0;
     for (int i = 0; i < 3000; ++i) {
         const float spread = i % 3 == 0 ? 3.0f : (i % 3 == 1 ? 30.0f : 400.0f);
-        SetupTriangle setup{{randomVertex(random, spread), randomVertex(random, spread), randomVertex(random, spread)},
-                            {}, 0, {0.3f, 0.6f, 0.9f, 1.0f}};
+        WindowVertex vertices[3] = {randomVertex(random, spread), randomVertex(random, spread),
+                                    randomVertex(random, spread)};
+        const glm::vec4 flatColor{0.3f, 0.6f, 0.9f, 1.0f};
+        SetupTriangle setup{{&vertices[0], &vertices[1], &vertices[2]}, {}, 0, &flatColor};
         // Every fourth triangle has w = 1 at every vertex, as orthographic scenes do: its path
         // then skips the division by 1 / w.
         if (i % 4 == 3) {
-            for (WindowVertex& v : setup.v) v.invW = 1.0f;
+            for (WindowVertex& v : vertices) v.invW = 1.0f;
         }
-        for (int k = 0; k < 3; ++k) setup.fixed[k] = snap(setup.v[k]);
+        for (int k = 0; k < 3; ++k) setup.fixed[k] = snap(vertices[k]);
         setup.area = fixedArea(setup.fixed[0], setup.fixed[1], setup.fixed[2]);
         if (setup.area == 0) continue;
         DrawState state;

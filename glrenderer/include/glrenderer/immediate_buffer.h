@@ -38,7 +38,10 @@ public:
     void beginPrimitive();
     // Whether the next vertex must go to a new part of the buffer: the last one filled it.
     // (Vertices given without a format, by Pipeline::submit, never fill it.)
-    bool full() const { return maxVertices_ > 0 && vertices_ >= maxVertices_; }
+    bool full() const { return !fromArrays_ && maxVertices_ > 0 && vertices_ >= maxVertices_; }
+    // glDrawArrays and glDrawElements, while set: the reference draws them from the arrays, not
+    // through this buffer, so their vertices neither fill it nor use up its room.
+    void setFromArrays(bool fromArrays) { fromArrays_ = fromArrays; }
     void addVertex() { ++vertices_; }
     // The full buffer is drawn; the open primitive goes on with `carried` vertices copied.
     void wrap(std::size_t carried);
@@ -68,6 +71,7 @@ private:
     // The previous block of this draw, which the next one may merge with.
     PrimitiveMode lastMode_ = PrimitiveMode::Points;
     bool lastMergeable_ = false;
+    bool fromArrays_ = false;
 };
 
 // Which of the open primitive's `count` vertices (in this part of the buffer) the reference

@@ -64,6 +64,20 @@ public:
         return open_.emplace_back();
     }
     void endPrimitive();
+    // glDrawElements' independent triangles, when acceptsIndexedParts(): the open primitive
+    // takes them in parts of at most kPartVertices indices, each a batch of its own with its own
+    // vertices (the elements between its smallest and largest index, filled in place by the
+    // caller) and its indices into them, so that a vertex the part shares is staged once. The
+    // reference draws such a draw from its arrays, not through its immediate-mode buffer.
+    struct IndexedPart {
+        std::span<Vertex> vertices;
+        std::span<std::uint32_t> indices;
+    };
+    static bool acceptsIndexedParts(const DrawState& state, PrimitiveMode mode);
+    // Between the calls, primitives are glDrawArrays or glDrawElements draws, which the
+    // reference does not pass through its immediate-mode buffer (see ImmediateBuffer).
+    void drawFromArrays(bool fromArrays) { buffer_.setFromArrays(fromArrays); }
+    IndexedPart addIndexedPart(std::size_t vertexCount, std::size_t indexCount);
     // glColor inside glBegin/glEnd. The reference's vertex buffer then gains a color per vertex
     // until its draw ends, and what it held before is drawn as a draw of its own (it decides
     // how flat quads are split).
