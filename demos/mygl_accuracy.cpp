@@ -25,7 +25,9 @@ int main() {
             t->ties += r.depthTies;
             t->max = std::max(t->max, r.comparison.maxChannelDifference);
         }
-        if (!r.passed) std::printf("differs: %s %s\n", c.name.c_str(), reference::toString(r.comparison).c_str());
+        if (!r.passed)
+            std::printf("differs: %s %s observations differing=%zu/%zu %s\n", c.name.c_str(), reference::toString(r.comparison).c_str(),
+                        r.observationsDiffering, r.observations, r.firstObservationDifference.c_str());
     }
     std::printf("| category | cases | passing | pixels | differing | >1 | depth ties | max |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");

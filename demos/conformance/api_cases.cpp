@@ -1,0 +1,66 @@
+// Turns the API table (api_table_*.cpp) into conformance cases: per row, the valid calls, each
+// error call and, for a function the spec forbids between glBegin and glEnd, the valid calls
+// there, each followed by glGetError and the row's queries.
+#include <glad/gl.h>
+#include <scene.h>
+
+#include "api_table.h"
+#include "cases.h"
+
+namespace conformance {
+namespace {
+
+bool errorCall = false;
+
+// Runs `call` as one of a row's error calls.
+void asErrorCall(const ApiCall& call, Observations& o) {
+    errorCall = true;
+    call(o);
+    errorCall = false;
+}
+
+void runRow(const ApiFunction& f, Observations& o) {
+    o.drainErrors();
+    glColor4f(1.0f, 1.0f, 1.0f, 1.0f);
+    glPointSize(2.0f);
+    f.valid(o);
+    o.error("valid");
+    if (f.effect) f.effect(o);
+    for (std::size_t i = 0; i < f.errors.size(); ++i) {
+        asErrorCall(f.errors[i], o);
+        o.error("error call " + std::to_string(i + 1));
+        if (f.effect) f.effect(o);
+    }
+    if (!f.allowedInsideBeginEnd) {
+        glBegin(GL_POINTS);
+        asErrorCall(f.valid, o);
+        glEnd();
+        o.error("inside glBegin/glEnd");
+        if (f.effect) f.effect(o);
+    }
+    if (f.cleanup) f.cleanup(o);
+    glPointSize(1.0f);
+    o.drainErrors();
+}
+
+}  // namespace
+
+bool inErrorCall() { return errorCall; }
+
+std::vector<Case> apiCases() {
+    std::vector<ApiFunction> rows = vertexApiTable();
+    for (auto* table : {stateApiTable, objectApiTable}) {
+        std::vector<ApiFunction> more = table();
+        rows.insert(rows.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+    }
+    std::vector<Case> cases;
+    for (ApiFunction& row : rows) {
+        std::string name = "api_" + row.name;
+        if (const auto colon = name.find(':'); colon != std::string::npos) name[colon] = '_';
+        cases.push_back({"api-" + row.group, name, true, scenes::resetState,
+                         [f = std::move(row)](Observations& o) { runRow(f, o); }});
+    }
+    return cases;
+}
+
+}  // namespace conformance
