@@ -11,6 +11,7 @@ namespace conformance {
 namespace {
 
 bool errorCall = false;
+constexpr GLuint kList = 500;  // a list name no row uses
 
 // Runs `call` as one of a row's error calls.
 void asErrorCall(const ApiCall& call, Observations& o) {
@@ -27,7 +28,7 @@ void runRow(const ApiFunction& f, Observations& o) {
     o.error("valid");
     if (f.effect) f.effect(o);
     for (std::size_t i = 0; i < f.errors.size(); ++i) {
-        asErrorCall(f.errors[i], o);
+        asErrorCall(f.errors[i].call, o);
         o.error("error call " + std::to_string(i + 1));
         if (f.effect) f.effect(o);
     }
@@ -38,6 +39,22 @@ void runRow(const ApiFunction& f, Observations& o) {
         o.error("inside glBegin/glEnd");
         if (f.effect) f.effect(o);
     }
+    // Each call compiled into a list of its own, then the list executed: errors of compiled
+    // commands are the list's at its execution, those of commands executed at once come at once.
+    for (std::size_t i = 0; i <= f.errors.size(); ++i) {
+        if (i == 0 ? !f.validCompiled : !f.errors[i - 1].compiled) continue;
+        const ApiCall& call = i == 0 ? f.valid : f.errors[i - 1].call;
+        glNewList(kList, GL_COMPILE);
+        errorCall = i > 0;
+        call(o);
+        errorCall = false;
+        glEndList();
+        o.error("compiled");
+        glCallList(kList);
+        o.error("executed");
+        if (f.effect) f.effect(o);
+    }
+    glDeleteLists(kList, 1);
     if (f.cleanup) f.cleanup(o);
     glPointSize(1.0f);
     o.drainErrors();

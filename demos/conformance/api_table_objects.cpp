@@ -297,6 +297,10 @@ std::vector<ApiFunction> objectApiTable() {
           API_CALL(GLboolean r[2]; glAreTexturesResident(1, kUnknown, r))},
          {}, false, deleteTextures},
         {"glPrioritizeTextures", "texture", API_CALL(texture2D(7); glPrioritizeTextures(1, kNames, kPriority)),
+         {notCompiled(API_CALL(glPrioritizeTextures(-1, kNames, kPriority)))}, get({GL_TEXTURE_BINDING_2D}), false, deleteTextures},
+        // Compiled into a list, Mesa's glPrioritizeTextures keeps one entry per texture: a negative
+        // count leaves nothing, and no error when the list runs. An expected difference.
+        {"glPrioritizeTextures:in_list", "texture", API_CALL(texture2D(7); glPrioritizeTextures(1, kNames, kPriority)),
          {API_CALL(glPrioritizeTextures(-1, kNames, kPriority))}, get({GL_TEXTURE_BINDING_2D}), false, deleteTextures},
         // The spec rounds a priority asked as an integer, Mesa maps [0, 1] to [0, INT_MAX]: an expected difference.
         {"glGetTexParameteriv:priority", "texture", API_CALL(texture2D(7); glPrioritizeTextures(1, kNames, kPriority)), {},
@@ -321,7 +325,7 @@ std::vector<ApiFunction> objectApiTable() {
           API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, kBad, texels)),
           API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_BITMAP, texels)),
           API_CALL(glTexImage2D(GL_TEXTURE_2D, 20, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 40000, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels))},
+          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 40000, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr))},
          textureImage(GL_TEXTURE_2D), false, deleteTextures},
         {"glTexSubImage1D", "texture",
          API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
@@ -535,8 +539,11 @@ std::vector<ApiFunction> objectApiTable() {
          disableArrays},
         {"glDrawElements", "array", API_CALL(vertexArrays(); glDrawElements(GL_LINE_LOOP, 3, GL_UNSIGNED_SHORT, kIndices)),
          {API_CALL(glDrawElements(kBad, 3, GL_UNSIGNED_SHORT, kIndices)), API_CALL(glDrawElements(GL_TRIANGLES, -1, GL_UNSIGNED_SHORT, kIndices)),
-          API_CALL(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, kIndices))},
+          notCompiled(API_CALL(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, kIndices)))},
          get({GL_CURRENT_COLOR}), false, disableArrays},
+        // Compiled into a list, Mesa reports a bad index type as GL_INVALID_VALUE. An expected difference.
+        {"glDrawElements:in_list", "array", API_CALL(vertexArrays(); glDrawElements(GL_POINTS, 3, GL_UNSIGNED_BYTE, kColors)),
+         {API_CALL(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, kIndices))}, get({GL_CURRENT_COLOR}), false, disableArrays},
         {"glInterleavedArrays", "array", API_CALL(glInterleavedArrays(GL_C3F_V3F, 0, kInterleaved); glDrawArrays(GL_TRIANGLES, 0, 3)),
          {API_CALL(glInterleavedArrays(kBad, 0, kInterleaved)), API_CALL(glInterleavedArrays(GL_C3F_V3F, -1, kInterleaved))},
          arrayState(GL_COLOR_ARRAY, GL_COLOR_ARRAY_POINTER, kInterleaved,
@@ -576,7 +583,7 @@ std::vector<ApiFunction> objectApiTable() {
         {"glCopyPixels", "pixels", API_CALL(glRectf(-1.0f, -1.0f, -0.5f, -0.5f); rasterAt(0.0f, 0.0f); glCopyPixels(2, 2, 12, 9, GL_COLOR)),
          {API_CALL(glCopyPixels(0, 0, -1, 4, GL_COLOR)), API_CALL(glCopyPixels(0, 0, 4, 4, kBad))}, readPixels},
         {"glBitmap", "pixels", API_CALL(rasterAt(-0.25f, -0.25f); glBitmap(8, 8, 1.5f, 2.0f, 9.0f, -3.0f, kBitmap)),
-         {API_CALL(glBitmap(-1, 8, 0, 0, 0, 0, kBitmap)), API_CALL(glBitmap(8, -8, 0, 0, 0, 0, kBitmap))},
+         {notCompiled(API_CALL(glBitmap(-1, 8, 0, 0, 0, 0, kBitmap))), notCompiled(API_CALL(glBitmap(8, -8, 0, 0, 0, 0, kBitmap)))},
          get({GL_CURRENT_RASTER_POSITION})},
         {"glPixelZoom", "pixels", API_CALL(glPixelZoom(2.0f, -1.5f); rasterAt(-0.5f, 0.5f); glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
          {}, get({GL_ZOOM_X, GL_ZOOM_Y}), false, resetPixelModes},
@@ -652,19 +659,27 @@ std::vector<ApiFunction> objectApiTable() {
 
         // Evaluators.
         {"glMap1f", "eval", API_CALL(glMap1f(GL_MAP1_COLOR_4, 0.0f, 2.0f, 4, 3, kCurve)),
-         {API_CALL(glMap1f(kBad, 0.0f, 1.0f, 3, 4, kCurve)), API_CALL(glMap1f(GL_MAP1_VERTEX_3, 1.0f, 1.0f, 3, 4, kCurve)),
-          API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 2, 4, kCurve)), API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 0, kCurve)),
+         {notCompiled(API_CALL(glMap1f(kBad, 0.0f, 1.0f, 3, 4, kCurve))), API_CALL(glMap1f(GL_MAP1_VERTEX_3, 1.0f, 1.0f, 3, 4, kCurve)),
+          notCompiled(API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 2, 4, kCurve))),
+          API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 0, kCurve)),
           API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 100, kCurve))},
          mapState(GL_MAP1_COLOR_4)},
         {"glMap1d", "eval", API_CALL(glMap1d(GL_MAP1_VERTEX_3, -1.0, 1.0, 3, 4, kCurveD)),
-         {API_CALL(glMap1d(GL_MAP1_VERTEX_3, 0.5, 0.5, 3, 4, kCurveD)), API_CALL(glMap1d(kBad, 0.0, 1.0, 3, 4, kCurveD))},
+         {API_CALL(glMap1d(GL_MAP1_VERTEX_3, 0.5, 0.5, 3, 4, kCurveD)), notCompiled(API_CALL(glMap1d(kBad, 0.0, 1.0, 3, 4, kCurveD)))},
          mapState(GL_MAP1_VERTEX_3)},
         {"glMap2f", "eval", API_CALL(glMap2f(GL_MAP2_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 3, 0.0f, 2.0f, 6, 2, kCurve)),
          {API_CALL(glMap2f(kBad, 0.0f, 1.0f, 2, 3, 0.0f, 2.0f, 6, 2, kCurve)),
           API_CALL(glMap2f(GL_MAP2_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 3, 1.0f, 1.0f, 6, 2, kCurve)),
-          API_CALL(glMap2f(GL_MAP2_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 3, 0.0f, 1.0f, 1, 2, kCurve)),
+          notCompiled(API_CALL(glMap2f(GL_MAP2_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 3, 0.0f, 1.0f, 1, 2, kCurve))),
           API_CALL(glMap2f(GL_MAP2_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 3, 0.0f, 1.0f, 6, 0, kCurve))},
          mapState(GL_MAP2_TEXTURE_COORD_2)},
+        // Compiled into a list, Mesa copies the control points packed and runs the map with the
+        // packed strides: a stride too small is no error and defines the map; a bad target
+        // (no components) is GL_INVALID_VALUE. An expected difference.
+        {"glMap1f:in_list", "eval", API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 4, kCurve)),
+         {API_CALL(glMap1f(kBad, 0.0f, 1.0f, 3, 4, kCurve)), API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 2, 4, kCurve)),
+          API_CALL(glMap2f(GL_MAP2_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 3, 0.0f, 1.0f, 1, 2, kCurve))},
+         mapState(GL_MAP1_VERTEX_3)},
         {"glMap2d", "eval", API_CALL(glMap2d(GL_MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 2, kCurveD)),
          {API_CALL(glMap2d(GL_MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 99, kCurveD)),
           API_CALL(glMap2d(kBad, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 2, kCurveD)),
