@@ -21,6 +21,9 @@ const GLfloat kInterleaved[18] = {1, 0, 0, -0.6f, -0.5f, 0.1f, 0, 1, 0, 0.7f, -0
 const GLushort kIndices[3] = {2, 0, 1};
 const GLfloat kCurve[12] = {-0.8f, -0.6f, 0.0f, 0.0f, 0.9f, 0.2f, 0.8f, -0.5f, 0.0f, 0.5f, 0.5f, 0.0f};
 const GLdouble kCurveD[12] = {-0.8, -0.6, 0.0, 0.0, 0.9, 0.2, 0.8, -0.5, 0.0, 0.5, 0.5, 0.0};
+// Data as long as a bad count says (a list compiles the call, copying what the count implies).
+const GLfloat kLongF[512] = {};
+const GLdouble kLongD[1024] = {};
 
 void triangleVertices() {
     glVertex2f(-0.6f, -0.5f);
@@ -59,37 +62,25 @@ ApiCall textureImage(GLenum target) {
 
 ApiCall texParameter(GLenum target, GLenum pname) {
     return [target, pname](Observations& o) {
-        GLfloat f[4] = {Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten};
-        GLint i[4] = {-12345, -12345, -12345, -12345};
-        glGetTexParameterfv(target, pname, f);
-        glGetTexParameteriv(target, pname, i);
-        o.floats("glGetTexParameterfv", f, 4);
-        o.ints("glGetTexParameteriv", i, 4);
+        o.floatsAndInts("glGetTexParameter", [&](GLfloat* v) { glGetTexParameterfv(target, pname, v); },
+                        [&](GLint* v) { glGetTexParameteriv(target, pname, v); });
     };
 }
 
 ApiCall texEnv(GLenum pname) {
     return [pname](Observations& o) {
-        GLfloat f[4] = {Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten};
-        GLint i[4] = {-12345, -12345, -12345, -12345};
-        glGetTexEnvfv(GL_TEXTURE_ENV, pname, f);
-        glGetTexEnviv(GL_TEXTURE_ENV, pname, i);
-        o.floats("glGetTexEnvfv", f, 4);
-        o.ints("glGetTexEnviv", i, 4);
+        o.floatsAndInts("glGetTexEnv", [&](GLfloat* v) { glGetTexEnvfv(GL_TEXTURE_ENV, pname, v); },
+                        [&](GLint* v) { glGetTexEnviv(GL_TEXTURE_ENV, pname, v); });
     };
 }
 
 ApiCall texGen(GLenum coord, GLenum pname) {
     return [coord, pname](Observations& o) {
         GLdouble d[4] = {-1, -1, -1, -1};
-        GLfloat f[4] = {Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten};
-        GLint i[4] = {-12345, -12345, -12345, -12345};
         glGetTexGendv(coord, pname, d);
-        glGetTexGenfv(coord, pname, f);
-        glGetTexGeniv(coord, pname, i);
         o.doubles("glGetTexGendv", d, 4);
-        o.floats("glGetTexGenfv", f, 4);
-        o.ints("glGetTexGeniv", i, 4);
+        o.floatsAndInts("glGetTexGen", [&](GLfloat* v) { glGetTexGenfv(coord, pname, v); },
+                        [&](GLint* v) { glGetTexGeniv(coord, pname, v); });
     };
 }
 
@@ -599,7 +590,7 @@ std::vector<ApiFunction> objectApiTable() {
          get({GL_INDEX_SHIFT}), false, resetPixelModes},
         {"glPixelMapfv", "pixels", API_CALL(glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 4, kMapF)),
          {API_CALL(glPixelMapfv(kBad, 4, kMapF)), API_CALL(glPixelMapfv(GL_PIXEL_MAP_R_TO_R, -1, kMapF)),
-          API_CALL(glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 300, kMapF)), API_CALL(glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 3, kMapF))},
+          API_CALL(glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 300, kLongF)), API_CALL(glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 3, kMapF))},
          pixelMap(GL_PIXEL_MAP_R_TO_R), false, resetPixelModes},
         {"glPixelMapuiv", "pixels", API_CALL(glPixelMapuiv(GL_PIXEL_MAP_I_TO_I, 4, kMapUi)),
          {API_CALL(glPixelMapuiv(kBad, 4, kMapUi)), API_CALL(glPixelMapuiv(GL_PIXEL_MAP_I_TO_G, 3, kMapUi))},
@@ -662,7 +653,7 @@ std::vector<ApiFunction> objectApiTable() {
          {notCompiled(API_CALL(glMap1f(kBad, 0.0f, 1.0f, 3, 4, kCurve))), API_CALL(glMap1f(GL_MAP1_VERTEX_3, 1.0f, 1.0f, 3, 4, kCurve)),
           notCompiled(API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 2, 4, kCurve))),
           API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 0, kCurve)),
-          API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 100, kCurve))},
+          API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 100, kLongF))},
          mapState(GL_MAP1_COLOR_4)},
         {"glMap1d", "eval", API_CALL(glMap1d(GL_MAP1_VERTEX_3, -1.0, 1.0, 3, 4, kCurveD)),
          {API_CALL(glMap1d(GL_MAP1_VERTEX_3, 0.5, 0.5, 3, 4, kCurveD)), notCompiled(API_CALL(glMap1d(kBad, 0.0, 1.0, 3, 4, kCurveD)))},
@@ -681,7 +672,7 @@ std::vector<ApiFunction> objectApiTable() {
           API_CALL(glMap2f(GL_MAP2_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 3, 0.0f, 1.0f, 1, 2, kCurve))},
          mapState(GL_MAP1_VERTEX_3)},
         {"glMap2d", "eval", API_CALL(glMap2d(GL_MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 2, kCurveD)),
-         {API_CALL(glMap2d(GL_MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 99, kCurveD)),
+         {API_CALL(glMap2d(GL_MAP2_VERTEX_3, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 99, kLongD)),
           API_CALL(glMap2d(kBad, 0.0, 1.0, 3, 2, 0.0, 1.0, 6, 2, kCurveD)),
           API_CALL(glMap2d(GL_MAP2_VERTEX_3, 0.0, 0.0, 3, 2, 0.0, 1.0, 6, 2, kCurveD))},
          mapState(GL_MAP2_VERTEX_3)},

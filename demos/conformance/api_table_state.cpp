@@ -14,22 +14,13 @@ constexpr GLenum kBad = kBadEnum;
 // glGetLightfv/iv and glGetMaterialfv/iv answers.
 ApiCall light(GLenum l, GLenum pname) {
     return [l, pname](Observations& o) {
-        GLfloat f[4] = {Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten};
-        GLint i[4] = {-12345, -12345, -12345, -12345};
-        glGetLightfv(l, pname, f);
-        glGetLightiv(l, pname, i);
-        o.floats("glGetLightfv", f, 4);
-        o.ints("glGetLightiv", i, 4);
+        o.floatsAndInts("glGetLight", [&](GLfloat* v) { glGetLightfv(l, pname, v); }, [&](GLint* v) { glGetLightiv(l, pname, v); });
     };
 }
 ApiCall material(GLenum face, GLenum pname) {
     return [face, pname](Observations& o) {
-        GLfloat f[4] = {Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten};
-        GLint i[4] = {-12345, -12345, -12345, -12345};
-        glGetMaterialfv(face, pname, f);
-        glGetMaterialiv(face, pname, i);
-        o.floats("glGetMaterialfv", f, 4);
-        o.ints("glGetMaterialiv", i, 4);
+        o.floatsAndInts("glGetMaterial", [&](GLfloat* v) { glGetMaterialfv(face, pname, v); },
+                        [&](GLint* v) { glGetMaterialiv(face, pname, v); });
     };
 }
 

@@ -69,6 +69,17 @@ void Observations::bytes(const std::string& what, const GLubyte* values, std::si
 
 void Observations::value(const std::string& what, long long v) { lines_.push_back(what + ": " + std::to_string(v)); }
 
+void Observations::floatsAndInts(const std::string& name, const std::function<void(GLfloat*)>& fv,
+                                 const std::function<void(GLint*)>& iv) {
+    GLfloat f[4] = {kUnwritten, kUnwritten, kUnwritten, kUnwritten};
+    GLint i[4];
+    std::fill(std::begin(i), std::end(i), static_cast<GLint>(kUnwritten));
+    fv(f);
+    iv(i);
+    floats(name + "fv", f, 4);
+    ints(name + "iv", i, 4);
+}
+
 void Observations::get(std::initializer_list<GLenum> pnames) {
     for (GLenum pname : pnames) {
         GLfloat v[16];

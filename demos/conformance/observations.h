@@ -5,6 +5,7 @@
 #include <glad/gl.h>
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ public:
     void uints(const std::string& what, const GLuint* values, std::size_t count);
     void bytes(const std::string& what, const GLubyte* values, std::size_t count);
     void value(const std::string& what, long long v);
+
+    // A query's float and integer forms (`name` + "fv", "iv"), each into 4 unwritten values.
+    void floatsAndInts(const std::string& name, const std::function<void(GLfloat*)>& fv, const std::function<void(GLint*)>& iv);
 
     // glGetFloatv of each pname into a fresh array.
     void get(std::initializer_list<GLenum> pnames);
