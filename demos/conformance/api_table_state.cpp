@@ -2,6 +2,7 @@
 // per-fragment operations and buffers, the attribute stack and the plain queries.
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <string>
 
 #include "api_table.h"
@@ -68,6 +69,39 @@ ApiCall drawn(std::vector<unsigned> pnames) {
     };
 }
 
+// glGetBooleanv, glGetDoublev, glGetIntegerv of `pname`, into 16 values marked unwritten.
+ApiCall getBooleans(GLenum pname) {
+    return [pname](Observations& o) {
+        GLboolean b[16];
+        std::fill(std::begin(b), std::end(b), GLubyte{0xA5});
+        glGetBooleanv(pname, b);
+        o.bytes("glGetBooleanv", b, 16);
+    };
+}
+ApiCall getDoubles(GLenum pname) {
+    return [pname](Observations& o) {
+        GLdouble d[16];
+        std::fill(std::begin(d), std::end(d), Observations::kUnwritten);
+        glGetDoublev(pname, d);
+        o.doubles("glGetDoublev", d, 16);
+    };
+}
+ApiCall getIntegers(GLenum pname) {
+    return [pname](Observations& o) {
+        GLint v[16];
+        std::fill(std::begin(v), std::end(v), static_cast<GLint>(Observations::kUnwritten));
+        glGetIntegerv(pname, v);
+        o.ints("glGetIntegerv", v, 16);
+    };
+}
+ApiCall clipPlane(GLenum plane) {
+    return [plane](Observations& o) {
+        GLdouble eq[4] = {-1, -1, -1, -1};
+        glGetClipPlane(plane, eq);
+        o.doubles("glGetClipPlane", eq, 4);
+    };
+}
+
 const GLdouble kMatrixD[16] = {1, 0.5, 0, 0, -0.25, 1, 0, 0, 0, 0, 1, 0, 0.125, -0.25, 0, 1};
 const GLfloat kMatrixF[16] = {0.5f, 0, 0, 0, 0, 0.75f, 0, 0, 0, 0, 1, 0, 0.25f, 0.125f, 0, 1};
 const GLfloat kColor[4] = {0.2f, 0.4f, 0.6f, 0.8f};
@@ -94,43 +128,10 @@ std::vector<ApiFunction> stateApiTable() {
          false, API_CALL(glEnable(GL_DITHER))},
         {"glIsEnabled", "enable", [](Observations& o) { o.value("glIsEnabled(GL_DITHER)", glIsEnabled(GL_DITHER)); },
          {[](Observations& o) { o.value("glIsEnabled(bad)", glIsEnabled(kBad)); }}},
-        {"glGetBooleanv", "query",
-         [](Observations& o) {
-             GLboolean b[16];
-             std::fill(std::begin(b), std::end(b), GLubyte{0xA5});
-             glGetBooleanv(GL_COLOR_WRITEMASK, b);
-             o.bytes("glGetBooleanv", b, 16);
-         },
-         {[](Observations& o) {
-             GLboolean b[4] = {0xA5, 0xA5, 0xA5, 0xA5};
-             glGetBooleanv(kBad, b);
-             o.bytes("glGetBooleanv(bad)", b, 4);
-         }}},
-        {"glGetDoublev", "query",
-         [](Observations& o) {
-             GLdouble d[16];
-             std::fill(std::begin(d), std::end(d), Observations::kUnwritten);
-             glGetDoublev(GL_DEPTH_RANGE, d);
-             o.doubles("glGetDoublev", d, 16);
-         },
-         {[](Observations& o) {
-             GLdouble d[4] = {Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten, Observations::kUnwritten};
-             glGetDoublev(kBad, d);
-             o.doubles("glGetDoublev(bad)", d, 4);
-         }}},
+        {"glGetBooleanv", "query", getBooleans(GL_COLOR_WRITEMASK), {getBooleans(kBad)}},
+        {"glGetDoublev", "query", getDoubles(GL_DEPTH_RANGE), {getDoubles(kBad)}},
         {"glGetFloatv", "query", get({GL_COLOR_CLEAR_VALUE}), {get({kBad})}},
-        {"glGetIntegerv", "query",
-         [](Observations& o) {
-             GLint v[16];
-             std::fill(std::begin(v), std::end(v), -12345);
-             glGetIntegerv(GL_VIEWPORT, v);
-             o.ints("glGetIntegerv", v, 16);
-         },
-         {[](Observations& o) {
-             GLint v[4] = {-12345, -12345, -12345, -12345};
-             glGetIntegerv(kBad, v);
-             o.ints("glGetIntegerv(bad)", v, 4);
-         }}},
+        {"glGetIntegerv", "query", getIntegers(GL_VIEWPORT), {getIntegers(kBad)}},
         // glGetError inside glBegin/glEnd is itself the error (answering 0 there).
         {"glGetError", "query", [](Observations& o) { o.value("glGetError", glGetError()); }},
         // The strings differ between implementations: whether there is one is compared.
@@ -180,23 +181,11 @@ std::vector<ApiFunction> stateApiTable() {
         {"glClipPlane", "raster", API_CALL(glClipPlane(GL_CLIP_PLANE2, kPlane); glEnable(GL_CLIP_PLANE2)),
          {API_CALL(glClipPlane(kBad, kPlane)), API_CALL(glClipPlane(GL_CLIP_PLANE0 + 8, kPlane))},
          [](Observations& o) {
-             GLdouble eq[4] = {-1, -1, -1, -1};
-             glGetClipPlane(GL_CLIP_PLANE2, eq);
-             o.doubles("glGetClipPlane", eq, 4);
+             clipPlane(GL_CLIP_PLANE2)(o);
              triangle(o);
          },
          false, API_CALL(glDisable(GL_CLIP_PLANE2))},
-        {"glGetClipPlane", "raster",
-         [](Observations& o) {
-             GLdouble eq[4] = {-1, -1, -1, -1};
-             glGetClipPlane(GL_CLIP_PLANE0, eq);
-             o.doubles("glGetClipPlane", eq, 4);
-         },
-         {[](Observations& o) {
-             GLdouble eq[4] = {-1, -1, -1, -1};
-             glGetClipPlane(kBad, eq);
-             o.doubles("glGetClipPlane(bad)", eq, 4);
-         }}},
+        {"glGetClipPlane", "raster", clipPlane(GL_CLIP_PLANE0), {clipPlane(kBad)}},
 
         // Matrices.
         {"glMatrixMode", "matrix", API_CALL(glMatrixMode(GL_TEXTURE)), {API_CALL(glMatrixMode(kBad))}, get({GL_MATRIX_MODE}), false,
