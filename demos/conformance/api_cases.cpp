@@ -1,6 +1,7 @@
 // Turns the API table (api_table_*.cpp) into conformance cases: per row, the valid calls, each
-// error call and, for a function the spec forbids between glBegin and glEnd, the valid calls
-// there, each followed by glGetError and the row's queries.
+// error call, for a function the spec forbids between glBegin and glEnd the valid calls there,
+// and each call compiled into a display list and run; each followed by glGetError and the row's
+// queries.
 #include <glad/gl.h>
 #include <scene.h>
 
@@ -45,9 +46,8 @@ void runRow(const ApiFunction& f, Observations& o) {
         if (i == 0 ? !f.validCompiled : !f.errors[i - 1].compiled) continue;
         const ApiCall& call = i == 0 ? f.valid : f.errors[i - 1].call;
         glNewList(kList, GL_COMPILE);
-        errorCall = i > 0;
-        call(o);
-        errorCall = false;
+        if (i > 0) asErrorCall(call, o);
+        else call(o);
         glEndList();
         o.error("compiled");
         glCallList(kList);
