@@ -66,7 +66,7 @@ bool inErrorCall() { return errorCall; }
 
 std::vector<Case> apiCases() {
     std::vector<ApiFunction> rows = vertexApiTable();
-    for (auto* table : {stateApiTable, objectApiTable}) {
+    for (auto* table : {stateApiTable, textureApiTable, objectApiTable}) {
         std::vector<ApiFunction> more = table();
         rows.insert(rows.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
     }

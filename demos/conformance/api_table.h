@@ -53,6 +53,7 @@ bool inErrorCall();
 
 std::vector<ApiFunction> vertexApiTable();     // glVertex, glColor, glNormal, glTexCoord, glIndex, glRasterPos, glRect, glEdgeFlag, glEval*
 std::vector<ApiFunction> stateApiTable();      // enables, modes, matrices, lighting, fog, per-fragment state
-std::vector<ApiFunction> objectApiTable();     // textures, lists, arrays, pixels, selection, feedback, evaluators, queries
+std::vector<ApiFunction> textureApiTable();    // texture objects, images, parameters, environment, coordinate generation
+std::vector<ApiFunction> objectApiTable();     // glBegin/glEnd, lists, arrays, pixels, selection, feedback, evaluators
 
 }  // namespace conformance

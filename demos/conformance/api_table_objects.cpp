@@ -1,5 +1,5 @@
-// The API table's object and image functions: glBegin/glEnd, textures, display lists, vertex
-// arrays, pixel rectangles and maps, selection and feedback, evaluators.
+// The API table's object and image functions: glBegin/glEnd, display lists, vertex arrays,
+// pixel rectangles and maps, selection and feedback, evaluators.
 #include <glad/gl.h>
 
 #include <algorithm>
@@ -29,59 +29,6 @@ void triangleVertices() {
     glVertex2f(-0.6f, -0.5f);
     glVertex2f(0.7f, -0.4f);
     glVertex2f(0.0f, 0.6f);
-}
-
-// A 2D texture of 4x4 texels bound to the name `name`.
-void texture2D(GLuint name) {
-    glBindTexture(GL_TEXTURE_2D, name);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-}
-
-void deleteTextures(Observations&) {
-    GLuint names[16];
-    for (GLuint i = 0; i < 16; ++i) names[i] = i + 1;
-    glDeleteTextures(16, names);
-    glBindTexture(GL_TEXTURE_1D, 0);
-    glBindTexture(GL_TEXTURE_2D, 0);
-}
-
-// The bound 2D (or 1D) texture's level 0: its size, format and texels.
-ApiCall textureImage(GLenum target) {
-    return [target](Observations& o) {
-        for (GLenum pname : {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_BORDER, GL_TEXTURE_RED_SIZE}) {
-            GLint v = -12345;
-            glGetTexLevelParameteriv(target, 0, pname, &v);
-            o.value("level 0 parameter " + std::to_string(pname), v);
-        }
-        GLubyte back[8 * 8 * 4];
-        std::fill(std::begin(back), std::end(back), GLubyte{0xA5});
-        glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
-        o.bytes("glGetTexImage", back, sizeof back);
-    };
-}
-
-ApiCall texParameter(GLenum target, GLenum pname) {
-    return [target, pname](Observations& o) {
-        o.floatsAndInts("glGetTexParameter", [&](GLfloat* v) { glGetTexParameterfv(target, pname, v); },
-                        [&](GLint* v) { glGetTexParameteriv(target, pname, v); });
-    };
-}
-
-ApiCall texEnv(GLenum pname) {
-    return [pname](Observations& o) {
-        o.floatsAndInts("glGetTexEnv", [&](GLfloat* v) { glGetTexEnvfv(GL_TEXTURE_ENV, pname, v); },
-                        [&](GLint* v) { glGetTexEnviv(GL_TEXTURE_ENV, pname, v); });
-    };
-}
-
-ApiCall texGen(GLenum coord, GLenum pname) {
-    return [coord, pname](Observations& o) {
-        GLdouble d[4] = {-1, -1, -1, -1};
-        glGetTexGendv(coord, pname, d);
-        o.doubles("glGetTexGendv", d, 4);
-        o.floatsAndInts("glGetTexGen", [&](GLfloat* v) { glGetTexGenfv(coord, pname, v); },
-                        [&](GLint* v) { glGetTexGeniv(coord, pname, v); });
-    };
 }
 
 void deleteLists(Observations&) {
@@ -226,12 +173,6 @@ void noCurve(Observations&) {
 
 std::vector<ApiFunction> objectApiTable() {
     for (std::size_t i = 0; i < sizeof texels; ++i) texels[i] = static_cast<GLubyte>(i * 29 + 3);
-    static const GLuint kNames[2] = {7, 0}, kUnknown[1] = {999};
-    static const GLclampf kPriority[1] = {0.25f};
-    static const GLfloat kParamsF[4] = {0.1f, 0.2f, 0.3f, 0.4f};
-    static const GLint kParamsI[4] = {GL_NEAREST, 0, 0, 0};
-    static const GLdouble kPlaneD[4] = {1.0, 0.5, -0.25, 2.0};
-    static const GLint kPlaneI[4] = {1, 2, 3, 4};
     static const GLubyte kListNames[2] = {1, 2};
     static const GLboolean kFlags[3] = {GL_TRUE, GL_FALSE, GL_TRUE};
     static const GLint kIndexArray[3] = {1, 2, 3};
@@ -244,225 +185,6 @@ std::vector<ApiFunction> objectApiTable() {
          {API_CALL(glBegin(kBad)), API_CALL(glBegin(GL_POINTS); glBegin(GL_LINES); glEnd())}, {}, true},
         {"glEnd", "begin", API_CALL(glBegin(GL_LINE_LOOP); triangleVertices(); glEnd()), {API_CALL(glEnd())}, {}, true},
 
-        // Texture objects and images.
-        {"glGenTextures", "texture",
-         [](Observations& o) {
-             GLuint names[3] = {0, 0, 0};
-             glGenTextures(3, names);
-             o.uints("glGenTextures", names, 3);
-         },
-         {[](Observations&) {
-             GLuint names[1] = {0};
-             glGenTextures(-1, names);
-         }},
-         {}, false, deleteTextures},
-        {"glBindTexture", "texture", API_CALL(texture2D(5)), {API_CALL(glBindTexture(kBad, 5)), API_CALL(glBindTexture(GL_TEXTURE_1D, 5))},
-         [](Observations& o) {
-             o.get({GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING_2D});
-             o.value("glIsTexture(5)", glIsTexture(5));
-         },
-         false, deleteTextures},
-        {"glDeleteTextures", "texture", API_CALL(texture2D(6); const GLuint n[1] = {6}; glDeleteTextures(1, n)),
-         {API_CALL(const GLuint n[1] = {6}; glDeleteTextures(-1, n))},
-         [](Observations& o) {
-             o.get({GL_TEXTURE_BINDING_2D});
-             o.value("glIsTexture(6)", glIsTexture(6));
-         },
-         false, deleteTextures},
-        {"glIsTexture", "texture",
-         [](Observations& o) {
-             texture2D(3);
-             o.value("glIsTexture(0)", glIsTexture(0));
-             o.value("glIsTexture(3)", glIsTexture(3));
-             o.value("glIsTexture(4)", glIsTexture(4));
-         },
-         {}, {}, false, deleteTextures},
-        {"glAreTexturesResident", "texture",
-         [](Observations& o) {
-             texture2D(7);
-             GLboolean resident[2] = {0xA5, 0xA5};
-             o.value("glAreTexturesResident", glAreTexturesResident(1, kNames, resident));
-             o.bytes("residences", resident, 2);
-         },
-         {API_CALL(GLboolean r[2]; glAreTexturesResident(-1, kNames, r)), API_CALL(GLboolean r[2]; glAreTexturesResident(2, kNames, r)),
-          API_CALL(GLboolean r[2]; glAreTexturesResident(1, kUnknown, r))},
-         {}, false, deleteTextures},
-        {"glPrioritizeTextures", "texture", API_CALL(texture2D(7); glPrioritizeTextures(1, kNames, kPriority)),
-         {notCompiled(API_CALL(glPrioritizeTextures(-1, kNames, kPriority)))}, get({GL_TEXTURE_BINDING_2D}), false, deleteTextures},
-        // Compiled into a list, Mesa's glPrioritizeTextures keeps one entry per texture: a negative
-        // count leaves nothing, and no error when the list runs. An expected difference.
-        {"glPrioritizeTextures:in_list", "texture", API_CALL(texture2D(7); glPrioritizeTextures(1, kNames, kPriority)),
-         {API_CALL(glPrioritizeTextures(-1, kNames, kPriority))}, get({GL_TEXTURE_BINDING_2D}), false, deleteTextures},
-        // The spec rounds a priority asked as an integer, Mesa maps [0, 1] to [0, INT_MAX]: an expected difference.
-        {"glGetTexParameteriv:priority", "texture", API_CALL(texture2D(7); glPrioritizeTextures(1, kNames, kPriority)), {},
-         texParameter(GL_TEXTURE_2D, GL_TEXTURE_PRIORITY), false, deleteTextures},
-        {"glTexImage1D", "texture", API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-         {API_CALL(glTexImage1D(kBad, 0, GL_RGB, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage1D(GL_TEXTURE_1D, -1, GL_RGB, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, kBad, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, -8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 8, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 8, 0, kBad, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 8, 0, GL_RGBA, kBad, texels)),
-          API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 8, 0, GL_RGBA, GL_BITMAP, texels))},
-         textureImage(GL_TEXTURE_1D), false, deleteTextures},
-        {"glTexImage2D", "texture", API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, 8, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-         {API_CALL(glTexImage2D(kBad, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, -1, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, kBad, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, -4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, -1, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, kBad, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, kBad, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_BITMAP, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 20, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 40000, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr))},
-         textureImage(GL_TEXTURE_2D), false, deleteTextures},
-        {"glTexSubImage1D", "texture",
-         API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-                  glTexSubImage1D(GL_TEXTURE_1D, 0, 2, 3, GL_RGB, GL_UNSIGNED_BYTE, texels + 100)),
-         {API_CALL(glTexSubImage1D(kBad, 0, 2, 3, GL_RGB, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage1D(GL_TEXTURE_1D, -1, 2, 3, GL_RGB, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage1D(GL_TEXTURE_1D, 0, -1, 3, GL_RGB, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage1D(GL_TEXTURE_1D, 0, 6, 3, GL_RGB, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage1D(GL_TEXTURE_1D, 0, 2, -3, GL_RGB, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage1D(GL_TEXTURE_1D, 0, 2, 3, kBad, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage1D(GL_TEXTURE_1D, 0, 2, 3, GL_RGB, kBad, texels)),
-          API_CALL(glTexSubImage1D(GL_TEXTURE_1D, 2, 0, 1, GL_RGB, GL_UNSIGNED_BYTE, texels))},
-         textureImage(GL_TEXTURE_1D), false, deleteTextures},
-        {"glTexSubImage2D", "texture",
-         API_CALL(texture2D(2); glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 3, GL_LUMINANCE, GL_UNSIGNED_BYTE, texels + 60)),
-         {API_CALL(glTexSubImage2D(kBad, 0, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage2D(GL_TEXTURE_2D, -1, 1, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage2D(GL_TEXTURE_2D, 0, 1, -1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage2D(GL_TEXTURE_2D, 0, 3, 1, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, -2, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, kBad, GL_UNSIGNED_BYTE, texels)),
-          API_CALL(glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_RGBA, kBad, texels)),
-          API_CALL(glTexSubImage2D(GL_TEXTURE_2D, 1, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels))},
-         textureImage(GL_TEXTURE_2D), false, deleteTextures},
-        {"glCopyTexImage1D", "texture",
-         API_CALL(glClearColor(0.2f, 0.4f, 0.6f, 0.8f); glClear(GL_COLOR_BUFFER_BIT);
-                  glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 3, 4, 8, 0)),
-         {API_CALL(glCopyTexImage1D(kBad, 0, GL_RGB, 0, 0, 8, 0)), API_CALL(glCopyTexImage1D(GL_TEXTURE_1D, -1, GL_RGB, 0, 0, 8, 0)),
-          API_CALL(glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 0, 0, -8, 0)),
-          API_CALL(glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 0, 0, 8, 2))},
-         textureImage(GL_TEXTURE_1D), false, deleteTextures},
-        {"glCopyTexImage2D", "texture",
-         API_CALL(glClearColor(0.6f, 0.4f, 0.2f, 1.0f); glClear(GL_COLOR_BUFFER_BIT);
-                  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 3, 8, 4, 0)),
-         {API_CALL(glCopyTexImage2D(kBad, 0, GL_RGB, 0, 0, 8, 8, 0)), API_CALL(glCopyTexImage2D(GL_TEXTURE_2D, -1, GL_RGB, 0, 0, 8, 8, 0)),
-          API_CALL(glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 8, -8, 0)),
-          API_CALL(glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 8, 8, 3))},
-         textureImage(GL_TEXTURE_2D), false, deleteTextures},
-        // The spec makes a bad internal format GL_INVALID_VALUE (as for glTexImage), Mesa's
-        // glCopyTexImage GL_INVALID_ENUM: cases of their own, expected differences.
-        {"glCopyTexImage1D:internal_format", "texture", API_CALL(glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 0, 0, 4, 0)),
-         {API_CALL(glCopyTexImage1D(GL_TEXTURE_1D, 0, kBad, 0, 0, 8, 0))}, textureImage(GL_TEXTURE_1D), false, deleteTextures},
-        {"glCopyTexImage2D:internal_format", "texture", API_CALL(glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 0, 0, 4, 4, 0)),
-         {API_CALL(glCopyTexImage2D(GL_TEXTURE_2D, 0, kBad, 0, 0, 8, 8, 0))}, textureImage(GL_TEXTURE_2D), false, deleteTextures},
-        {"glCopyTexSubImage1D", "texture",
-         API_CALL(glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
-                  glClearColor(0.1f, 0.7f, 0.3f, 0.5f); glClear(GL_COLOR_BUFFER_BIT); glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 2, 5, 5, 3)),
-         {API_CALL(glCopyTexSubImage1D(kBad, 0, 0, 0, 0, 2)), API_CALL(glCopyTexSubImage1D(GL_TEXTURE_1D, -1, 0, 0, 0, 2)),
-          API_CALL(glCopyTexSubImage1D(GL_TEXTURE_1D, 0, -1, 0, 0, 2)), API_CALL(glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 7, 0, 0, 2)),
-          API_CALL(glCopyTexSubImage1D(GL_TEXTURE_1D, 3, 0, 0, 0, 1))},
-         textureImage(GL_TEXTURE_1D), false, deleteTextures},
-        {"glCopyTexSubImage2D", "texture",
-         API_CALL(texture2D(4); glClearColor(0.9f, 0.1f, 0.5f, 0.25f); glClear(GL_COLOR_BUFFER_BIT);
-                  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 1, 2, 5, 5, 3, 2)),
-         {API_CALL(glCopyTexSubImage2D(kBad, 0, 0, 0, 0, 0, 2, 2)), API_CALL(glCopyTexSubImage2D(GL_TEXTURE_2D, -1, 0, 0, 0, 0, 2, 2)),
-          API_CALL(glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, -1, 0, 0, 2, 2)), API_CALL(glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 3, 0, 0, 0, 2, 2)),
-          API_CALL(glCopyTexSubImage2D(GL_TEXTURE_2D, 2, 0, 0, 0, 0, 1, 1))},
-         textureImage(GL_TEXTURE_2D), false, deleteTextures},
-        {"glGetTexImage", "texture", API_CALL(texture2D(8)),
-         {API_CALL(GLubyte b[64]; glGetTexImage(kBad, 0, GL_RGBA, GL_UNSIGNED_BYTE, b)),
-          API_CALL(GLubyte b[64]; glGetTexImage(GL_TEXTURE_2D, -1, GL_RGBA, GL_UNSIGNED_BYTE, b)),
-          API_CALL(GLubyte b[64]; glGetTexImage(GL_TEXTURE_2D, 0, kBad, GL_UNSIGNED_BYTE, b)),
-          API_CALL(GLubyte b[64]; glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, kBad, b))},
-         textureImage(GL_TEXTURE_2D), false, deleteTextures},
-        {"glGetTexLevelParameterfv", "texture",
-         [](Observations& o) {
-             texture2D(9);
-             GLfloat v[2] = {Observations::kUnwritten, Observations::kUnwritten};
-             glGetTexLevelParameterfv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, v);
-             o.floats("width", v, 2);
-         },
-         {API_CALL(GLfloat v[2]; glGetTexLevelParameterfv(kBad, 0, GL_TEXTURE_WIDTH, v)),
-          API_CALL(GLfloat v[2]; glGetTexLevelParameterfv(GL_TEXTURE_2D, -1, GL_TEXTURE_WIDTH, v)),
-          API_CALL(GLfloat v[2]; glGetTexLevelParameterfv(GL_TEXTURE_2D, 0, kBad, v)),
-          API_CALL(GLfloat v[2]; glGetTexLevelParameterfv(GL_TEXTURE_2D, 20, GL_TEXTURE_WIDTH, v))},
-         {}, false, deleteTextures},
-        {"glGetTexLevelParameteriv", "texture", API_CALL(texture2D(9)),
-         {API_CALL(GLint v[2]; glGetTexLevelParameteriv(kBad, 0, GL_TEXTURE_WIDTH, v)),
-          API_CALL(GLint v[2]; glGetTexLevelParameteriv(GL_TEXTURE_2D, -1, GL_TEXTURE_WIDTH, v)),
-          API_CALL(GLint v[2]; glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, kBad, v))},
-         textureImage(GL_TEXTURE_2D), false, deleteTextures},
-        {"glTexParameterf", "texture", API_CALL(texture2D(10); glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP)),
-         {API_CALL(glTexParameterf(kBad, GL_TEXTURE_WRAP_S, GL_CLAMP)), API_CALL(glTexParameterf(GL_TEXTURE_2D, kBad, GL_CLAMP)),
-          API_CALL(glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_LINEAR))},
-         texParameter(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S), false, deleteTextures},
-        {"glTexParameteri", "texture", API_CALL(texture2D(10); glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR)),
-         {API_CALL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_CLAMP)), API_CALL(glTexParameteri(kBad, GL_TEXTURE_MIN_FILTER, GL_LINEAR)),
-          API_CALL(glTexParameteri(GL_TEXTURE_2D, kBad, GL_LINEAR)),
-          API_CALL(glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST_MIPMAP_NEAREST))},
-         texParameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER), false, deleteTextures},
-        {"glTexParameterfv", "texture", API_CALL(texture2D(10); glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, kParamsF)),
-         {API_CALL(glTexParameterfv(GL_TEXTURE_2D, kBad, kParamsF)), API_CALL(glTexParameterfv(kBad, GL_TEXTURE_BORDER_COLOR, kParamsF))}, texParameter(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR), false,
-         deleteTextures},
-        {"glTexParameteriv", "texture", API_CALL(texture2D(10); glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, kParamsI)),
-         {API_CALL(glTexParameteriv(kBad, GL_TEXTURE_MAG_FILTER, kParamsI)), API_CALL(glTexParameteriv(GL_TEXTURE_2D, kBad, kParamsI))}, texParameter(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER), false,
-         deleteTextures},
-        {"glGetTexParameterfv", "texture", texParameter(GL_TEXTURE_1D, GL_TEXTURE_WRAP_T),
-         {API_CALL(GLfloat f[4]; glGetTexParameterfv(kBad, GL_TEXTURE_WRAP_T, f)),
-          API_CALL(GLfloat f[4]; glGetTexParameterfv(GL_TEXTURE_2D, kBad, f))}},
-        {"glGetTexParameteriv", "texture", texParameter(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER),
-         {API_CALL(GLint i[4]; glGetTexParameteriv(kBad, GL_TEXTURE_WRAP_T, i)),
-          API_CALL(GLint i[4]; glGetTexParameteriv(GL_TEXTURE_2D, kBad, i))}},
-        {"glTexEnvf", "texture", API_CALL(glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL)),
-         {API_CALL(glTexEnvf(kBad, GL_TEXTURE_ENV_MODE, GL_DECAL)), API_CALL(glTexEnvf(GL_TEXTURE_ENV, kBad, GL_DECAL)),
-          API_CALL(glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_LINEAR))},
-         texEnv(GL_TEXTURE_ENV_MODE), false, API_CALL(glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE))},
-        {"glTexEnvi", "texture", API_CALL(glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND)),
-         {API_CALL(glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, kBad)), API_CALL(glTexEnvi(kBad, GL_TEXTURE_ENV_MODE, GL_BLEND)),
-          API_CALL(glTexEnvi(GL_TEXTURE_ENV, kBad, GL_BLEND))}, texEnv(GL_TEXTURE_ENV_MODE), false,
-         API_CALL(glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE))},
-        {"glTexEnvfv", "texture", API_CALL(glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, kParamsF)),
-         {API_CALL(glTexEnvfv(kBad, GL_TEXTURE_ENV_COLOR, kParamsF)), API_CALL(glTexEnvfv(GL_TEXTURE_ENV, kBad, kParamsF))}, texEnv(GL_TEXTURE_ENV_COLOR)},
-        {"glTexEnviv", "texture", API_CALL(glTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, kPlaneI)),
-         {API_CALL(glTexEnviv(GL_TEXTURE_ENV, kBad, kPlaneI)), API_CALL(glTexEnviv(kBad, GL_TEXTURE_ENV_COLOR, kPlaneI))}, texEnv(GL_TEXTURE_ENV_COLOR)},
-        {"glGetTexEnvfv", "texture", texEnv(GL_TEXTURE_ENV_MODE),
-         {API_CALL(GLfloat f[4]; glGetTexEnvfv(kBad, GL_TEXTURE_ENV_MODE, f)), API_CALL(GLfloat f[4]; glGetTexEnvfv(GL_TEXTURE_ENV, kBad, f))}},
-        {"glGetTexEnviv", "texture", texEnv(GL_TEXTURE_ENV_COLOR),
-         {API_CALL(GLint i[4]; glGetTexEnviv(kBad, GL_TEXTURE_ENV_MODE, i)), API_CALL(GLint i[4]; glGetTexEnviv(GL_TEXTURE_ENV, kBad, i))}},
-        {"glTexGeni", "texture", API_CALL(glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP)),
-         {API_CALL(glTexGeni(kBad, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP)), API_CALL(glTexGeni(GL_S, kBad, GL_SPHERE_MAP)),
-          API_CALL(glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, kBad)), API_CALL(glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP))},
-         texGen(GL_S, GL_TEXTURE_GEN_MODE)},
-        {"glTexGenf", "texture", API_CALL(glTexGenf(GL_T, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR)),
-         {API_CALL(glTexGenf(GL_T, GL_TEXTURE_GEN_MODE, GL_LINEAR)), API_CALL(glTexGenf(kBad, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR)),
-          API_CALL(glTexGenf(GL_T, kBad, GL_OBJECT_LINEAR))}, texGen(GL_T, GL_TEXTURE_GEN_MODE)},
-        {"glTexGend", "texture", API_CALL(glTexGend(GL_Q, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR)),
-         {API_CALL(glTexGend(GL_Q, kBad, GL_EYE_LINEAR)), API_CALL(glTexGend(kBad, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR)),
-          API_CALL(glTexGend(GL_Q, GL_TEXTURE_GEN_MODE, kBad))}, texGen(GL_Q, GL_TEXTURE_GEN_MODE)},
-        // Mesa takes a plane given to the scalar forms as (v, 0, 0, 0): its own case, an expected difference.
-        {"glTexGeni:plane", "texture", API_CALL(glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR)),
-         {API_CALL(glTexGeni(GL_S, GL_OBJECT_PLANE, 2)), API_CALL(glTexGenf(GL_S, GL_EYE_PLANE, 3.0f)),
-          API_CALL(glTexGend(GL_S, GL_OBJECT_PLANE, 4.0))},
-         [](Observations& o) {
-             texGen(GL_S, GL_OBJECT_PLANE)(o);
-             texGen(GL_S, GL_EYE_PLANE)(o);
-         }},
-        {"glTexGendv", "texture", API_CALL(glTexGendv(GL_R, GL_OBJECT_PLANE, kPlaneD)), {API_CALL(glTexGendv(GL_R, kBad, kPlaneD)), API_CALL(glTexGendv(kBad, GL_OBJECT_PLANE, kPlaneD))},
-         texGen(GL_R, GL_OBJECT_PLANE)},
-        {"glTexGenfv", "texture", API_CALL(glTexGenfv(GL_S, GL_EYE_PLANE, kParamsF)), {API_CALL(glTexGenfv(kBad, GL_EYE_PLANE, kParamsF)), API_CALL(glTexGenfv(GL_S, kBad, kParamsF))},
-         texGen(GL_S, GL_EYE_PLANE)},
-        {"glTexGeniv", "texture", API_CALL(glTexGeniv(GL_T, GL_OBJECT_PLANE, kPlaneI)), {API_CALL(glTexGeniv(GL_T, kBad, kPlaneI)), API_CALL(glTexGeniv(kBad, GL_OBJECT_PLANE, kPlaneI))},
-         texGen(GL_T, GL_OBJECT_PLANE)},
-        {"glGetTexGendv", "texture", texGen(GL_S, GL_EYE_PLANE), {API_CALL(GLdouble d[4]; glGetTexGendv(kBad, GL_EYE_PLANE, d)), API_CALL(GLdouble d[4]; glGetTexGendv(GL_S, kBad, d))}},
-        {"glGetTexGenfv", "texture", texGen(GL_T, GL_TEXTURE_GEN_MODE), {API_CALL(GLfloat f[4]; glGetTexGenfv(GL_T, kBad, f)), API_CALL(GLfloat f[4]; glGetTexGenfv(kBad, GL_EYE_PLANE, f))}},
-        {"glGetTexGeniv", "texture", texGen(GL_R, GL_OBJECT_PLANE), {API_CALL(GLint i[4]; glGetTexGeniv(kBad, GL_OBJECT_PLANE, i)), API_CALL(GLint i[4]; glGetTexGeniv(GL_R, kBad, i))}},
-
         // Display lists.
         {"glGenLists", "list", [](Observations& o) { o.value("glGenLists(3)", glGenLists(3)); },
          {[](Observations& o) { o.value("glGenLists(-1)", glGenLists(-1)); }}, {}, false, deleteLists},
@@ -470,8 +192,10 @@ std::vector<ApiFunction> objectApiTable() {
          {API_CALL(glNewList(0, GL_COMPILE)), API_CALL(glNewList(21, kBad)),
           API_CALL(glNewList(22, GL_COMPILE); glNewList(23, GL_COMPILE); glEndList())},
          listState, false, deleteLists},
-        {"glEndList", "list", API_CALL(rectangleList(20, GL_COMPILE_AND_EXECUTE)), {API_CALL(glEndList())}, listState, false, deleteLists},
-        {"glCallList", "list", API_CALL(rectangleList(20, GL_COMPILE); glTranslatef(0.3f, 0.2f, 0.0f); glCallList(20)), {}, listState,
+        {"glEndList", "list",
+         API_CALL(rectangleList(20, GL_COMPILE_AND_EXECUTE)), {API_CALL(glEndList())}, listState, false, deleteLists},
+        {"glCallList", "list",
+         API_CALL(rectangleList(20, GL_COMPILE); glTranslatef(0.3f, 0.2f, 0.0f); glCallList(20)), {}, listState,
          true, deleteLists},
         {"glCallLists", "list",
          API_CALL(rectangleList(20, GL_COMPILE); rectangleList(21, GL_COMPILE); glListBase(19);
@@ -480,7 +204,9 @@ std::vector<ApiFunction> objectApiTable() {
          deleteLists},
         {"glDeleteLists", "list", API_CALL(rectangleList(20, GL_COMPILE); glDeleteLists(20, 1)), {API_CALL(glDeleteLists(20, -1))},
          listState, false, deleteLists},
-        {"glIsList", "list", [](Observations& o) { rectangleList(20, GL_COMPILE); o.value("glIsList(20)", glIsList(20)); o.value("glIsList(0)", glIsList(0)); },
+        {"glIsList", "list",
+         [](Observations& o) { rectangleList(20, GL_COMPILE); o.value("glIsList(20)", glIsList(20)); o.value("glIsList(0)",
+         glIsList(0)); },
          {}, {}, false, deleteLists},
         {"glListBase", "list", API_CALL(glListBase(5)), {}, listState, false, deleteLists},
 
@@ -488,10 +214,12 @@ std::vector<ApiFunction> objectApiTable() {
         {"glVertexPointer", "array", API_CALL(glVertexPointer(2, GL_FLOAT, 8, kTriangle)),
          {API_CALL(glVertexPointer(1, GL_FLOAT, 0, kTriangle)), API_CALL(glVertexPointer(5, GL_FLOAT, 0, kTriangle)),
           API_CALL(glVertexPointer(2, kBad, 0, kTriangle)), API_CALL(glVertexPointer(2, GL_UNSIGNED_BYTE, 0, kTriangle))},
-         arrayState(GL_VERTEX_ARRAY, GL_VERTEX_ARRAY_POINTER, kTriangle, {GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE})},
+         arrayState(GL_VERTEX_ARRAY, GL_VERTEX_ARRAY_POINTER, kTriangle,
+         {GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE})},
         {"glColorPointer", "array", API_CALL(glColorPointer(4, GL_UNSIGNED_BYTE, 0, kColors)),
          {API_CALL(glColorPointer(2, GL_UNSIGNED_BYTE, 0, kColors)), API_CALL(glColorPointer(4, kBad, 0, kColors))},
-         arrayState(GL_COLOR_ARRAY, GL_COLOR_ARRAY_POINTER, kColors, {GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE})},
+         arrayState(GL_COLOR_ARRAY, GL_COLOR_ARRAY_POINTER, kColors,
+         {GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE})},
         {"glNormalPointer", "array", API_CALL(glNormalPointer(GL_FLOAT, 12, kInterleaved)),
          {API_CALL(glNormalPointer(GL_UNSIGNED_BYTE, 0, kInterleaved))},
          arrayState(GL_NORMAL_ARRAY, GL_NORMAL_ARRAY_POINTER, kInterleaved, {GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE})},
@@ -514,28 +242,34 @@ std::vector<ApiFunction> objectApiTable() {
         {"glNormalPointer:negative_stride", "array", API_CALL(glNormalPointer(GL_FLOAT, 0, kTriangle)),
          {API_CALL(glNormalPointer(GL_SHORT, -1, kInterleaved))}, get({GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE})},
         {"glTexCoordPointer:negative_stride", "array", API_CALL(glTexCoordPointer(3, GL_FLOAT, 0, kTriangle)),
-         {API_CALL(glTexCoordPointer(2, GL_FLOAT, -1, kInterleaved))}, get({GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_STRIDE})},
-        {"glEdgeFlagPointer:negative_stride", "array", API_CALL(glEdgeFlagPointer(0, kFlags)), {API_CALL(glEdgeFlagPointer(-1, kFlags))},
+         {API_CALL(glTexCoordPointer(2, GL_FLOAT, -1, kInterleaved))}, get({GL_TEXTURE_COORD_ARRAY_SIZE,
+          GL_TEXTURE_COORD_ARRAY_STRIDE})},
+        {"glEdgeFlagPointer:negative_stride", "array",
+         API_CALL(glEdgeFlagPointer(0, kFlags)), {API_CALL(glEdgeFlagPointer(-1, kFlags))},
          get({GL_EDGE_FLAG_ARRAY_STRIDE})},
         {"glIndexPointer:negative_stride", "array", API_CALL(glIndexPointer(GL_INT, 0, kIndexArray)),
          {API_CALL(glIndexPointer(GL_SHORT, -4, kIndexArray))}, get({GL_INDEX_ARRAY_TYPE, GL_INDEX_ARRAY_STRIDE})},
         {"glEnableClientState", "array", API_CALL(glEnableClientState(GL_NORMAL_ARRAY)), {API_CALL(glEnableClientState(kBad))},
          get({GL_NORMAL_ARRAY}), false, disableArrays},
-        {"glDisableClientState", "array", API_CALL(glEnableClientState(GL_EDGE_FLAG_ARRAY); glDisableClientState(GL_EDGE_FLAG_ARRAY)),
+        {"glDisableClientState", "array",
+         API_CALL(glEnableClientState(GL_EDGE_FLAG_ARRAY); glDisableClientState(GL_EDGE_FLAG_ARRAY)),
          {API_CALL(glDisableClientState(kBad))}, get({GL_EDGE_FLAG_ARRAY}), false, disableArrays},
-        {"glArrayElement", "array", API_CALL(vertexArrays(); glBegin(GL_TRIANGLES); glArrayElement(1); glArrayElement(2); glArrayElement(0); glEnd()),
+        {"glArrayElement", "array",
+         API_CALL(vertexArrays(); glBegin(GL_TRIANGLES); glArrayElement(1); glArrayElement(2); glArrayElement(0); glEnd()),
          {}, get({GL_CURRENT_COLOR}), true, disableArrays},
         {"glDrawArrays", "array", API_CALL(vertexArrays(); glDrawArrays(GL_TRIANGLES, 0, 3)),
          {API_CALL(glDrawArrays(kBad, 0, 3)), API_CALL(glDrawArrays(GL_TRIANGLES, 0, -1))}, get({GL_CURRENT_COLOR}), false,
          disableArrays},
         {"glDrawElements", "array", API_CALL(vertexArrays(); glDrawElements(GL_LINE_LOOP, 3, GL_UNSIGNED_SHORT, kIndices)),
-         {API_CALL(glDrawElements(kBad, 3, GL_UNSIGNED_SHORT, kIndices)), API_CALL(glDrawElements(GL_TRIANGLES, -1, GL_UNSIGNED_SHORT, kIndices)),
+         {API_CALL(glDrawElements(kBad, 3, GL_UNSIGNED_SHORT, kIndices)),
+          API_CALL(glDrawElements(GL_TRIANGLES, -1, GL_UNSIGNED_SHORT, kIndices)),
           notCompiled(API_CALL(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, kIndices)))},
          get({GL_CURRENT_COLOR}), false, disableArrays},
         // Compiled into a list, Mesa reports a bad index type as GL_INVALID_VALUE. An expected difference.
         {"glDrawElements:in_list", "array", API_CALL(vertexArrays(); glDrawElements(GL_POINTS, 3, GL_UNSIGNED_BYTE, kColors)),
          {API_CALL(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, kIndices))}, get({GL_CURRENT_COLOR}), false, disableArrays},
-        {"glInterleavedArrays", "array", API_CALL(glInterleavedArrays(GL_C3F_V3F, 0, kInterleaved); glDrawArrays(GL_TRIANGLES, 0, 3)),
+        {"glInterleavedArrays", "array",
+         API_CALL(glInterleavedArrays(GL_C3F_V3F, 0, kInterleaved); glDrawArrays(GL_TRIANGLES, 0, 3)),
          {API_CALL(glInterleavedArrays(kBad, 0, kInterleaved)), API_CALL(glInterleavedArrays(GL_C3F_V3F, -1, kInterleaved))},
          arrayState(GL_COLOR_ARRAY, GL_COLOR_ARRAY_POINTER, kInterleaved,
                     {GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_STRIDE, GL_VERTEX_ARRAY_STRIDE}),
@@ -548,7 +282,8 @@ std::vector<ApiFunction> objectApiTable() {
              o.value("pointer is the array", p == kCurve);
          },
          {API_CALL(void* p = nullptr; glGetPointerv(kBad, &p))}},
-        {"glPushClientAttrib", "array", API_CALL(glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS); glPixelStorei(GL_UNPACK_ALIGNMENT, 2)),
+        {"glPushClientAttrib", "array",
+         API_CALL(glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS); glPixelStorei(GL_UNPACK_ALIGNMENT, 2)),
          {API_CALL(for (int i = 0; i < 17; ++i) glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT))},
          get({GL_CLIENT_ATTRIB_STACK_DEPTH, GL_UNPACK_ALIGNMENT}), false,
          [](Observations& o) {
@@ -560,7 +295,8 @@ std::vector<ApiFunction> objectApiTable() {
          {API_CALL(glPopClientAttrib())}, get({GL_CLIENT_ATTRIB_STACK_DEPTH, GL_COLOR_ARRAY}), false, popClientAttribs},
 
         // Pixel rectangles, modes and maps.
-        {"glReadPixels", "pixels", API_CALL(glClearColor(0.3f, 0.5f, 0.7f, 0.9f); glClear(GL_COLOR_BUFFER_BIT); glRectf(-0.5f, -0.5f, 0.0f, 0.0f)),
+        {"glReadPixels", "pixels",
+         API_CALL(glClearColor(0.3f, 0.5f, 0.7f, 0.9f); glClear(GL_COLOR_BUFFER_BIT); glRectf(-0.5f, -0.5f, 0.0f, 0.0f)),
          {API_CALL(GLubyte b[64]; glReadPixels(0, 0, -1, 2, GL_RGBA, GL_UNSIGNED_BYTE, b)),
           API_CALL(GLubyte b[64]; glReadPixels(0, 0, 2, 2, kBad, GL_UNSIGNED_BYTE, b)),
           API_CALL(GLubyte b[64]; glReadPixels(0, 0, 2, 2, GL_RGBA, kBad, b)),
@@ -568,21 +304,26 @@ std::vector<ApiFunction> objectApiTable() {
           API_CALL(GLubyte b[64]; glReadPixels(0, 0, 2, 2, GL_RGBA, GL_BITMAP, b))},
          readPixels},
         {"glDrawPixels", "pixels", API_CALL(rasterAt(-0.5f, -0.25f); glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
-         {API_CALL(glDrawPixels(-1, 8, GL_RGBA, GL_UNSIGNED_BYTE, texels)), API_CALL(glDrawPixels(8, 8, kBad, GL_UNSIGNED_BYTE, texels)),
+         {API_CALL(glDrawPixels(-1, 8, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
+          API_CALL(glDrawPixels(8, 8, kBad, GL_UNSIGNED_BYTE, texels)),
           API_CALL(glDrawPixels(8, 8, GL_RGBA, kBad, texels)), API_CALL(glDrawPixels(8, 8, GL_RGBA, GL_BITMAP, texels))},
          readPixels},
-        {"glCopyPixels", "pixels", API_CALL(glRectf(-1.0f, -1.0f, -0.5f, -0.5f); rasterAt(0.0f, 0.0f); glCopyPixels(2, 2, 12, 9, GL_COLOR)),
+        {"glCopyPixels", "pixels",
+         API_CALL(glRectf(-1.0f, -1.0f, -0.5f, -0.5f); rasterAt(0.0f, 0.0f); glCopyPixels(2, 2, 12, 9, GL_COLOR)),
          {API_CALL(glCopyPixels(0, 0, -1, 4, GL_COLOR)), API_CALL(glCopyPixels(0, 0, 4, 4, kBad))}, readPixels},
         {"glBitmap", "pixels", API_CALL(rasterAt(-0.25f, -0.25f); glBitmap(8, 8, 1.5f, 2.0f, 9.0f, -3.0f, kBitmap)),
          {notCompiled(API_CALL(glBitmap(-1, 8, 0, 0, 0, 0, kBitmap))), notCompiled(API_CALL(glBitmap(8, -8, 0, 0, 0, 0, kBitmap)))},
          get({GL_CURRENT_RASTER_POSITION})},
-        {"glPixelZoom", "pixels", API_CALL(glPixelZoom(2.0f, -1.5f); rasterAt(-0.5f, 0.5f); glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
+        {"glPixelZoom", "pixels",
+         API_CALL(glPixelZoom(2.0f, -1.5f); rasterAt(-0.5f, 0.5f); glDrawPixels(4, 4, GL_RGBA, GL_UNSIGNED_BYTE, texels)),
          {}, get({GL_ZOOM_X, GL_ZOOM_Y}), false, resetPixelModes},
         {"glPixelStorei", "pixels", API_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 2)),
-         {API_CALL(glPixelStorei(kBad, 1)), API_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 3)), API_CALL(glPixelStorei(GL_UNPACK_ROW_LENGTH, -1))},
+         {API_CALL(glPixelStorei(kBad, 1)), API_CALL(glPixelStorei(GL_PACK_ALIGNMENT, 3)),
+          API_CALL(glPixelStorei(GL_UNPACK_ROW_LENGTH, -1))},
          get({GL_PACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH}), false, resetPixelModes},
         {"glPixelStoref", "pixels", API_CALL(glPixelStoref(GL_UNPACK_ROW_LENGTH, 3.0f)),
-         {API_CALL(glPixelStoref(kBad, 1.0f)), API_CALL(glPixelStoref(GL_UNPACK_SKIP_ROWS, -2.0f))}, get({GL_UNPACK_ROW_LENGTH}), false,
+         {API_CALL(glPixelStoref(kBad, 1.0f)),
+          API_CALL(glPixelStoref(GL_UNPACK_SKIP_ROWS, -2.0f))}, get({GL_UNPACK_ROW_LENGTH}), false,
          resetPixelModes},
         {"glPixelTransferf", "pixels", API_CALL(glPixelTransferf(GL_RED_SCALE, 0.5f)), {API_CALL(glPixelTransferf(kBad, 1.0f))},
          get({GL_RED_SCALE}), false, resetPixelModes},
@@ -613,12 +354,15 @@ std::vector<ApiFunction> objectApiTable() {
          {}, false, renderMode},
         {"glRenderMode", "select", [](Observations& o) { selectTriangle(o, [] { glInitNames(); glPushName(9); }); },
          {API_CALL(glRenderMode(kBad))}, get({GL_RENDER_MODE}), false, renderMode},
-        {"glInitNames", "select", [](Observations& o) { selectTriangle(o, [] { glPushName(1); glPushName(2); glInitNames(); glPushName(3); }); }, {},
+        {"glInitNames", "select",
+         [](Observations& o) { selectTriangle(o, [] { glPushName(1); glPushName(2); glInitNames(); glPushName(3); }); }, {},
          {}, false, renderMode},
         {"glPushName", "select", [](Observations& o) { selectTriangle(o, [] { glInitNames(); glPushName(4); glPushName(5); }); },
-         {[](Observations& o) { selectTriangle(o, [] { glInitNames(); for (int i = 0; i < 65; ++i) glPushName(static_cast<GLuint>(i)); }); }}, {},
+         {[](Observations& o) { selectTriangle(o,
+          [] { glInitNames(); for (int i = 0; i < 65; ++i) glPushName(static_cast<GLuint>(i)); }); }}, {},
          false, renderMode},
-        {"glPopName", "select", [](Observations& o) { selectTriangle(o, [] { glInitNames(); glPushName(4); glPushName(5); glPopName(); }); },
+        {"glPopName", "select",
+         [](Observations& o) { selectTriangle(o, [] { glInitNames(); glPushName(4); glPushName(5); glPopName(); }); },
          {[](Observations& o) { selectTriangle(o, [] { glInitNames(); glPopName(); }); }}, {}, false, renderMode},
         {"glLoadName", "select", [](Observations& o) { selectTriangle(o, [] { glInitNames(); glPushName(4); glLoadName(6); }); },
          {[](Observations& o) { selectTriangle(o, [] { glInitNames(); glLoadName(6); }); }}, {}, false, renderMode},
@@ -634,7 +378,8 @@ std::vector<ApiFunction> objectApiTable() {
              o.floats("feedback", feedbackBuffer, 64);
          },
          {API_CALL(glFeedbackBuffer(-1, GL_3D, feedbackBuffer)), API_CALL(glFeedbackBuffer(64, kBad, feedbackBuffer)),
-          API_CALL(glFeedbackBuffer(64, GL_2D, feedbackBuffer); glRenderMode(GL_FEEDBACK); glFeedbackBuffer(64, GL_3D, feedbackBuffer);
+          API_CALL(glFeedbackBuffer(64, GL_2D, feedbackBuffer); glRenderMode(GL_FEEDBACK); glFeedbackBuffer(64, GL_3D,
+          feedbackBuffer);
                    glRenderMode(GL_RENDER))},
          get({GL_FEEDBACK_BUFFER_SIZE, GL_FEEDBACK_BUFFER_TYPE}), false, renderMode},
         {"glPassThrough", "select",
@@ -650,13 +395,15 @@ std::vector<ApiFunction> objectApiTable() {
 
         // Evaluators.
         {"glMap1f", "eval", API_CALL(glMap1f(GL_MAP1_COLOR_4, 0.0f, 2.0f, 4, 3, kCurve)),
-         {notCompiled(API_CALL(glMap1f(kBad, 0.0f, 1.0f, 3, 4, kCurve))), API_CALL(glMap1f(GL_MAP1_VERTEX_3, 1.0f, 1.0f, 3, 4, kCurve)),
+         {notCompiled(API_CALL(glMap1f(kBad, 0.0f, 1.0f, 3, 4, kCurve))),
+          API_CALL(glMap1f(GL_MAP1_VERTEX_3, 1.0f, 1.0f, 3, 4, kCurve)),
           notCompiled(API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 2, 4, kCurve))),
           API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 0, kCurve)),
           API_CALL(glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 100, kLongF))},
          mapState(GL_MAP1_COLOR_4)},
         {"glMap1d", "eval", API_CALL(glMap1d(GL_MAP1_VERTEX_3, -1.0, 1.0, 3, 4, kCurveD)),
-         {API_CALL(glMap1d(GL_MAP1_VERTEX_3, 0.5, 0.5, 3, 4, kCurveD)), notCompiled(API_CALL(glMap1d(kBad, 0.0, 1.0, 3, 4, kCurveD)))},
+         {API_CALL(glMap1d(GL_MAP1_VERTEX_3, 0.5, 0.5, 3, 4, kCurveD)),
+          notCompiled(API_CALL(glMap1d(kBad, 0.0, 1.0, 3, 4, kCurveD)))},
          mapState(GL_MAP1_VERTEX_3)},
         {"glMap2f", "eval", API_CALL(glMap2f(GL_MAP2_TEXTURE_COORD_2, 0.0f, 1.0f, 2, 3, 0.0f, 2.0f, 6, 2, kCurve)),
          {API_CALL(glMap2f(kBad, 0.0f, 1.0f, 2, 3, 0.0f, 2.0f, 6, 2, kCurve)),
@@ -691,8 +438,10 @@ std::vector<ApiFunction> objectApiTable() {
          {API_CALL(glEvalMesh2(kBad, 0, 4, 0, 4))}, {}, false, noCurve},
         {"glGetMapdv", "eval", mapState(GL_MAP1_NORMAL), {API_CALL(GLdouble d[4]; glGetMapdv(kBad, GL_ORDER, d)),
                                                          API_CALL(GLdouble d[4]; glGetMapdv(GL_MAP1_NORMAL, kBad, d))}},
-        {"glGetMapfv", "eval", mapState(GL_MAP2_INDEX), {API_CALL(GLfloat f[4]; glGetMapfv(kBad, GL_DOMAIN, f)), API_CALL(GLfloat f[4]; glGetMapfv(GL_MAP2_INDEX, kBad, f))}},
-        {"glGetMapiv", "eval", mapState(GL_MAP1_TEXTURE_COORD_4), {API_CALL(GLint i[4]; glGetMapiv(GL_MAP1_VERTEX_4, kBad, i)), API_CALL(GLint i[4]; glGetMapiv(kBad, GL_ORDER, i))}},
+        {"glGetMapfv", "eval", mapState(GL_MAP2_INDEX), {API_CALL(GLfloat f[4]; glGetMapfv(kBad, GL_DOMAIN, f)),
+         API_CALL(GLfloat f[4]; glGetMapfv(GL_MAP2_INDEX, kBad, f))}},
+        {"glGetMapiv", "eval", mapState(GL_MAP1_TEXTURE_COORD_4),
+         {API_CALL(GLint i[4]; glGetMapiv(GL_MAP1_VERTEX_4, kBad, i)), API_CALL(GLint i[4]; glGetMapiv(kBad, GL_ORDER, i))}},
     };
 }
 
