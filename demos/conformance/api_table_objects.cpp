@@ -19,6 +19,7 @@ const GLfloat kTriangle[6] = {-0.6f, -0.5f, 0.7f, -0.4f, 0.0f, 0.6f};
 const GLubyte kColors[12] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 128};
 const GLfloat kInterleaved[18] = {1, 0, 0, -0.6f, -0.5f, 0.1f, 0, 1, 0, 0.7f, -0.4f, 0.2f, 0, 0, 1, 0.0f, 0.6f, 0.3f};
 const GLushort kIndices[3] = {2, 0, 1};
+const GLubyte kByteIndices[3] = {1, 2, 0};
 const GLfloat kCurve[12] = {-0.8f, -0.6f, 0.0f, 0.0f, 0.9f, 0.2f, 0.8f, -0.5f, 0.0f, 0.5f, 0.5f, 0.0f};
 const GLdouble kCurveD[12] = {-0.8, -0.6, 0.0, 0.0, 0.9, 0.2, 0.8, -0.5, 0.0, 0.5, 0.5, 0.0};
 // Data as long as a bad count says (a list compiles the call, copying what the count implies).
@@ -179,7 +180,9 @@ std::vector<ApiFunction> objectApiTable() {
     static const GLfloat kMapF[4] = {0.0f, 0.25f, 0.75f, 1.0f};
     static const GLuint kMapUi[4] = {3, 2, 1, 0};
     static const GLushort kMapUs[2] = {65535, 7};
-    static const GLubyte kBitmap[8] = {0xF0, 0x0F, 0xAA, 0x55, 0xFF, 0x81, 0x3C, 0x18};
+    // 8 rows of 8 bits, each row padded to the default unpack alignment of 4 bytes.
+    static const GLubyte kBitmap[32] = {0xF0, 0, 0, 0, 0x0F, 0, 0, 0, 0xAA, 0, 0, 0, 0x55, 0, 0, 0,
+                                        0xFF, 0, 0, 0, 0x81, 0, 0, 0, 0x3C, 0, 0, 0, 0x18, 0, 0, 0};
     return {
         {"glBegin", "begin", API_CALL(glBegin(GL_TRIANGLES); triangleVertices(); glEnd()),
          {API_CALL(glBegin(kBad)), API_CALL(glBegin(GL_POINTS); glBegin(GL_LINES); glEnd())}, {}, true},
@@ -266,7 +269,7 @@ std::vector<ApiFunction> objectApiTable() {
           notCompiled(API_CALL(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, kIndices)))},
          get({GL_CURRENT_COLOR}), false, disableArrays},
         // Compiled into a list, Mesa reports a bad index type as GL_INVALID_VALUE. An expected difference.
-        {"glDrawElements:in_list", "array", API_CALL(vertexArrays(); glDrawElements(GL_POINTS, 3, GL_UNSIGNED_BYTE, kColors)),
+        {"glDrawElements:in_list", "array", API_CALL(vertexArrays(); glDrawElements(GL_POINTS, 3, GL_UNSIGNED_BYTE, kByteIndices)),
          {API_CALL(glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, kIndices))}, get({GL_CURRENT_COLOR}), false, disableArrays},
         {"glInterleavedArrays", "array",
          API_CALL(glInterleavedArrays(GL_C3F_V3F, 0, kInterleaved); glDrawArrays(GL_TRIANGLES, 0, 3)),
