@@ -566,6 +566,9 @@ std::vector<Case> allCases() {
     addFragmentOpsCases(cases);
     addTextureCases(cases);
     addPixelRectangleCases(cases);
+    // Last: the API cases leave state the drawing cases do not reset.
+    std::vector<Case> api = apiCases();
+    cases.insert(cases.end(), std::make_move_iterator(api.begin()), std::make_move_iterator(api.end()));
     return cases;
 }
 

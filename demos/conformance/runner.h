@@ -4,6 +4,7 @@
 #include <reference/compare.h>
 #include <reference/osmesa_context.h>
 
+#include <cstddef>
 #include <map>
 #include <string>
 
@@ -14,7 +15,10 @@ namespace conformance {
 struct Result {
     reference::Comparison comparison;
     long long depthTies = 0;  // differing pixels where both depth buffers agree within one unit
-    bool passed = false;      // flat: identical but for depth ties; smooth: within 1 but for ties
+    // The case's observations (Case::observe): how many lines differ, and the first that does.
+    std::size_t observations = 0, observationsDiffering = 0;
+    std::string firstObservationDifference;
+    bool passed = false;  // pixels: flat identical but for depth ties, smooth within 1 but for ties; and every observation equal
     reference::Image ours, theirs;
 };
 

@@ -306,20 +306,32 @@ void drawOrCompile(Context::State& s, GLenum mode, const Elements& elements, boo
     drawElementsOf(s, mode, s.arrays, elements, indexed);
 }
 
+// The error of a draw with bad arguments; compiled into a list, it is the list's when it runs,
+// as for every compiled command.
+void drawError(Context::State& s, GLenum error) {
+    if (s.lists.compiling()) {
+        s.lists.add([error] {
+            if (Context::State* now = stateOutsideBeginEnd()) setError(*now, error);
+        });
+        if (!s.lists.executingWhileCompiling()) return;
+    }
+    setError(s, error);
+}
+
 void drawArrays(GLenum mode, GLint first, GLsizei count) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
-    if (first < 0 || count < 0) return setError(*s, GL_INVALID_VALUE);
+    if (mode > GL_POLYGON) return drawError(*s, GL_INVALID_ENUM);
+    if (first < 0 || count < 0) return drawError(*s, GL_INVALID_VALUE);
     drawOrCompile(*s, mode, {static_cast<std::size_t>(first), static_cast<std::size_t>(count)}, false);
 }
 
 void drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    if (mode > GL_POLYGON) return setError(*s, GL_INVALID_ENUM);
-    if (count < 0) return setError(*s, GL_INVALID_VALUE);
-    if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return setError(*s, GL_INVALID_ENUM);
+    if (mode > GL_POLYGON) return drawError(*s, GL_INVALID_ENUM);
+    if (count < 0) return drawError(*s, GL_INVALID_VALUE);
+    if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return drawError(*s, GL_INVALID_ENUM);
     if (!indices) return;
     drawOrCompile(*s, mode, {0, static_cast<std::size_t>(count), indices, type}, true);
 }

@@ -10,9 +10,10 @@ namespace {
 void newList(GLuint name, GLenum mode) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
+    // Inside a list being compiled the reference reports the nesting whatever the arguments.
+    if (s->lists.compiling()) return setError(*s, GL_INVALID_OPERATION);
     if (name == 0) return setError(*s, GL_INVALID_VALUE);
     if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) return setError(*s, GL_INVALID_ENUM);
-    if (s->lists.compiling()) return setError(*s, GL_INVALID_OPERATION);
     s->lists.begin(name, mode);
 }
 

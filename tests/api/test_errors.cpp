@@ -62,6 +62,7 @@ std::vector<Misuse> misuses() {
         {"glNewList with name 0", GL_INVALID_VALUE, [] { glNewList(0, GL_COMPILE); }},
         {"glNewList with a bad mode", GL_INVALID_ENUM, [] { glNewList(1, GL_FILL); }},
         {"glNewList while compiling", GL_INVALID_OPERATION, [] { glNewList(1, GL_COMPILE); glNewList(2, GL_COMPILE); glEndList(); }},
+        {"glNewList with name 0 while compiling", GL_INVALID_OPERATION, [] { glNewList(1, GL_COMPILE); glNewList(0, GL_COMPILE); glEndList(); }},
         {"glNewList inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_POINTS); glNewList(1, GL_COMPILE); glEnd(); }},
         {"glEndList without glNewList", GL_INVALID_OPERATION, [] { glEndList(); }},
         {"glGenLists of a negative range", GL_INVALID_VALUE, [] { glGenLists(-1); }},
@@ -78,6 +79,12 @@ std::vector<Misuse> misuses() {
         {"glEnableClientState of a capability", GL_INVALID_ENUM, [] { glEnableClientState(GL_DEPTH_TEST); }},
         {"glDrawArrays with a bad mode", GL_INVALID_ENUM, [] { glDrawArrays(0x20, 0, 3); }},
         {"glDrawArrays with a negative count", GL_INVALID_VALUE, [] { glDrawArrays(GL_TRIANGLES, 0, -3); }},
+        // Compiled into a list, a draw's error is the list's when it runs (none at compile time).
+        {"glDrawArrays with a bad mode run from a list", GL_INVALID_ENUM, [] {
+             glNewList(1, GL_COMPILE); glDrawArrays(0x20, 0, 3); glEndList(); glGetError(); glCallList(1); }},
+        {"glDrawElements with a negative count run from a list", GL_INVALID_VALUE, [] {
+             const GLubyte i[1] = {0}; glNewList(1, GL_COMPILE); glDrawElements(GL_POINTS, -1, GL_UNSIGNED_BYTE, i); glEndList();
+             glGetError(); glCallList(1); }},
         {"glDrawArrays inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_POINTS); glDrawArrays(GL_POINTS, 0, 1); glEnd(); }},
         {"glDrawElements with signed indices", GL_INVALID_ENUM, [] { const GLint i[3] = {0, 1, 2}; glDrawElements(GL_TRIANGLES, 3, GL_INT, i); }},
         {"glDrawElements with a negative count", GL_INVALID_VALUE, [] { const GLuint i[3] = {0, 1, 2}; glDrawElements(GL_TRIANGLES, -1, GL_UNSIGNED_INT, i); }},
