@@ -21,6 +21,10 @@ enum class TextureFilter : std::uint8_t { Nearest, Linear };
 enum class MipmapFilter : std::uint8_t { None, Nearest, Linear };
 // GL_CLAMP samples as GL_CLAMP_TO_EDGE under NEAREST (its border is never reached).
 enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge };
+// What the texels of a draw's texture give its fragments: colours for the environment, or
+// (the images of glDrawPixels and glCopyPixels of depth and stencil) each fragment's 24-bit
+// window depth or its stencil value, the texel word itself, sampled nearest.
+enum class TexelUse : std::uint8_t { Color, Depth, Stencil };
 
 // A texture's images (its mipmap levels, or level 0 alone), their texels expanded to RGBA8
 // words (R in the low byte) as the reference's 8-bit sampler sees them: luminance L as
@@ -57,6 +61,7 @@ struct TextureState {
     TextureFilter minFilter = TextureFilter::Nearest, magFilter = TextureFilter::Nearest;
     MipmapFilter mipFilter = MipmapFilter::None;
     TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+    TexelUse use = TexelUse::Color;
     glm::vec4 envColor{0.0f};  // GL_TEXTURE_ENV_COLOR, clamped
     TextureGen gen;
     Matrix matrix = kIdentity;  // the texture matrix
