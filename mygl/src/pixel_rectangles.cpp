@@ -116,7 +116,7 @@ void drawValues(Context::State& s, int width, int height, GLenum format, GLenum 
         image.use = glrenderer::TexelUse::Depth;
         image.color = s.rasterColor;
     } else {
-        for (std::uint32_t& v : values) v = drawnStencil(v, type);
+        for (std::uint32_t& v : values) v = drawnStencil(v, type, s.pixelModes, s.pixelMaps);
         image.use = glrenderer::TexelUse::Stencil;
     }
     image.words = values;
@@ -217,10 +217,10 @@ void windowValues(std::span<const std::uint32_t> buffer, int fbWidth, int fbHeig
 
 // Whether the reference copies colours with a blit: nothing would change them on the way, at
 // zoom 1 (Mesa's blit_copy_pixels: the colour mask is not among its conditions, and a blit
-// writes every channel). Depth and stencil copies take it at zoom 1 whatever the state.
-bool blitsCopy(const Context::State& s, GLenum type) {
+// writes every channel). Depth and stencil copies never blit (llvmpipe cannot render into its
+// depth-stencil format with a blit: measured, they draw).
+bool blitsColors(const Context::State& s) {
     if (s.pixelModes.zoomX != 1.0f || s.pixelModes.zoomY != 1.0f) return false;
-    if (type != GL_COLOR) return true;
     const glrenderer::DrawState& d = s.draw;
     const glrenderer::FragmentOps& ops = d.fragmentOps;
     const glrenderer::StencilState& stencil = ops.stencil;
@@ -233,10 +233,10 @@ bool blitsCopy(const Context::State& s, GLenum type) {
            d.fog.mode == glrenderer::FogMode::Off && stencilKeeps;
 }
 
-// The reference's blit of a copy within `buffer` (no fragment operation but the scissor): the
-// source and target cut to the window and the scissor box, when the cut rectangles do not
-// overlap. Returns false when it would draw instead.
-bool blitCopy(Context::State& s, std::span<std::uint32_t> buffer, GLint x, GLint y, GLsizei width, GLsizei height, int targetX, int targetY) {
+// The reference's blit of colours (no fragment operation but the scissor): the source and
+// target cut to the window and the scissor box, when the cut rectangles do not overlap.
+// Returns false when it would draw instead.
+bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei height, int targetX, int targetY) {
     auto& fb = s.framebuffer;
     // The source cut to the window, then the target (moving the source with it).
     Run columns = insideWindow(x, width, fb.width()), rows = insideWindow(y, height, fb.height());
@@ -259,8 +259,8 @@ bool blitCopy(Context::State& s, std::span<std::uint32_t> buffer, GLint x, GLint
                          rows.first < toY + rows.length && toY < rows.first + rows.length;
     if (columns.length > 0 && rows.length > 0 && overlap) return false;
     for (std::int64_t row = 0; row < rows.length; ++row) {
-        const auto from = buffer.begin() + (rows.first + row) * fb.width() + columns.first;
-        std::copy_n(from, columns.length, buffer.begin() + (toY + row) * fb.width() + toX);
+        const auto from = fb.color().begin() + (rows.first + row) * fb.width() + columns.first;
+        std::copy_n(from, columns.length, fb.color().begin() + (toY + row) * fb.width() + toX);
     }
     fb.markWritten();
     return true;
@@ -294,15 +294,14 @@ void copyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
     int targetX = 0, targetY = 0;
     if (!imageCorner(*s, targetX, targetY)) return;
     // A source wholly outside the window copies nothing.
-    auto& fb = s->framebuffer;
+    const auto& fb = s->framebuffer;
     if (insideWindow(x, width, fb.width()).length == 0 || insideWindow(y, height, fb.height()).length == 0) return;
     drawCachedBitmaps(*s);
     endBatch(*s);
     s->pipeline.finish();
-    const std::span<std::uint32_t> buffer = type == GL_COLOR ? fb.color() : type == GL_DEPTH ? fb.depth() : fb.stencil();
-    if (blitsCopy(*s, type) && blitCopy(*s, buffer, x, y, width, height, targetX, targetY)) return;
     // Read first, then draw: overlapping rectangles copy what was there before.
     if (type != GL_COLOR) return drawCopiedValues(*s, x, y, width, height, type);
+    if (blitsColors(*s) && blitColors(*s, x, y, width, height, targetX, targetY)) return;
     drawColors(*s, width, height, windowColors(fb, x, y, width, height), true);
 }
 

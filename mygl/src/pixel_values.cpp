@@ -3,28 +3,19 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstring>
+
+#include "pixel_unpack.h"
 
 namespace mygl {
 namespace {
-
-template <class T>
-T readValue(const std::uint8_t* p, bool swapBytes) {
-    std::uint8_t bytes[sizeof(T)];
-    std::memcpy(bytes, p, sizeof(T));
-    if (swapBytes) std::reverse(bytes, bytes + sizeof(T));
-    T value;
-    std::memcpy(&value, bytes, sizeof(T));
-    return value;
-}
 
 std::uint32_t valueAt(const std::uint8_t* p, GLenum type, bool swapBytes) {
     switch (type) {
     case GL_UNSIGNED_BYTE: return *p;
     case GL_BYTE: return static_cast<std::uint32_t>(static_cast<std::int32_t>(static_cast<std::int8_t>(*p)));
-    case GL_UNSIGNED_SHORT: return readValue<std::uint16_t>(p, swapBytes);
-    case GL_SHORT: return static_cast<std::uint32_t>(static_cast<std::int32_t>(readValue<std::int16_t>(p, swapBytes)));
-    default: return readValue<std::uint32_t>(p, swapBytes);  // GL_UNSIGNED_INT, GL_INT, GL_FLOAT
+    case GL_UNSIGNED_SHORT: return readClientComponent<std::uint16_t>(p, swapBytes);
+    case GL_SHORT: return static_cast<std::uint32_t>(static_cast<std::int32_t>(readClientComponent<std::int16_t>(p, swapBytes)));
+    default: return readClientComponent<std::uint32_t>(p, swapBytes);  // GL_UNSIGNED_INT, GL_INT, GL_FLOAT
     }
 }
 
@@ -125,8 +116,13 @@ std::uint32_t resampledDepth24(std::uint32_t depth24) {
     return depth24Of(static_cast<float>(depth24) * (1.0f / 16777215.0f));
 }
 
-std::uint32_t drawnStencil(std::uint32_t value, GLenum type) {
-    return (type == GL_FLOAT ? toUnsigned(floatOf(value)) : value) & 0xFFu;
+std::uint32_t drawnStencil(std::uint32_t value, GLenum type, const PixelModes& modes, const PixelMaps& maps) {
+    std::uint32_t index = type == GL_FLOAT ? toUnsigned(floatOf(value)) : value;
+    if (modes.mapStencil && type != GL_UNSIGNED_BYTE) {
+        const std::vector<float>& map = maps.of(GL_PIXEL_MAP_S_TO_S);
+        index = toUnsigned(map[index & static_cast<std::uint32_t>(map.size() - 1)]);
+    }
+    return index & 0xFFu;
 }
 
 glm::vec4 drawnIndexColor(std::uint32_t value, GLenum type, const PixelMaps& maps) {
@@ -136,18 +132,18 @@ glm::vec4 drawnIndexColor(std::uint32_t value, GLenum type, const PixelMaps& map
         const std::vector<float>& map = maps.of(static_cast<GLenum>(GL_PIXEL_MAP_I_TO_R + i));
         c[i] = map[index & static_cast<std::uint32_t>(map.size() - 1)];
     }
-    // The texture of the type keeps each channel rounded to its bits (the maps hold [0, 1]).
-    const auto kept = [&c](float max) {
-        for (int i = 0; i < 4; ++i) c[i] = std::nearbyint(c[i] * max) / max;
-    };
-    switch (type) {
-    case GL_UNSIGNED_BYTE: case GL_BITMAP:
-        for (int i = 0; i < 4; ++i) c[i] = std::nearbyint(c[i] * 255.0f) * (1.0f / 255.0f);
-        break;
-    case GL_BYTE: kept(127.0f); break;
-    case GL_UNSIGNED_SHORT: case GL_UNSIGNED_INT: kept(65535.0f); break;
-    case GL_SHORT: case GL_INT: kept(32767.0f); break;
-    default: break;
+    if (type == GL_FLOAT) return c;  // a float texture
+    // Bytes first (the maps hold [0, 1]), then the texture of the type: signed types keep
+    // them as snorm (x * max + 127) / 255 of 127 or 32767.
+    const bool isSigned = type == GL_BYTE || type == GL_SHORT || type == GL_INT;
+    const std::uint32_t max = type == GL_BYTE ? 127u : 32767u;
+    for (int i = 0; i < 4; ++i) {
+        const auto byte = static_cast<std::uint32_t>(std::nearbyint(c[i] * 255.0f));
+        if (!isSigned) {
+            c[i] = static_cast<float>(byte) * (1.0f / 255.0f);
+        } else {
+            c[i] = static_cast<float>((byte * max + 127u) / 255u) / static_cast<float>(max);
+        }
     }
     return c;
 }

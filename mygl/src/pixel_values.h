@@ -30,13 +30,14 @@ std::uint32_t drawnDepth24(std::uint32_t value, GLenum type, const PixelModes& m
 // moves some odd values up by one.
 std::uint32_t resampledDepth24(std::uint32_t depth24);
 
-// A stencil index of `type` as the reference's image writes it: its low 8 bits (floats
-// truncated), without index shift, offset or GL_MAP_STENCIL (measured).
-std::uint32_t drawnStencil(std::uint32_t value, GLenum type);
+// A stencil index of `type` as the reference's image writes it: through GL_MAP_STENCIL (not
+// for unsigned bytes, which it copies as they are), never index shift and offset (measured);
+// its low 8 bits (floats truncated).
+std::uint32_t drawnStencil(std::uint32_t value, GLenum type, const PixelModes& modes, const PixelMaps& maps);
 
 // A colour index of `type` as the reference's image colours it: the I_TO_R, G, B, A maps
-// (index masked by each map's size; no index shift and offset: measured), kept in the texture
-// of the type (8 bits for bytes, 16 for shorts and ints, float for floats).
+// (index masked by each map's size; no index shift and offset: measured), in bytes, then kept
+// in the texture of the type (snorm for signed types; floats take the maps as they are).
 glm::vec4 drawnIndexColor(std::uint32_t value, GLenum type, const PixelMaps& maps);
 
 }  // namespace mygl

