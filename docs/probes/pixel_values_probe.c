@@ -142,8 +142,8 @@ int main(void) {
         report("depth copy (zoom 1, -1): z24 sampled as z * (1 / (2^24 - 1)), rounded again", broken);
     }
 
-    /* Stencil images: neither index shift and offset nor MAP_STENCIL apply (each turned off
-     * before reading back: glReadPixels of stencil applies them). */
+    /* Stencil images: index shift and offset never apply, MAP_STENCIL for every type but
+     * unsigned bytes (each turned off before reading back: glReadPixels of stencil applies them). */
     {
         GLubyte s[W], indices[W], mapped[W];
         GLfloat map[8] = {3, 250, 17, 300, 42, 0, 128, 77};
@@ -167,7 +167,18 @@ int main(void) {
         glReadPixels(0, 0, W, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
         broken = 0;
         for (int i = 0; i < W; i++) broken += s[i] != mapped[i];
-        report("stencil image: GL_MAP_STENCIL not applied", broken);
+        report("stencil image, unsigned bytes: GL_MAP_STENCIL not applied", broken);
+        {
+            static GLushort shorts[W];
+            for (int i = 0; i < W; i++) shorts[i] = (GLushort)(i * 3);
+            glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+            glDrawPixels(W, 1, GL_STENCIL_INDEX, GL_UNSIGNED_SHORT, shorts);
+            glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);
+            glReadPixels(0, 0, W, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+            broken = 0;
+            for (int i = 0; i < W; i++) broken += s[i] != (((unsigned)map[shorts[i] & 7]) & 0xFF);
+            report("stencil image, unsigned shorts: GL_MAP_STENCIL at index & (size - 1), 8 bits", broken);
+        }
     }
 
     /* Colour-index images: I_TO_R..A maps, no shift or offset, bytes rounded into RGBA8. */
