@@ -94,6 +94,7 @@ std::uint32_t drawnDepth24(std::uint32_t value, GLenum type, const PixelModes& m
     if (transfer) z = z * modes.depthScale + modes.depthBias;
     const bool clamps = transfer || type == GL_BYTE || type == GL_SHORT || type == GL_INT || type == GL_FLOAT;
     if (clamps) z = std::clamp(z, 0.0f, 1.0f);
+    if (std::isnan(z)) z = 0.0f;  // NaN converts to 0 on the reference's way (measured)
     switch (type) {
     case GL_UNSIGNED_SHORT: {  // a 16-bit texture, copied as it is without a transfer
         const std::uint32_t texel = transfer ? static_cast<std::uint32_t>(z * 65535.0f) : value;

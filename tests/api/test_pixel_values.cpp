@@ -123,7 +123,8 @@ std::vector<std::uint8_t> valueImage(int width, int height, GLenum type) {
             break;
         }
         default: {
-            const float v = extreme ? (i % 2 ? 1.0f / 3.0f : -0.25f) : static_cast<float>(r % 1200) / 1000.0f;
+            const float extremes[] = {1.0f / 3.0f, -0.25f, NAN, INFINITY, -INFINITY, 1e30f};
+            const float v = extreme ? extremes[(i / 7) % 6] : static_cast<float>(r % 1200) / 1000.0f;
             std::memcpy(p + 4 * i, &v, 4);
         }
         }
@@ -150,7 +151,7 @@ TEST(PixelValues, DepthImagesOfEveryTypeWriteTheReferencesDepths) {
 }
 
 TEST(PixelValues, DepthScaleAndBiasApplyToEveryType) {
-    const float transfers[][2] = {{0.5f, 0.25f}, {2.0f, -0.5f}, {1.0f, 0.1f}, {-1.0f, 1.0f}};
+    const float transfers[][2] = {{0.5f, 0.25f}, {2.0f, -0.5f}, {1.0f, 0.1f}, {-1.0f, 1.0f}, {NAN, 0.0f}};
     for (GLenum type : kTypes) {
         const auto image = valueImage(11, 7, type);
         for (const auto& t : transfers) {
