@@ -9,7 +9,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string_view>
+#include <utility>
 
 #include "gl11_functions.h"
 
@@ -19,6 +21,22 @@ int coveredPixels(const std::vector<std::uint8_t>& rgba) {
     int covered = 0;
     for (std::size_t i = 0; i < rgba.size(); i += 4) covered += rgba[i] != 0;
     return covered;
+}
+
+// `display` run on MyGL (40 x 30) while recorded, and the recording replayed on OSMesa: the
+// two frames.
+std::pair<reference::Image, reference::Image> recordedAndReplayed(const std::function<void()>& display) {
+    reference::CallRecorder recorder;
+    mygl::Context mygl(40, 30);
+    mygl.makeCurrent();
+    recorder.start();
+    display();
+    recorder.stop();
+    reference::Image ours{40, 30, mygl.readPixels()};
+    reference::OsmesaContext osmesa(40, 30);
+    osmesa.makeCurrent();
+    recorder.replay();
+    return {std::move(ours), reference::Image{40, 30, osmesa.readPixels()}};
 }
 
 }  // namespace
@@ -181,17 +199,7 @@ TEST(CallRecorder, DisplayListsAndVertexArraysReplayOnOsmesa) {
         glListBase(list);
         glCallLists(1, GL_UNSIGNED_BYTE, names);
     };
-    reference::CallRecorder recorder;
-    mygl::Context mygl(40, 30);
-    mygl.makeCurrent();
-    recorder.start();
-    display();
-    recorder.stop();
-    const reference::Image ours{40, 30, mygl.readPixels()};
-    reference::OsmesaContext osmesa(40, 30);
-    osmesa.makeCurrent();
-    recorder.replay();
-    const reference::Image theirs{40, 30, osmesa.readPixels()};
+    const auto [ours, theirs] = recordedAndReplayed(display);
     EXPECT_EQ(reference::compareImages(ours, theirs).differing, 0);
     EXPECT_GT(coveredPixels(theirs.rgba), 300);
 }
@@ -226,17 +234,7 @@ TEST(CallRecorder, DepthStencilAndIndexImagesReplayOnOsmesa) {
         glCopyPixels(0, 0, 10, 10, GL_DEPTH);
         glPixelZoom(1.0f, 1.0f);
     };
-    reference::CallRecorder recorder;
-    mygl::Context mygl(40, 30);
-    mygl.makeCurrent();
-    recorder.start();
-    display();
-    recorder.stop();
-    const reference::Image ours{40, 30, mygl.readPixels()};
-    reference::OsmesaContext osmesa(40, 30);
-    osmesa.makeCurrent();
-    recorder.replay();
-    const reference::Image theirs{40, 30, osmesa.readPixels()};
+    const auto [ours, theirs] = recordedAndReplayed(display);
     EXPECT_EQ(reference::compareImages(ours, theirs).differing, 0);
     EXPECT_GT(coveredPixels(theirs.rgba), 100);
 }
