@@ -131,7 +131,8 @@ glm::vec4 drawnIndexColor(std::uint32_t value, GLenum type, const PixelMaps& map
     glm::vec4 c;
     for (int i = 0; i < 4; ++i) {
         const std::vector<float>& map = maps.of(static_cast<GLenum>(GL_PIXEL_MAP_I_TO_R + i));
-        c[i] = map[index & static_cast<std::uint32_t>(map.size() - 1)];
+        const float entry = map[index & static_cast<std::uint32_t>(map.size() - 1)];
+        c[i] = std::isnan(entry) ? 0.0f : entry;  // (a NaN given to glPixelMap)
     }
     if (type == GL_FLOAT) return c;  // a float texture
     // Bytes first (the maps hold [0, 1]), then the texture of the type: signed types keep
