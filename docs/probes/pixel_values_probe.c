@@ -200,6 +200,25 @@ int main(void) {
         }
         report("colour-index image: maps of size n at index & (n - 1), no offset", broken);
     }
+    /* Colour-index bitmaps: rows of 13 bits follow each other with no padding. */
+    {
+        static const GLubyte bits[8] = {0xA5, 0x3C, 0xFF, 0x00, 0x81, 0x7E, 0x0F, 0xF0};
+        GLfloat r[2] = {0, 1};
+        GLubyte c[W * 4 * 4];
+        glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 2, r);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glRasterPos2i(0, 0);
+        glDrawPixels(13, 4, GL_COLOR_INDEX, GL_BITMAP, bits);
+        glReadPixels(0, 0, W, 4, GL_RGBA, GL_UNSIGNED_BYTE, c);
+        int broken = 0;
+        for (int y = 0; y < 4; y++) {
+            for (int x = 0; x < 13; x++) {
+                const int bit = y * 13 + x;
+                broken += (c[(y * W + x) * 4] == 255) != ((bits[bit / 8] >> (7 - bit % 8)) & 1);
+            }
+        }
+        report("colour-index bitmap: rows not padded to bytes (bit y * width + x)", broken);
+    }
     OSMesaDestroyContext(context);
     return 0;
 }

@@ -72,18 +72,28 @@ void extractValues(const void* pixels, int width, int height, GLenum type, const
     const ClientLayout layout = clientLayout(width, GL_STENCIL_INDEX, type, modes);
     const auto* base = static_cast<const std::uint8_t*>(pixels) + layout.firstByte;
     const std::size_t bytes = bytesOfType(type);
+    if (type == GL_BITMAP) {
+        // The reference reads a bitmap image's rows one after the other with no padding, as one
+        // run of width x height bits (measured; GL pads rows to bytes). With skipped pixels it
+        // starts at bit 2 x GL_UNPACK_SKIP_PIXELS of the first row (its first pixels measured;
+        // the rest it reads from past its copy). Bits past the image's extent in GL's layout are
+        // taken as 0.
+        const auto* image = static_cast<const std::uint8_t*>(pixels);
+        const std::size_t extent = layout.firstByte + static_cast<std::size_t>(height - 1) * layout.rowStride +
+                                   (layout.firstBit + static_cast<std::size_t>(width) + 7) / 8;
+        const auto skip = static_cast<std::size_t>(modes.skipPixels);
+        const std::size_t first = (layout.firstByte - skip / 8) * 8 + 2 * skip;
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            const std::size_t bit = first + i;
+            const unsigned inByte = bit % 8;
+            out[i] = bit / 8 < extent ? (image[bit / 8] >> (modes.lsbFirst ? inByte : 7 - inByte)) & 1u : 0u;
+        }
+        return;
+    }
     for (int y = 0; y < height; ++y) {
         const std::uint8_t* row = base + static_cast<std::size_t>(y) * layout.rowStride;
         std::uint32_t* target = out.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
-        for (int x = 0; x < width; ++x) {
-            if (type == GL_BITMAP) {
-                const unsigned bit = layout.firstBit + static_cast<unsigned>(x);
-                const unsigned inByte = bit % 8;
-                target[x] = (row[bit / 8] >> (modes.lsbFirst ? inByte : 7 - inByte)) & 1u;
-            } else {
-                target[x] = valueAt(row + static_cast<std::size_t>(x) * bytes, type, modes.swapBytes);
-            }
-        }
+        for (int x = 0; x < width; ++x) target[x] = valueAt(row + static_cast<std::size_t>(x) * bytes, type, modes.swapBytes);
     }
 }
 
