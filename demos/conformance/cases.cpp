@@ -496,15 +496,23 @@ void addPixelRectangleCases(std::vector<Case>& out) {
         const char* name;
         float x, y;
         GLenum format, type;
-        bool copy, fog;
+        GLenum copy;  // glCopyPixels' type, or 0 to draw
+        bool fog;
     };
-    static const Zoom kZooms[] = {{"drawpixels_zoom_1", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, false, false},
-                                  {"drawpixels_zoom_half", 0.5f, 0.5f, GL_RGBA, GL_UNSIGNED_BYTE, false, false},
-                                  {"drawpixels_zoom_mirrored", -1.5f, 2.25f, GL_RGBA, GL_UNSIGNED_SHORT, false, false},
-                                  {"drawpixels_rgba_float_fog", 1.25f, 1.0f, GL_RGBA, GL_FLOAT, false, true},
-                                  {"copypixels_overlapping", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, true, false},
-                                  {"copypixels_zoomed", 0.75f, -1.5f, GL_RGBA, GL_UNSIGNED_BYTE, true, false},
-                                  {"drawpixels_float_fog_no_depth_test", 1.25f, 1.0f, GL_RGB, GL_FLOAT, false, true}};
+    static const Zoom kZooms[] = {{"drawpixels_zoom_1", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, 0, false},
+                                  {"drawpixels_zoom_half", 0.5f, 0.5f, GL_RGBA, GL_UNSIGNED_BYTE, 0, false},
+                                  {"drawpixels_zoom_mirrored", -1.5f, 2.25f, GL_RGBA, GL_UNSIGNED_SHORT, 0, false},
+                                  {"drawpixels_rgba_float_fog", 1.25f, 1.0f, GL_RGBA, GL_FLOAT, 0, true},
+                                  {"copypixels_overlapping", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR, false},
+                                  {"copypixels_zoomed", 0.75f, -1.5f, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR, false},
+                                  {"drawpixels_float_fog_no_depth_test", 1.25f, 1.0f, GL_RGB, GL_FLOAT, 0, true},
+                                  {"drawpixels_depth_float", 1.0f, 1.0f, GL_DEPTH_COMPONENT, GL_FLOAT, 0, false},
+                                  {"drawpixels_depth_ushort_zoomed", 1.5f, -2.0f, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, 0, true},
+                                  {"drawpixels_stencil_index", 1.0f, 1.0f, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, 0, false},
+                                  {"drawpixels_color_index_zoomed", 2.0f, 1.5f, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, 0, false},
+                                  {"copypixels_depth_overlapping", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_DEPTH, false},
+                                  {"copypixels_depth_zoomed", 2.0f, 1.5f, GL_RGBA, GL_UNSIGNED_BYTE, GL_DEPTH, false},
+                                  {"copypixels_stencil_zoomed", -1.0f, 2.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_STENCIL, false}};
     for (const Zoom& z : kZooms) {
         out.push_back({"pixel-rectangles", z.name, false, [z](int w, int h) {
                            resetState(w, h);
@@ -538,8 +546,13 @@ void addPixelRectangleCases(std::vector<Case>& out) {
                            }
                            glPixelZoom(z.x, z.y);
                            glRasterPos3f(z.x < 0 ? 40.0f : 10.0f, 6.0f, 0.1f);
+                           // Index images through maps of a few entries (reset after: maps are no attribute).
+                           const GLfloat ramp[4] = {0.1f, 0.9f, 0.4f, 0.7f}, none = 0.0f;
+                           if (z.format == GL_COLOR_INDEX) {
+                               for (GLenum map = GL_PIXEL_MAP_I_TO_R; map <= GL_PIXEL_MAP_I_TO_A; ++map) glPixelMapfv(map, 4, ramp);
+                           }
                            if (z.copy) {
-                               glCopyPixels(4, 3, 30, 24, GL_COLOR);
+                               glCopyPixels(4, 3, 30, 24, z.copy);
                            } else {
                                const void* data = z.type == GL_FLOAT ? static_cast<const void*>(pixels)
                                                   : z.type == GL_UNSIGNED_SHORT ? static_cast<const void*>(shorts)
@@ -548,6 +561,7 @@ void addPixelRectangleCases(std::vector<Case>& out) {
                            }
                            glPixelZoom(1.0f, 1.0f);
                            glDisable(GL_FOG);
+                           for (GLenum map = GL_PIXEL_MAP_I_TO_R; map <= GL_PIXEL_MAP_I_TO_A; ++map) glPixelMapfv(map, 1, &none);
                        }});
     }
 }

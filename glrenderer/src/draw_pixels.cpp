@@ -40,18 +40,38 @@ std::shared_ptr<const Texture> imageTexture(const PixelImage& image) {
     return texture;
 }
 
+// The reference's stencil image state (st_cb_drawpixels.c, draw_textured_quad): the stencil
+// test always passes and replaces the value under the write mask, no depth test, no colour
+// written; only the scissor of the draw's operations stays.
+FragmentOps stencilImageOps(const FragmentOps& ops) {
+    FragmentOps stencilOnly;
+    stencilOnly.scissor = ops.scissor;
+    stencilOnly.stencil.enabled = true;
+    stencilOnly.stencil.func = CompareFunc::Always;
+    stencilOnly.stencil.depthPass = StencilOp::Replace;
+    stencilOnly.stencil.writeMask = ops.stencil.writeMask;
+    stencilOnly.colorMask = 0;
+    return stencilOnly;
+}
+
 // The state of the reference's quad: the draw's fragment operations (depth, fog, scissor,
 // alpha, stencil, blending, logic op, masks) with the whole window as the viewport, depth range
-// [0, 1], the image replacing the colour, nothing culled or offset.
-DrawState quadState(const DrawState& state, int width, int height, std::shared_ptr<const Texture> texture) {
+// [0, 1], the image replacing the colour (or giving depths or stencil values: `use`), nothing
+// culled or offset.
+DrawState quadState(const DrawState& state, int width, int height, std::shared_ptr<const Texture> texture, TexelUse use) {
     DrawState quad;
-    quad.depthTest = state.depthTest;
-    quad.depthFunc = state.depthFunc;
-    quad.depthWrite = state.depthWrite;
     quad.shadeModel = ShadeModel::Flat;
     quad.viewport = {0, 0, width, height};
-    quad.fog = state.fog;
-    quad.fragmentOps = state.fragmentOps;  // scissor, alpha test, stencil, blending, logic op, masks
+    if (use == TexelUse::Stencil) {
+        quad.fragmentOps = stencilImageOps(state.fragmentOps);
+    } else {
+        quad.depthTest = state.depthTest;
+        quad.depthFunc = state.depthFunc;
+        quad.depthWrite = state.depthWrite;
+        quad.fragmentOps = state.fragmentOps;  // scissor, alpha test, stencil, blending, logic op, masks
+        if (use == TexelUse::Color) quad.fog = state.fog;
+    }
+    quad.texture.use = use;
     quad.texture.env = TextureEnv::Replace;
     quad.texture.base = TextureBase::Rgba;
     quad.texture.wrapS = quad.texture.wrapT = TextureWrap::ClampToEdge;
@@ -87,7 +107,7 @@ void Pipeline::drawPixels(const DrawState& state, const PixelImage& image) {
     Vertex vertices[4];
     for (int i = 0; i < 4; ++i) {
         vertices[i].position = {corners[i][0], corners[i][1], z, 1.0f};
-        vertices[i].color = glm::vec4(1.0f);
+        vertices[i].color = image.color;
         vertices[i].texCoord = {corners[i][2], corners[i][3], 0.0f, 1.0f};
     }
     // Drawn as a batch of its own between the program's, which keep their matrices, lighting
@@ -98,7 +118,7 @@ void Pipeline::drawPixels(const DrawState& state, const PixelImage& image) {
     const Stats counted = submitted_;
     setTransform(kQuadTransform);
     setUnlit();
-    submit(quadState(state, fb.width(), fb.height(), imageTexture(image)), PrimitiveMode::TriangleFan, vertices);
+    submit(quadState(state, fb.width(), fb.height(), imageTexture(image), image.use), PrimitiveMode::TriangleFan, vertices);
     endBatch();
     setTransform(transform);
     batch_->lighting = lighting;

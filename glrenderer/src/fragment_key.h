@@ -63,6 +63,13 @@ struct FragmentKey {
     // colour's red, green and blue.
     bool colorSum = false;
 
+    // Texels as depths or stencil values (glDrawPixels and glCopyPixels of depth and stencil):
+    // they replace the fragment's depth or the stencil reference, the colour stays flat.
+    TexelUse texelUse = TexelUse::Color;
+
+    // Whether the texture environment colours the fragments.
+    constexpr bool texturesColor() const { return textureEnv != TextureEnv::Off && texelUse == TexelUse::Color; }
+
     bool operator==(const FragmentKey&) const = default;
 };
 
@@ -110,8 +117,8 @@ constexpr FragmentKey withFragmentOps(FragmentKey key, const FragmentOps& ops) {
 // `key` with texturing as `texture` makes it (none when its env is Off).
 constexpr FragmentKey withTexture(FragmentKey key, TextureEnv env, bool oneDimensional, TextureBase base,
                                   TextureFilter minFilter, TextureFilter magFilter, MipmapFilter mipFilter,
-                                  TextureWrap wrapS, TextureWrap wrapT) {
-    key.textureEnv = env, key.texture1D = oneDimensional, key.textureBase = base;
+                                  TextureWrap wrapS, TextureWrap wrapT, TexelUse use = TexelUse::Color) {
+    key.textureEnv = env, key.texture1D = oneDimensional, key.textureBase = base, key.texelUse = use;
     key.minFilter = minFilter, key.magFilter = magFilter, key.mipFilter = mipFilter;
     key.wrapS = wrapS, key.wrapT = wrapT;
     return key;
@@ -122,7 +129,8 @@ inline FragmentKey withTexture(FragmentKey key, const TextureState& t) {
         return withTexture(key, u.textureEnv, u.texture1D, u.textureBase, u.minFilter, u.magFilter, u.mipFilter, u.wrapS,
                            u.wrapT);
     }
-    return withTexture(key, t.env, t.oneDimensional, t.base, t.minFilter, t.magFilter, t.mipFilter, t.wrapS, t.wrapT);
+    return withTexture(key, t.env, t.oneDimensional, t.base, t.minFilter, t.magFilter, t.mipFilter, t.wrapS, t.wrapT,
+                       t.use);
 }
 
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).

@@ -50,7 +50,6 @@ public:
 
     // The per-fragment operations' constants (issue 16).
     Int alphaRef() const { return alphaRef_; }
-    Int stencilRef() const { return stencilRef_; }
     Int stencilValueMask() const { return stencilValueMask_; }
     Int stencilWriteMask() const { return stencilWriteMask_; }
     Int colorMask() const { return colorMask_; }
@@ -68,9 +67,16 @@ public:
         return L::both(live, L::lessThan(L::floats(0.5f), L::loadFloats(kept)));
     }
 
-    // 24-bit window depth: round(clamp(z) * (2^24 - 1)), ties to even.
+    // The stencil reference of the lanes: the draw's, or a stencil image's texels.
+    Int stencilRef(const FragmentKey& key, Float x, Float y, typename L::Mask live) const {
+        if (key.texelUse == TexelUse::Stencil) return texture_.word(key, x, y, live);
+        return stencilRef_;
+    }
+
+    // 24-bit window depth: round(clamp(z) * (2^24 - 1)), ties to even, or a depth image's texels.
     // Polygon offset adds the primitive's depth offset to z first.
-    Int depth24(const FragmentKey& key, Float x, Float y) const {
+    Int depth24(const FragmentKey& key, Float x, Float y, typename L::Mask live) const {
+        if (key.texelUse == TexelUse::Depth) return texture_.word(key, x, y, live);
         Float z = depth_.at(x, y);
         if (key.depthOffset) z = L::add(z, depthOffset_);
         return L::roundToInt(L::mul(clampUnit<L>(z), L::floats(16777215.0f)));
@@ -78,7 +84,7 @@ public:
 
     // The colour words of the lanes `live`, packed R, G, B, A from the low byte.
     [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y, typename L::Mask live) const {
-        const bool textured = key.textureEnv != TextureEnv::Off;
+        const bool textured = key.texturesColor();
         if (key.shading == Shading::Flat && key.fog == FogMode::Off && !textured && !key.colorSum) return flat_;
         Float r = red_.at(x, y), g = green_.at(x, y), b = blue_.at(x, y), a = alpha_.at(x, y);
         Float w{};
@@ -167,12 +173,11 @@ struct PixelBuffers {
 // values changed by the stencil-fail operation.
 template <class L>
 [[gnu::always_inline]] inline typename L::Mask stencilTest(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Mask live,
-                             typename L::Int stored, typename L::Int& updated) {
+                             typename L::Int ref, typename L::Int stored, typename L::Int& updated) {
     const typename L::Int mask = in.stencilValueMask();
-    const typename L::Mask pass =
-        L::compare(key.stencilFunc, live, L::bitAnd(in.stencilRef(), mask), L::bitAnd(stored, mask));
+    const typename L::Mask pass = L::compare(key.stencilFunc, live, L::bitAnd(ref, mask), L::bitAnd(stored, mask));
     if (key.stencilFail != StencilOp::Keep) {
-        updated = L::select(L::butNot(live, pass), stencilAfter<L>(key.stencilFail, stored, in.stencilRef()), updated);
+        updated = L::select(L::butNot(live, pass), stencilAfter<L>(key.stencilFail, stored, ref), updated);
     }
     return pass;
 }
@@ -206,25 +211,26 @@ template <class L, class Block>
         rgba = in.rgba(key, x, y, live);
         live = L::compare(key.alphaFunc, live, L::shiftRight(rgba, 24), in.alphaRef());
     }
-    Int stencil{}, updatedStencil{};
+    Int stencil{}, updatedStencil{}, stencilRef{};
     const typename L::Mask stencilLanes = live;  // the lanes whose stencil value an operation may change
     if (key.stencilTest) {
+        stencilRef = in.stencilRef(key, x, y, live);
         stencil = updatedStencil = block.load(buffers.stencil, live);
-        live = stencilTest<L>(key, in, live, stencil, updatedStencil);
+        live = stencilTest<L>(key, in, live, stencilRef, stencil, updatedStencil);
     }
     if (key.depthTest) {
-        const Int z = in.depth24(key, x, y);
+        const Int z = in.depth24(key, x, y, live);
         const typename L::Mask depthPass = L::compare(key.depthFunc, live, z, block.load(buffers.depth, live));
         if (key.stencilDepthFail != StencilOp::Keep) {
             updatedStencil = L::select(L::butNot(live, depthPass),
-                                       stencilAfter<L>(key.stencilDepthFail, stencil, in.stencilRef()), updatedStencil);
+                                       stencilAfter<L>(key.stencilDepthFail, stencil, stencilRef), updatedStencil);
         }
         live = depthPass;
         if (key.depthWrite) block.store(buffers.depth, live, z);
     }
     if (key.stencilTest) {
         if (key.stencilDepthPass != StencilOp::Keep) {
-            updatedStencil = L::select(live, stencilAfter<L>(key.stencilDepthPass, stencil, in.stencilRef()), updatedStencil);
+            updatedStencil = L::select(live, stencilAfter<L>(key.stencilDepthPass, stencil, stencilRef), updatedStencil);
         }
         const Int writeMask = in.stencilWriteMask();
         const Int kept = L::bitAnd(stencil, L::bitXor(writeMask, L::ints(-1)));

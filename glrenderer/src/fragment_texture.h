@@ -80,6 +80,14 @@ public:
         wordToFloats<L>(word, texel);
     }
 
+    // The texel word at (x, y) of level 0 under the key's wraps, nearest: a depth or stencil
+    // image's value (TexelUse).
+    [[gnu::always_inline]] inline Int word(const FragmentKey& key, Float x, Float y, Mask live) const {
+        Float s, t;
+        coordinates(x, y, s, t);
+        return sampleLevel(key, TextureFilter::Nearest, s, t, level(0), live);
+    }
+
     const Float* envColor() const { return envColor_; }
 
 private:

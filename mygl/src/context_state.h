@@ -130,6 +130,8 @@ struct Context::State {
     PixelStoreModes pack, unpack;  // glPixelStore
     PixelModes pixelModes;  // glPixelTransfer, glPixelZoom
     PixelMaps pixelMaps;    // glPixelMap
+    // glDrawPixels' and glCopyPixels' depth, stencil and index values, reused from call to call.
+    std::vector<std::uint32_t> pixelValues;
     TextureUnit textures;  // (issue 16)
     DisplayLists lists;
     ClientArrays arrays;

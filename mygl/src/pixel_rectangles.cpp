@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <span>
 #include <vector>
 
 #include "compiled.h"
 #include "pixel_unpack.h"
+#include "pixel_values.h"
 
 namespace mygl {
 namespace {
@@ -57,15 +59,16 @@ void drawImage(Context::State& s, glrenderer::PixelImage image) {
     s.pipeline.drawPixels(s.draw, image);
 }
 
-// Draws width x height colours (bottom row first) through the pixel transfer.
+// Draws width x height colours (bottom row first) through the pixel transfer (unless they
+// come from colour indices, which the reference's program draws without it).
 void drawColors(Context::State& s, int width, int height, const std::vector<glm::vec4>& colors,
-                bool topRowFirst = false) {
+                bool topRowFirst = false, bool transfer = true) {
     glrenderer::PixelImage image;
     image.width = width;
     image.height = height;
     image.topRowFirst = topRowFirst;
     std::vector<glm::vec4> transferred;
-    if (s.pixelModes.transfersColor()) transferred = transferredImage(s, width, height, colors, topRowFirst);
+    if (transfer && s.pixelModes.transfersColor()) transferred = transferredImage(s, width, height, colors, topRowFirst);
     image.colors = transferred.empty() ? colors : transferred;
     drawImage(s, image);
 }
@@ -83,8 +86,8 @@ std::vector<std::uint32_t> rgbaWords(const void* pixels, int width, int height, 
     return words;
 }
 
-bool isColorFormat(GLenum format) {
-    return isPixelFormat(format) && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX && format != GL_DEPTH_COMPONENT;
+bool isValueFormat(GLenum format) {
+    return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
 }
 
 // The GL errors of glDrawPixels' arguments (GL_NO_ERROR if it may draw).
@@ -93,9 +96,31 @@ GLenum drawPixelsError(GLsizei width, GLsizei height, GLenum format, GLenum type
     if (!isPixelFormat(format) || !isPixelType(type)) return GL_INVALID_ENUM;
     const bool indexFormat = format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
     if (type == GL_BITMAP && !indexFormat) return GL_INVALID_ENUM;
-    // Not yet: colour indices through the index maps, stencil and depth images.
-    if (!isColorFormat(format)) return GL_INVALID_OPERATION;
     return GL_NO_ERROR;
+}
+
+// Draws width x height depth, stencil or index values (bottom row first, as extractValues
+// keeps them; `values` is turned into the image's words in place).
+void drawValues(Context::State& s, int width, int height, GLenum format, GLenum type, std::vector<std::uint32_t>& values) {
+    if (format == GL_COLOR_INDEX) {
+        std::vector<glm::vec4> colors(values.size());
+        std::transform(values.begin(), values.end(), colors.begin(),
+                       [&](std::uint32_t index) { return drawnIndexColor(index, type, s.pixelMaps); });
+        return drawColors(s, width, height, colors, false, false);
+    }
+    glrenderer::PixelImage image;
+    image.width = width;
+    image.height = height;
+    if (format == GL_DEPTH_COMPONENT) {
+        for (std::uint32_t& v : values) v = drawnDepth24(v, type, s.pixelModes);
+        image.use = glrenderer::TexelUse::Depth;
+        image.color = s.rasterColor;
+    } else {
+        for (std::uint32_t& v : values) v = drawnStencil(v, type, s.pixelModes, s.pixelMaps);
+        image.use = glrenderer::TexelUse::Stencil;
+    }
+    image.words = values;
+    drawImage(s, image);
 }
 
 void drawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
@@ -104,6 +129,10 @@ void drawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type, const
     if (const GLenum error = drawPixelsError(width, height, format, type)) return setError(*s, error);
     if (s->renderMode == GL_FEEDBACK) return writeFeedbackRasterPosition(*s, GL_DRAW_PIXEL_TOKEN);
     if (!pixels || width == 0 || height == 0 || !s->rasterValid || s->renderMode != GL_RENDER) return;
+    if (isValueFormat(format)) {
+        extractValues(pixels, width, height, type, s->unpack, s->pixelValues);
+        return drawValues(*s, width, height, format, type, s->pixelValues);
+    }
     if (format == GL_RGBA && type == GL_UNSIGNED_BYTE && !s->pixelModes.transfersColor()) {
         const std::vector<std::uint32_t> words = rgbaWords(pixels, width, height, s->unpack);
         glrenderer::PixelImage image;
@@ -122,6 +151,18 @@ CompiledCall keptDrawPixels(const Context::State& s, GLsizei width, GLsizei heig
                             const void* pixels) {
     if (drawPixelsError(width, height, format, type) != GL_NO_ERROR || !pixels) {
         return [=] { drawPixels(width, height, format, type, nullptr); };
+    }
+    if (isValueFormat(format)) {
+        std::vector<std::uint32_t> kept;
+        extractValues(pixels, width, height, type, s.unpack, kept);
+        return [width, height, format, type, kept = std::move(kept)] {
+            Context::State* state = stateOutsideBeginEnd();
+            if (!state) return;
+            if (state->renderMode == GL_FEEDBACK) return writeFeedbackRasterPosition(*state, GL_DRAW_PIXEL_TOKEN);
+            if (!state->rasterValid || state->renderMode != GL_RENDER) return;
+            state->pixelValues.assign(kept.begin(), kept.end());
+            drawValues(*state, width, height, format, type, state->pixelValues);
+        };
     }
     return [width, height, colors = unpackDrawnImage(pixels, width, height, format, type, s.unpack)] {
         Context::State* state = stateOutsideBeginEnd();
@@ -158,22 +199,44 @@ Run insideWindow(std::int64_t start, std::int64_t length, int limit) {
     return {first, std::max<std::int64_t>(end - first, 0)};
 }
 
-// The reference copies colours with a blit (no fragment operations but the scissor, the source
-// and target cut to the window and the scissor box) when nothing would change them on the way,
-// at zoom 1, and the cut rectangles do not overlap (Mesa's blit_copy_pixels: the colour mask is
-// not among its conditions, and a blit writes every channel). Returns false when it would draw.
-bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei height, int targetX, int targetY) {
+// The window's depth or stencil values in a rectangle, bottom row first, into `values`; parts
+// outside the window read as 0 (as the reference's new texture, like colours).
+void windowValues(std::span<const std::uint32_t> buffer, int fbWidth, int fbHeight, GLint x, GLint y, GLsizei width,
+                  GLsizei height, std::vector<std::uint32_t>& values) {
+    values.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0u);
+    for (std::int64_t row = 0; row < height; ++row) {
+        const std::int64_t windowY = std::int64_t{y} + row;
+        if (windowY < 0 || windowY >= fbHeight) continue;
+        for (std::int64_t column = 0; column < width; ++column) {
+            const std::int64_t windowX = std::int64_t{x} + column;
+            if (windowX < 0 || windowX >= fbWidth) continue;
+            values[static_cast<std::size_t>(row * width + column)] = buffer[static_cast<std::size_t>(windowY * fbWidth + windowX)];
+        }
+    }
+}
+
+// Whether the reference copies colours with a blit: nothing would change them on the way, at
+// zoom 1 (Mesa's blit_copy_pixels: the colour mask is not among its conditions, and a blit
+// writes every channel). Depth and stencil copies never blit (llvmpipe cannot render into its
+// depth-stencil format with a blit: measured, they draw).
+bool blitsColors(const Context::State& s) {
+    if (s.pixelModes.zoomX != 1.0f || s.pixelModes.zoomY != 1.0f) return false;
     const glrenderer::DrawState& d = s.draw;
     const glrenderer::FragmentOps& ops = d.fragmentOps;
     const glrenderer::StencilState& stencil = ops.stencil;
     const bool stencilKeeps = !stencil.enabled || (stencil.fail == glrenderer::StencilOp::Keep &&
                                                    stencil.depthFail == glrenderer::StencilOp::Keep &&
                                                    stencil.depthPass == glrenderer::StencilOp::Keep);
-    const bool plainCopy = s.pixelModes.zoomX == 1.0f && s.pixelModes.zoomY == 1.0f && !s.pixelModes.transfersColor() &&
-                           !ops.blend && !ops.alphaTest && (!ops.logicOpEnabled || ops.logicOp == glrenderer::LogicOp::Copy) &&
-                           (!d.depthTest || (d.depthFunc == glrenderer::CompareFunc::Always && !d.depthWrite)) &&
-                           d.fog.mode == glrenderer::FogMode::Off && stencilKeeps;
-    if (!plainCopy) return false;
+    return !s.pixelModes.transfersColor() && !ops.blend && !ops.alphaTest &&
+           (!ops.logicOpEnabled || ops.logicOp == glrenderer::LogicOp::Copy) &&
+           (!d.depthTest || (d.depthFunc == glrenderer::CompareFunc::Always && !d.depthWrite)) &&
+           d.fog.mode == glrenderer::FogMode::Off && stencilKeeps;
+}
+
+// The reference's blit of colours (no fragment operation but the scissor): the source and
+// target cut to the window and the scissor box, when the cut rectangles do not overlap.
+// Returns false when it would draw instead.
+bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei height, int targetX, int targetY) {
     auto& fb = s.framebuffer;
     // The source cut to the window, then the target (moving the source with it).
     Run columns = insideWindow(x, width, fb.width()), rows = insideWindow(y, height, fb.height());
@@ -186,7 +249,7 @@ bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei heig
         const std::int64_t end = std::min<std::int64_t>(run.first + run.length, std::int64_t{boxStart} + boxLength);
         return Run{first, std::max<std::int64_t>(end - first, 0)};
     };
-    const glrenderer::ScissorBox& box = ops.scissor;
+    const glrenderer::ScissorBox& box = s.draw.fragmentOps.scissor;
     const Run targetColumns = targetRun(toX, columns.length, fb.width(), box.enabled, box.x, box.width);
     const Run targetRows = targetRun(toY, rows.length, fb.height(), box.enabled, box.y, box.height);
     columns = {columns.first + (targetColumns.first - toX), targetColumns.length};
@@ -203,12 +266,29 @@ bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei heig
     return true;
 }
 
+// glCopyPixels of depth or stencil drawn as the reference draws it: the values as a depth or
+// stencil image (depths through its 24-bit texture), rows top first, no pixel transfer; depth
+// images take the current colour (not the raster colour).
+void drawCopiedValues(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
+    const glrenderer::Framebuffer& fb = s.framebuffer;
+    const bool depth = type == GL_DEPTH;
+    windowValues(depth ? fb.depth() : fb.stencil(), fb.width(), fb.height(), x, y, width, height, s.pixelValues);
+    if (depth) std::transform(s.pixelValues.begin(), s.pixelValues.end(), s.pixelValues.begin(), resampledDepth24);
+    glrenderer::PixelImage image;
+    image.width = width;
+    image.height = height;
+    image.topRowFirst = true;
+    image.use = depth ? glrenderer::TexelUse::Depth : glrenderer::TexelUse::Stencil;
+    image.color = s.color;
+    image.words = s.pixelValues;
+    drawImage(s, image);
+}
+
 void copyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
     if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return setError(*s, GL_INVALID_ENUM);
-    if (type != GL_COLOR) return setError(*s, GL_INVALID_OPERATION);  // not yet: depth and stencil copies
     if (s->renderMode == GL_FEEDBACK) return writeFeedbackRasterPosition(*s, GL_COPY_PIXEL_TOKEN);
     if (width == 0 || height == 0 || !s->rasterValid || s->renderMode != GL_RENDER) return;
     int targetX = 0, targetY = 0;
@@ -219,8 +299,9 @@ void copyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
     drawCachedBitmaps(*s);
     endBatch(*s);
     s->pipeline.finish();
-    if (blitColors(*s, x, y, width, height, targetX, targetY)) return;
     // Read first, then draw: overlapping rectangles copy what was there before.
+    if (type != GL_COLOR) return drawCopiedValues(*s, x, y, width, height, type);
+    if (blitsColors(*s) && blitColors(*s, x, y, width, height, targetX, targetY)) return;
     drawColors(*s, width, height, windowColors(fb, x, y, width, height), true);
 }
 

@@ -7,26 +7,16 @@
 namespace mygl {
 namespace {
 
-template <class T>
-T readComponent(const std::uint8_t* p, bool swapBytes) {
-    std::uint8_t bytes[sizeof(T)];
-    std::memcpy(bytes, p, sizeof(T));
-    if (swapBytes) std::reverse(bytes, bytes + sizeof(T));
-    T value;
-    std::memcpy(&value, bytes, sizeof(T));
-    return value;
-}
-
 // Component i of type `type` at p, as a float.
 float component(const std::uint8_t* p, GLenum type, bool swapBytes) {
     switch (type) {
     case GL_UNSIGNED_BYTE: return static_cast<float>(*p) / 255.0f;
     case GL_BYTE: return std::max(static_cast<float>(static_cast<std::int8_t>(*p)) / 127.0f, -1.0f);
-    case GL_UNSIGNED_SHORT: return static_cast<float>(readComponent<std::uint16_t>(p, swapBytes)) / 65535.0f;
-    case GL_SHORT: return std::max(static_cast<float>(readComponent<std::int16_t>(p, swapBytes)) / 32767.0f, -1.0f);
-    case GL_UNSIGNED_INT: return static_cast<float>(readComponent<std::uint32_t>(p, swapBytes) / 4294967295.0);
-    case GL_INT: return static_cast<float>(std::max(readComponent<std::int32_t>(p, swapBytes) / 2147483647.0, -1.0));
-    case GL_FLOAT: return readComponent<float>(p, swapBytes);
+    case GL_UNSIGNED_SHORT: return static_cast<float>(readClientComponent<std::uint16_t>(p, swapBytes)) / 65535.0f;
+    case GL_SHORT: return std::max(static_cast<float>(readClientComponent<std::int16_t>(p, swapBytes)) / 32767.0f, -1.0f);
+    case GL_UNSIGNED_INT: return static_cast<float>(readClientComponent<std::uint32_t>(p, swapBytes) / 4294967295.0);
+    case GL_INT: return static_cast<float>(std::max(readClientComponent<std::int32_t>(p, swapBytes) / 2147483647.0, -1.0));
+    case GL_FLOAT: return readClientComponent<float>(p, swapBytes);
     default: return 0.0f;
     }
 }
@@ -37,11 +27,11 @@ float component(const std::uint8_t* p, GLenum type, bool swapBytes) {
 float drawnComponent(const std::uint8_t* p, GLenum type, bool swapBytes) {
     if (type == GL_UNSIGNED_BYTE) return static_cast<float>(*p) * (1.0f / 255.0f);
     if (type == GL_UNSIGNED_INT) {
-        const std::uint64_t wide = readComponent<std::uint32_t>(p, swapBytes);
+        const std::uint64_t wide = readClientComponent<std::uint32_t>(p, swapBytes);
         return static_cast<float>((wide * 65535u + 0x7FFFFFFFu) / 0xFFFFFFFFu) / 65535.0f;
     }
     if (type == GL_INT) {
-        const std::int32_t top = readComponent<std::int32_t>(p, swapBytes) >> 16;
+        const std::int32_t top = readClientComponent<std::int32_t>(p, swapBytes) >> 16;
         return std::max(static_cast<float>(top) / 32767.0f, -1.0f);
     }
     return component(p, type, swapBytes);

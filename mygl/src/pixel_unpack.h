@@ -1,6 +1,9 @@
 #pragma once
 // Client pixel data (glTexImage, glTexSubImage; glDrawPixels later) read into RGBA colours, as
 // GL's pixel transfer does for colour formats.
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -8,6 +11,18 @@
 #include "pixel_store.h"
 
 namespace mygl {
+
+// One component read from the program's memory at p, its bytes swapped under
+// GL_UNPACK_SWAP_BYTES.
+template <class T>
+T readClientComponent(const std::uint8_t* p, bool swapBytes) {
+    std::uint8_t bytes[sizeof(T)];
+    std::memcpy(bytes, p, sizeof(T));
+    if (swapBytes) std::reverse(bytes, bytes + sizeof(T));
+    T value;
+    std::memcpy(&value, bytes, sizeof(T));
+    return value;
+}
 
 // The width x height pixels at `pixels` under `modes`, each converted to RGBA: components to
 // float (unsigned c / (2^b - 1), signed c / (2^(b-1) - 1) as the reference converts them),

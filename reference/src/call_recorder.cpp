@@ -157,6 +157,12 @@ std::size_t imageBytes(GLsizei width, GLsizei height, GLenum format, GLenum type
     const std::size_t pixel = components * component;
     const std::size_t rowPixels = static_cast<std::size_t>(rowLength > 0 ? rowLength : width);
     const std::size_t a = alignment > 0 ? static_cast<std::size_t>(alignment) : 1;
+    if (type == GL_BITMAP) {  // rows of bits padded to the alignment; skipped pixels are bits
+        const std::size_t rowBytes = (rowPixels + 8 * a - 1) / (8 * a) * a;
+        const std::size_t skipBits = static_cast<std::size_t>(std::max(skipPixels, 0));
+        return static_cast<std::size_t>(std::max(skipRows, 0)) * rowBytes + skipBits / 8 +
+               static_cast<std::size_t>(height - 1) * rowBytes + (skipBits % 8 + static_cast<std::size_t>(width) + 7) / 8;
+    }
     std::size_t stride = rowPixels * pixel;
     if (component < a) stride = (stride + a - 1) / a * a;
     const std::size_t first = static_cast<std::size_t>(std::max(skipRows, 0)) * stride +

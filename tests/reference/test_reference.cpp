@@ -9,7 +9,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string_view>
+#include <utility>
 
 #include "gl11_functions.h"
 
@@ -19,6 +21,22 @@ int coveredPixels(const std::vector<std::uint8_t>& rgba) {
     int covered = 0;
     for (std::size_t i = 0; i < rgba.size(); i += 4) covered += rgba[i] != 0;
     return covered;
+}
+
+// `display` run on MyGL (40 x 30) while recorded, and the recording replayed on OSMesa: the
+// two frames.
+std::pair<reference::Image, reference::Image> recordedAndReplayed(const std::function<void()>& display) {
+    reference::CallRecorder recorder;
+    mygl::Context mygl(40, 30);
+    mygl.makeCurrent();
+    recorder.start();
+    display();
+    recorder.stop();
+    reference::Image ours{40, 30, mygl.readPixels()};
+    reference::OsmesaContext osmesa(40, 30);
+    osmesa.makeCurrent();
+    recorder.replay();
+    return {std::move(ours), reference::Image{40, 30, osmesa.readPixels()}};
 }
 
 }  // namespace
@@ -181,19 +199,44 @@ TEST(CallRecorder, DisplayListsAndVertexArraysReplayOnOsmesa) {
         glListBase(list);
         glCallLists(1, GL_UNSIGNED_BYTE, names);
     };
-    reference::CallRecorder recorder;
-    mygl::Context mygl(40, 30);
-    mygl.makeCurrent();
-    recorder.start();
-    display();
-    recorder.stop();
-    const reference::Image ours{40, 30, mygl.readPixels()};
-    reference::OsmesaContext osmesa(40, 30);
-    osmesa.makeCurrent();
-    recorder.replay();
-    const reference::Image theirs{40, 30, osmesa.readPixels()};
+    const auto [ours, theirs] = recordedAndReplayed(display);
     EXPECT_EQ(reference::compareImages(ours, theirs).differing, 0);
     EXPECT_GT(coveredPixels(theirs.rgba), 300);
+}
+
+TEST(CallRecorder, DepthStencilAndIndexImagesReplayOnOsmesa) {
+    // Exactly as many bytes as each image reads (a colour-index bitmap of 2 bytes a row), so
+    // that a recorder copying more reads past them (AddressSanitizer).
+    static const GLfloat depths[6 * 4] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f, 1.0f, 0.0f, 0.25f,
+                                          0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f, 1.0f, 0.0f, 0.25f};
+    static const GLubyte stencil[5 * 3] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+    static const GLubyte bits[2 * 3] = {0xA5, 0x80, 0x3C, 0x00, 0xFF, 0x80};
+    static const GLfloat red[2] = {0.2f, 1.0f}, oneRed = 0.7f;
+    const auto display = [] {
+        glClearColor(0.0f, 0.1f, 0.3f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_ALWAYS);
+        glColor3f(0.9f, 0.6f, 0.1f);
+        glRasterPos2f(-0.8f, -0.8f);
+        glDrawPixels(6, 4, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+        glRasterPos2f(0.2f, -0.8f);
+        glDrawPixels(5, 3, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil);
+        glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 2, red);
+        glPixelZoom(2.0f, 2.0f);
+        glRasterPos2f(-0.5f, 0.2f);
+        glDrawPixels(9, 3, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, stencil);
+        // One entry: every bit the same colour (the reference's bitmap bits are not matched yet).
+        glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 1, &oneRed);
+        glRasterPos2f(0.3f, 0.2f);
+        glDrawPixels(9, 3, GL_COLOR_INDEX, GL_BITMAP, bits);
+        glCopyPixels(0, 0, 10, 10, GL_DEPTH);
+        glPixelZoom(1.0f, 1.0f);
+    };
+    const auto [ours, theirs] = recordedAndReplayed(display);
+    EXPECT_EQ(reference::compareImages(ours, theirs).differing, 0);
+    EXPECT_GT(coveredPixels(theirs.rgba), 100);
 }
 
 // Compare mode replays what the recorder kept: a function MyGL implements that changes state or

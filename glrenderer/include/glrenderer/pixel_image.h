@@ -4,6 +4,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "glrenderer/texture.h"
+
 namespace glrenderer {
 
 // A glDrawPixels image: width x height colours (bottom row first) with its lower-left corner at
@@ -16,8 +18,14 @@ struct PixelImage {
     int width = 0, height = 0;
     float zoomX = 1, zoomY = 1;
     std::span<const glm::vec4> colors;
-    // Or, with no colours, the image as fragment colour words already (RGBA8, red in the low byte).
+    // Or, with no colours, the image as fragment colour words already (RGBA8, red in the low
+    // byte), or as 24-bit window depths or stencil values (`use`).
     std::span<const std::uint32_t> words;
+    // Depth images colour their fragments with `color` and go through the draw's fragment
+    // operations (fog and texturing aside, as the reference's depth program); stencil images
+    // write their values under the stencil write mask and the scissor alone, no colour.
+    TexelUse use = TexelUse::Color;
+    glm::vec4 color{1.0f};
     float z = 0;  // window depth in [0, 1] of every fragment
     // glCopyPixels' texture holds the rows top first, with t = 0 at the quad's top: the same
     // texels, but a centre on a texel boundary may fall the other way.

@@ -23,6 +23,10 @@ enum class MipmapFilter : std::uint8_t { None, Nearest, Linear };
 // Clamp is GL_CLAMP where a filter is LINEAR (or the mipmap filter): the reference samples it
 // in float, the border colour beyond the edges (fragment_texture_float.h).
 enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge, Clamp };
+// What the texels of a draw's texture give its fragments: colours for the environment, or
+// (the images of glDrawPixels and glCopyPixels of depth and stencil) each fragment's 24-bit
+// window depth or its stencil value, the texel word itself, sampled nearest.
+enum class TexelUse : std::uint8_t { Color, Depth, Stencil };
 
 // A texture's images (its mipmap levels, or level 0 alone), their texels expanded to RGBA8
 // words (R in the low byte) as the reference's 8-bit sampler sees them: luminance L as
@@ -59,6 +63,7 @@ struct TextureState {
     TextureFilter minFilter = TextureFilter::Nearest, magFilter = TextureFilter::Nearest;
     MipmapFilter mipFilter = MipmapFilter::None;
     TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+    TexelUse use = TexelUse::Color;
     glm::vec4 envColor{0.0f};  // GL_TEXTURE_ENV_COLOR, clamped
     // GL_TEXTURE_BORDER_COLOR as a Clamp wrap samples it: clamped, then taken as the base
     // format takes a colour (luminance (R, R, R, 1), ...); zero without a Clamp wrap.
