@@ -85,7 +85,7 @@ public:
     [[gnu::always_inline]] inline Int word(const FragmentKey& key, Float x, Float y, Mask live) const {
         Float s, t;
         coordinates(x, y, s, t);
-        return sampleLevel(key, TextureFilter::Nearest, s, t, level(0), live);
+        return sampleLevel(key, TextureFilter::Nearest, s, t, Level::of(*texture_, 0), live);
     }
 
     const Float* envColor() const { return envColor_; }
