@@ -12,16 +12,9 @@
 #include "fragment_ops_lanes.h"
 #include "fragment_texture.h"
 #include "lane_clamp.h"
+#include "plane_lanes.h"
 
 namespace glrenderer {
-
-template <class L>
-struct PlaneLanes {
-    typename L::Float a0, dadx, dady;
-
-    explicit PlaneLanes(const AttributePlane& p) : a0(L::floats(p.a0)), dadx(L::floats(p.dadx)), dady(L::floats(p.dady)) {}
-    typename L::Float at(typename L::Float x, typename L::Float y) const { return L::fma(dady, y, L::fma(dadx, x, a0)); }
-};
 
 // The reference's fragment colour conversion (color_convert.h, fragmentToUnorm8) in lanes.
 template <class L>

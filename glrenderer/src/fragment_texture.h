@@ -8,6 +8,7 @@
 
 #include "fragment_inputs.h"
 #include "glrenderer/texture.h"
+#include "plane_lanes.h"
 #include "triangle_setup.h"
 
 namespace glrenderer {
@@ -25,11 +26,30 @@ typename L::Int channel(typename L::Int word) {
     else return L::bitAnd(L::template shiftRightUnsigned<Shift>(word), L::ints(0xFF));
 }
 
-// The four bytes of words a and b lerped with weights w (0-255, 256 being one), as gallivm's
-// lerp of unorm8 values: a + ((w * (b - a) + 128) >> 8), the rounding of SSSE3's pmulhrsw.
+// A texel's four bytes as two words of 16-bit fields, each 0-255: bytes 0 and 2 (red, blue)
+// and bytes 1 and 3 (green, alpha). The bilinear and mipmap lerps work on them, as llvmpipe's
+// 8-bit sampler does, with no repacking between lerps.
 template <class L>
-[[gnu::always_inline]] inline typename L::Int lerpWords(typename L::Int w, typename L::Int a, typename L::Int b) {
-    return L::lerpBytes(w, a, b);
+struct TexelFields {
+    typename L::Int redBlue, greenAlpha;
+
+    static TexelFields of(typename L::Int word) {
+        const typename L::Int low = L::ints(0x00FF00FF);
+        return {L::bitAnd(word, low), L::bitAnd(L::template shiftRightUnsigned<8>(word), low)};
+    }
+    // Field 0 (low) or 1 (high) of a word as a float channel.
+    template <int Field>
+    static typename L::Float channel(typename L::Int fields) {
+        if constexpr (Field == 1) return unormToFloat<L>(L::template shiftRightUnsigned<16>(fields));
+        else return unormToFloat<L>(L::bitAnd(fields, L::ints(0xFFFF)));
+    }
+};
+
+// a and b lerped with weights w (0-255, 256 being one), as gallivm's lerp of unorm8 values:
+// a + ((w * (b - a) + 128) >> 8), the rounding of SSSE3's pmulhrsw.
+template <class L>
+[[gnu::always_inline]] inline TexelFields<L> lerpTexels(typename L::Int w, const TexelFields<L>& a, const TexelFields<L>& b) {
+    return {L::lerpFields(w, a.redBlue, b.redBlue), L::lerpFields(w, a.greenAlpha, b.greenAlpha)};
 }
 
 // gallivm's fast log2 (lp_build_fast_log2): floor(log2 x) - 1 plus the mantissa in [1, 2),
@@ -61,22 +81,24 @@ public:
         Float s, t;
         coordinates(x, y, w, s, t);
         const Level zero = level(0);
-        Int word;
+        TexelFields<L> fields;
         if (key.mipFilter == MipmapFilter::None && key.minFilter == key.magFilter) {
-            word = sampleLevel(key, key.minFilter, s, t, zero, live);
+            fields = sampleLevel(key, key.minFilter, s, t, zero, live);
         } else {
             const Float lod = quadLod(key, x, y);
-            word = minified(key, s, t, lod, live);
+            fields = minified(key, s, t, lod, live);
             if (key.minFilter != key.magFilter) {
                 // Magnified where lod <= 0: the magnification filter on level 0.
                 const Mask minifiedLanes = L::greaterThan(lod, L::floats(0.0f));
-                word = L::select(minifiedLanes, word, sampleLevel(key, key.magFilter, s, t, zero, live));
+                const TexelFields<L> magnified = sampleLevel(key, key.magFilter, s, t, zero, live);
+                fields = {L::select(minifiedLanes, fields.redBlue, magnified.redBlue),
+                          L::select(minifiedLanes, fields.greenAlpha, magnified.greenAlpha)};
             }
         }
-        texel[0] = unormToFloat<L>(channel<L, 0>(word));
-        texel[1] = unormToFloat<L>(channel<L, 8>(word));
-        texel[2] = unormToFloat<L>(channel<L, 16>(word));
-        texel[3] = unormToFloat<L>(channel<L, 24>(word));
+        texel[0] = TexelFields<L>::template channel<0>(fields.redBlue);
+        texel[1] = TexelFields<L>::template channel<0>(fields.greenAlpha);
+        texel[2] = TexelFields<L>::template channel<1>(fields.redBlue);
+        texel[3] = TexelFields<L>::template channel<1>(fields.greenAlpha);
     }
 
     const Float* envColor() const { return envColor_; }
@@ -96,17 +118,14 @@ private:
                 L::gather(texture_->offset.data(), index, live)};
     }
 
-    static Float planeAt(const AttributePlane& p, Float x, Float y) {
-        return L::fma(L::floats(p.dady), y, L::fma(L::floats(p.dadx), x, L::floats(p.a0)));
-    }
     // s/q and t/q at (x, y), as the reference's TXP: each times the reciprocal of q.
     void coordinates(Float x, Float y, Float w, Float& s, Float& t) const {
-        const Float oneOverQ = L::div(L::floats(1.0f), L::mul(planeAt(q_, x, y), w));
-        s = L::mul(L::mul(planeAt(s_, x, y), w), oneOverQ);
-        t = L::mul(L::mul(planeAt(t_, x, y), w), oneOverQ);
+        const Float oneOverQ = L::div(L::floats(1.0f), L::mul(q_.at(x, y), w));
+        s = L::mul(L::mul(s_.at(x, y), w), oneOverQ);
+        t = L::mul(L::mul(t_.at(x, y), w), oneOverQ);
     }
     void coordinates(Float x, Float y, Float& s, Float& t) const {
-        coordinates(x, y, L::div(L::floats(1.0f), planeAt(invW_, x, y)), s, t);
+        coordinates(x, y, L::div(L::floats(1.0f), invW_.at(x, y)), s, t);
     }
 
     // The level of detail of each lane's 2 x 2 quad (aligned on even internal x and y): the
@@ -132,7 +151,7 @@ private:
     }
 
     // The minification filter with the mipmap filter at `lod`.
-    [[gnu::always_inline]] inline Int minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
+    [[gnu::always_inline]] inline TexelFields<L> minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
         const Int last = L::ints(texture_->levelCount - 1);
         if (key.mipFilter == MipmapFilter::None) return sampleLevel(key, key.minFilter, s, t, level(0), live);
         if (key.mipFilter == MipmapFilter::Nearest) {
@@ -145,12 +164,12 @@ private:
         const Int index0 = L::minInt(L::maxInt(first, L::ints(0)), last);
         const Int index1 = L::minInt(L::maxInt(L::add(first, L::ints(1)), L::ints(0)), last);
         const Int weight = L::maxInt(L::truncateToInt(L::mul(L::sub(lod, floor), L::floats(256.0f))), L::ints(0));
-        const Int word0 = sampleLevel(key, key.minFilter, s, t, level(index0, live), live);
-        const Int word1 = sampleLevel(key, key.minFilter, s, t, level(index1, live), live);
-        return lerpWords<L>(weight, word0, word1);
+        const TexelFields<L> texel0 = sampleLevel(key, key.minFilter, s, t, level(index0, live), live);
+        const TexelFields<L> texel1 = sampleLevel(key, key.minFilter, s, t, level(index1, live), live);
+        return lerpTexels<L>(weight, texel0, texel1);
     }
 
-    [[gnu::always_inline]] inline Int sampleLevel(const FragmentKey& key, TextureFilter filter, Float s, Float t, const Level& l, Mask live) const {
+    [[gnu::always_inline]] inline TexelFields<L> sampleLevel(const FragmentKey& key, TextureFilter filter, Float s, Float t, const Level& l, Mask live) const {
         if (filter == TextureFilter::Nearest) {
             const Int i = nearest(key.wrapS, s, l.width, texture_->powerOfTwoWidth);
             const Int j = nearest(key.wrapT, t, l.height, texture_->powerOfTwoHeight);
@@ -159,9 +178,9 @@ private:
         Int i0, i1, j0, j1, wi, wj;
         linear(key.wrapS, s, l.width, texture_->powerOfTwoWidth, i0, i1, wi);
         linear(key.wrapT, t, l.height, texture_->powerOfTwoHeight, j0, j1, wj);
-        const Int top = lerpWords<L>(wi, fetch(l, i0, j0, live), fetch(l, i1, j0, live));
-        const Int bottom = lerpWords<L>(wi, fetch(l, i0, j1, live), fetch(l, i1, j1, live));
-        return lerpWords<L>(wj, top, bottom);
+        const TexelFields<L> top = lerpTexels<L>(wi, fetch(l, i0, j0, live), fetch(l, i1, j0, live));
+        const TexelFields<L> bottom = lerpTexels<L>(wi, fetch(l, i0, j1, live), fetch(l, i1, j1, live));
+        return lerpTexels<L>(wj, top, bottom);
     }
 
     // The texel index of coordinate c under NEAREST: floor(c * size), wrapped. REPEAT masks
@@ -207,11 +226,11 @@ private:
         }
     }
 
-    Int fetch(const Level& l, Int i, Int j, Mask live) const {
-        return L::gather(texture_->texels.data(), L::add(l.offset, L::add(L::mul(j, l.width), i)), live);
+    TexelFields<L> fetch(const Level& l, Int i, Int j, Mask live) const {
+        return TexelFields<L>::of(L::gather(texture_->texels.data(), L::add(l.offset, L::add(L::mul(j, l.width), i)), live));
     }
 
-    AttributePlane s_, t_, q_, invW_;
+    PlaneLanes<L> s_, t_, q_, invW_;
     const Texture* texture_;
     Float envColor_[4];
 };
