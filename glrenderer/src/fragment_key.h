@@ -59,6 +59,11 @@ struct FragmentKey {
     MipmapFilter mipFilter = MipmapFilter::None;
     TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
 
+    // Whether texturing needs a level of detail: mipmaps, or two filters to choose between.
+    constexpr bool samplesLod() const {
+        return textureEnv != TextureEnv::Off && (mipFilter != MipmapFilter::None || minFilter != magFilter);
+    }
+
     bool operator==(const FragmentKey&) const = default;
 };
 

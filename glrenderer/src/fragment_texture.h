@@ -75,17 +75,21 @@ public:
                     L::floats(in.textureEnvColor[3])} {}
 
     // The texel colour of the fragments at (x, y) (w their interpolated w), each channel in
-    // [0, 1], read for the lanes of `live`.
+    // [0, 1], read for the lanes of `live`. With `RowQuads`, the lanes are consecutive pixels of
+    // one row from an even x (RowBlock), and share the level of detail's coordinates.
+    template <bool RowQuads>
     [[gnu::always_inline]] inline void sample(const FragmentKey& key, Float x, Float y, Float w, Mask live,
                                               Float texel[4]) const {
         Float s, t;
         coordinates(x, y, w, s, t);
         const Level zero = level(0);
         TexelFields<L> fields;
-        if (key.mipFilter == MipmapFilter::None && key.minFilter == key.magFilter) {
+        if (!key.samplesLod()) {
             fields = sampleLevel(key, key.minFilter, s, t, zero, live);
         } else {
-            const Float lod = quadLod(key, x, y);
+            Float lod;
+            if constexpr (RowQuads) lod = rowQuadLod(key, x, y, s, t);
+            else lod = quadLod(key, x, y);
             fields = minified(key, s, t, lod, live);
             if (key.minFilter != key.magFilter) {
                 // Magnified where lod <= 0: the magnification filter on level 0.
@@ -140,11 +144,33 @@ private:
         coordinates(qx, qy, s00, t00);
         coordinates(L::add(qx, L::floats(1.0f)), qy, s10, t10);
         coordinates(qx, L::add(qy, L::floats(1.0f)), s01, t01);
+        return lodOfDifferences(key, L::sub(s10, s00), L::sub(t10, t00), L::sub(s01, s00), L::sub(t01, t00));
+    }
+
+    // quadLod for lanes on consecutive pixels of one row from an even x: lanes 2k and 2k + 1 are
+    // one row of a quad, whose coordinates (s, t) are the lanes' own; the quad's other row is
+    // evaluated at the lanes' columns. The same coordinates at the same pixels, so the same bits:
+    // the difference down the quad may come out negated (the lanes' row at its bottom), which
+    // IEEE subtraction makes exact and the square undoes.
+    [[gnu::always_inline]] inline Float rowQuadLod(const FragmentKey& key, Float x, Float y, Float s, Float t) const {
+        const Int row = L::roundToInt(y);
+        Float otherS, otherT;
+        coordinates(x, L::toFloat(L::bitXor(row, L::ints(1))), otherS, otherT);
+        const Mask onTop = L::lessThan(L::bitAnd(row, L::ints(1)), L::ints(1));
+        const Float topS = L::select(onTop, s, otherS), topT = L::select(onTop, t, otherT);
+        return lodOfDifferences(key, L::sub(L::duplicateOdd(topS), L::duplicateEven(topS)),
+                                L::sub(L::duplicateOdd(topT), L::duplicateEven(topT)),
+                                L::sub(L::duplicateEven(otherS), L::duplicateEven(s)),
+                                L::sub(L::duplicateEven(otherT), L::duplicateEven(t)));
+    }
+
+    // The level of detail from a quad's coordinate differences across (x) and down (y).
+    [[gnu::always_inline]] inline Float lodOfDifferences(const FragmentKey& key, Float sx, Float tx, Float sy, Float ty) const {
         const Float width = L::floats(static_cast<float>(texture_->width[0]));
-        const Float dsdx = L::mul(L::sub(s10, s00), width), dsdy = L::mul(L::sub(s01, s00), width);
+        const Float dsdx = L::mul(sx, width), dsdy = L::mul(sy, width);
         if (key.texture1D) return L::mul(fastLog2<L>(L::max(L::mul(dsdx, dsdx), L::mul(dsdy, dsdy))), L::floats(0.5f));
         const Float height = L::floats(static_cast<float>(texture_->height[0]));
-        const Float dtdx = L::mul(L::sub(t10, t00), height), dtdy = L::mul(L::sub(t01, t00), height);
+        const Float dtdx = L::mul(tx, height), dtdy = L::mul(ty, height);
         const Float rhoX = L::add(L::mul(dsdx, dsdx), L::mul(dtdx, dtdx));
         const Float rhoY = L::add(L::mul(dsdy, dsdy), L::mul(dtdy, dtdy));
         return L::mul(fastLog2<L>(L::max(rhoX, rhoY)), L::floats(0.5f));

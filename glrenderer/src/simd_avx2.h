@@ -127,6 +127,9 @@ struct Avx2Lanes {
         return _mm256_add_epi16(a, _mm256_mulhrs_epi16(w16, _mm256_slli_epi16(_mm256_sub_epi16(b, a), 7)));
     }
     static Mask greaterThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_GT_OQ)); }
+    // Lane 2k (even) or 2k + 1 (odd) in both lanes 2k and 2k + 1.
+    static Float duplicateEven(Float v) { return _mm256_moveldup_ps(v); }
+    static Float duplicateOdd(Float v) { return _mm256_movehdup_ps(v); }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
         return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), offsets, m, 4);

@@ -95,6 +95,9 @@ struct Avx512Lanes {
         return _mm512_inserti64x4(_mm512_castsi256_si512(lowHalf), highHalf, 1);
     }
     static Mask greaterThan(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
+    // Lane 2k (even) or 2k + 1 (odd) in both lanes 2k and 2k + 1.
+    static Float duplicateEven(Float v) { return _mm512_moveldup_ps(v); }
+    static Float duplicateOdd(Float v) { return _mm512_movehdup_ps(v); }
     static Mask notNegative(Int a) { return _mm512_cmpge_epi32_mask(a, _mm512_setzero_si512()); }
     static Mask lanesBetween(int first, int last) {
         const unsigned upTo = last >= 15 ? 0xFFFFu : last < 0 ? 0u : (2u << last) - 1;
