@@ -45,6 +45,10 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
                 TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
                 TextureWrap::Repeat, TextureWrap::Repeat),
+    // A fogged landscape with a mipmapped ground texture (bench-fog-textured-terrain).
+    withTexture(withFog(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), FogMode::Linear),
+                TextureEnv::Modulate, false, TextureBase::Rgb, TextureFilter::Linear, TextureFilter::Linear,
+                MipmapFilter::Linear, TextureWrap::Repeat, TextureWrap::Repeat),
     // glDrawPixels' quad without fragment operations (bench-draw-pixels).
     withTexture(makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false), TextureEnv::Replace, false,
                 TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
