@@ -71,6 +71,9 @@ public:
 
     explicit TextureLanes(const FragmentInputs& in)
         : s_(in.texCoord[0]), t_(in.texCoord[1]), q_(in.texCoord[2]), invW_(in.invW), texture_(in.texture),
+          width0_(L::floats(texture_ ? static_cast<float>(texture_->width[0]) : 0.0f)),
+          height0_(L::floats(texture_ ? static_cast<float>(texture_->height[0]) : 0.0f)),
+          lastLevel_(L::ints(texture_ ? texture_->levelCount - 1 : 0)),
           envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]), L::floats(in.textureEnvColor[2]),
                     L::floats(in.textureEnvColor[3])} {}
 
@@ -166,11 +169,9 @@ private:
 
     // The level of detail from a quad's coordinate differences across (x) and down (y).
     [[gnu::always_inline]] inline Float lodOfDifferences(const FragmentKey& key, Float sx, Float tx, Float sy, Float ty) const {
-        const Float width = L::floats(static_cast<float>(texture_->width[0]));
-        const Float dsdx = L::mul(sx, width), dsdy = L::mul(sy, width);
+        const Float dsdx = L::mul(sx, width0_), dsdy = L::mul(sy, width0_);
         if (key.texture1D) return L::mul(fastLog2<L>(L::max(L::mul(dsdx, dsdx), L::mul(dsdy, dsdy))), L::floats(0.5f));
-        const Float height = L::floats(static_cast<float>(texture_->height[0]));
-        const Float dtdx = L::mul(tx, height), dtdy = L::mul(ty, height);
+        const Float dtdx = L::mul(tx, height0_), dtdy = L::mul(ty, height0_);
         const Float rhoX = L::add(L::mul(dsdx, dsdx), L::mul(dtdx, dtdx));
         const Float rhoY = L::add(L::mul(dsdy, dsdy), L::mul(dtdy, dtdy));
         return L::mul(fastLog2<L>(L::max(rhoX, rhoY)), L::floats(0.5f));
@@ -178,7 +179,7 @@ private:
 
     // The minification filter with the mipmap filter at `lod`.
     [[gnu::always_inline]] inline TexelFields<L> minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
-        const Int last = L::ints(texture_->levelCount - 1);
+        const Int last = lastLevel_;
         if (key.mipFilter == MipmapFilter::None) return sampleLevel(key, key.minFilter, s, t, level(0), live);
         if (key.mipFilter == MipmapFilter::Nearest) {
             const Int index = L::minInt(L::maxInt(L::roundToInt(lod), L::ints(0)), last);
@@ -258,6 +259,8 @@ private:
 
     PlaneLanes<L> s_, t_, q_, invW_;
     const Texture* texture_;
+    Float width0_, height0_;  // level 0's size, for the level of detail
+    Int lastLevel_;
     Float envColor_[4];
 };
 
