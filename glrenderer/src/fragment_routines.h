@@ -214,11 +214,11 @@ struct RoutinesOf {
 };
 
 // The paths of lane type L, in constants: nothing runs at static initialization, where the CPU
-// may not have L's instructions.
-template <class L>
+// may not have L's instructions. `LodPaths`: FragmentPaths' lodPaths.
+template <class L, FragmentPaths::PathsOf LodPaths = nullptr>
 const FragmentPaths& fragmentPathsOf() {
     static constexpr auto fast = RoutinesOf<L>::fastPaths(std::make_index_sequence<std::size(kFastFragmentKeys)>());
-    static constexpr FragmentPaths paths(L::kName, fast, RoutinesOf<L>::anyKey());
+    static constexpr FragmentPaths paths(L::kName, fast, RoutinesOf<L>::anyKey(), LodPaths);
     return paths;
 }
 
