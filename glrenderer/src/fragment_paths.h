@@ -92,9 +92,8 @@ const FragmentPaths& scalarFragmentPaths();
 // 8 lanes of AVX2 with FMA; only after cpuHasAvx2Fma().
 const FragmentPaths& avx2FragmentPaths();
 // 16 lanes of AVX-512F; only after cpuHasAvx512(). Keys that sample a texture with a level of
-// detail take the AVX2 paths: their 14 gathers a block and 16-lane blocks on short spans made
-// bench-textured-cubes take twice as long at 16 lanes (AMD EPYC with AVX-512: 60 frames in
-// 4.0-4.4 s against 2.1-2.2 s), and bench-fog-textured-terrain about 15% longer.
+// detail take the AVX2 paths: with 14 gathers a block, 16-lane blocks on short spans made
+// bench-textured-cubes take 1.3-1.9 times as long (AMD EPYC, 150 frames, alternating runs).
 const FragmentPaths& avx512FragmentPaths();
 // The widest this CPU runs (widestLanes()).
 const FragmentPaths& bestFragmentPaths();
