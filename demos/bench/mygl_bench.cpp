@@ -28,7 +28,7 @@ using Clock = std::chrono::steady_clock;
 
 const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears",
                                "bench-gears-lists", "bench-mesh", "bench-lit-torus", "bench-fog-terrain",
-                               "bench-particles", "bench-textured-cubes", "bench-draw-pixels"};
+                               "bench-fog-textured-terrain", "bench-particles", "bench-textured-cubes", "bench-draw-pixels"};
 
 struct Variant {
     std::string name;

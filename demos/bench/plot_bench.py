@@ -16,7 +16,8 @@ def main(csv_path, png_path):
     sizes = sorted({r["size"] for r in rows}, key=lambda s: int(s.split("x")[0]))
     variants = sorted({r["variant"] for r in rows})
     scenes = sorted({r["scene"] for r in rows})
-    markers = dict(zip(scenes, "osD^v<>phX*P"))
+    shapes = "osD^v<>phX*Pd8H"  # repeated when scenes outnumber them
+    markers = {scene: shapes[i % len(shapes)] for i, scene in enumerate(scenes)}
     colors = {v: plt.cm.tab10(i % 10) for i, v in enumerate(variants)}
     fig, axes = plt.subplots(1, len(sizes), figsize=(7 * len(sizes) + 2, 5.5), squeeze=False)
     for ax, size in zip(axes[0], sizes):

@@ -296,10 +296,11 @@ void gears(int width, int height, int frame, bool fromLists) {
     }
 }
 
-// A wavy terrain of 224 x 224 quads (100352 triangles), a colour per vertex by height.
+// A wavy terrain of 224 x 224 quads (100352 triangles), a colour per vertex by height and
+// texture coordinates that repeat a ground texture 12 times across it.
 struct Terrain {
     static constexpr int kQuads = 224;
-    std::vector<GLfloat> positions, colors;
+    std::vector<GLfloat> positions, colors, texCoords;
     std::vector<GLuint> indices;
     Terrain() {
         constexpr int n = kQuads + 1;
@@ -309,6 +310,7 @@ struct Terrain {
                 const float h = 0.12f * std::sin(7.0f * x) * std::cos(5.0f * y) + 0.05f * std::sin(23.0f * x * y);
                 positions.insert(positions.end(), {x, y, h});
                 colors.insert(colors.end(), {0.3f + 2.0f * h, 0.6f - h, 0.4f + 3.0f * h});
+                texCoords.insert(texCoords.end(), {static_cast<float>(i) * 12.0f / kQuads, static_cast<float>(j) * 12.0f / kQuads});
             }
         }
         for (int j = 0; j < kQuads; ++j) {
@@ -328,8 +330,9 @@ void drawBenchGearsLists(int width, int height, int frame) { gears(width, height
 
 namespace {
 
-// The terrain mesh seen from above at an angle, turning with the frame, after `setup`.
-void terrainScene(int width, int height, int frame, void (*setup)()) {
+// The terrain mesh seen from above at an angle, turning with the frame, after `setup`; with
+// its texture coordinates when `textured`.
+void terrainScene(int width, int height, int frame, void (*setup)(), bool textured = false) {
     static const Terrain terrain;
     beginFrame(width, height, true, true);
     setup();
@@ -340,7 +343,12 @@ void terrainScene(int width, int height, int frame, void (*setup)()) {
     glEnableClientState(GL_COLOR_ARRAY);
     glVertexPointer(3, GL_FLOAT, 0, terrain.positions.data());
     glColorPointer(3, GL_FLOAT, 0, terrain.colors.data());
+    if (textured) {
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glTexCoordPointer(2, GL_FLOAT, 0, terrain.texCoords.data());
+    }
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(terrain.indices.size()), GL_UNSIGNED_INT, terrain.indices.data());
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
     glDisableClientState(GL_COLOR_ARRAY);
     glDisableClientState(GL_VERTEX_ARRAY);
 }
@@ -351,15 +359,61 @@ void drawBenchMesh(int width, int height, int frame) {
     terrainScene(width, height, frame, [] {});
 }
 
-void drawBenchFogTerrain(int width, int height, int frame) {
-    terrainScene(width, height, frame, [] {
-        const GLfloat haze[] = {0.7f, 0.75f, 0.8f, 1.0f};
-        glEnable(GL_FOG);
-        glFogi(GL_FOG_MODE, GL_LINEAR);
-        glFogf(GL_FOG_START, 1.8f);
-        glFogf(GL_FOG_END, 3.6f);
-        glFogfv(GL_FOG_COLOR, haze);
-    });
+namespace {
+
+// LINEAR fog into a haze from 1.8 to 3.6 units from the eye.
+void hazeFog() {
+    const GLfloat haze[] = {0.7f, 0.75f, 0.8f, 1.0f};
+    glEnable(GL_FOG);
+    glFogi(GL_FOG_MODE, GL_LINEAR);
+    glFogf(GL_FOG_START, 1.8f);
+    glFogf(GL_FOG_END, 3.6f);
+    glFogfv(GL_FOG_COLOR, haze);
+}
+
+// A 64 x 64 ground texture (grass with pebbles, from a hash of the texel) with mipmaps from
+// gluBuild2DMipmaps, LINEAR_MIPMAP_LINEAR, repeating, MODULATE: made once per context under a
+// name of its own, then only bound.
+void bindGroundTexture() {
+    constexpr GLuint kGround = 2;  // apart from bench-textured-cubes' texture 1
+    const bool made = glIsTexture(kGround);
+    glBindTexture(GL_TEXTURE_2D, kGround);
+    if (!made) {
+        constexpr int kSide = 64;
+        std::vector<GLubyte> texels;
+        for (int y = 0; y < kSide; ++y) {
+            for (int x = 0; x < kSide; ++x) {
+                const unsigned hash = (static_cast<unsigned>(x) * 73856093u) ^ (static_cast<unsigned>(y) * 19349663u);
+                const int noise = static_cast<int>(hash >> 7 & 63);
+                const bool pebble = (hash >> 13 & 31) == 0;
+                texels.insert(texels.end(), {GLubyte(pebble ? 170 : 70 + noise), GLubyte(pebble ? 165 : 130 + noise),
+                                             GLubyte(pebble ? 150 : 50 + noise / 2)});
+            }
+        }
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGB, kSide, kSide, GL_RGB, GL_UNSIGNED_BYTE, texels.data());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    }
+}
+
+}  // namespace
+
+void drawBenchFogTerrain(int width, int height, int frame) { terrainScene(width, height, frame, hazeFog); }
+
+void drawBenchFogTexturedTerrain(int width, int height, int frame) {
+    terrainScene(
+        width, height, frame,
+        [] {
+            hazeFog();
+            bindGroundTexture();
+            glEnable(GL_TEXTURE_2D);
+        },
+        true);
+    glDisable(GL_TEXTURE_2D);
 }
 
 // Particles: an opaque floor, then 1600 smooth quads (as triangle pairs) and 400 points of varying alpha blended with

@@ -12,6 +12,7 @@ void drawBenchGearsLists(int width, int height, int frame);  // the same gears f
 void drawBenchMesh(int width, int height, int frame);   // a 100k-triangle mesh through glDrawElements
 void drawBenchLitTorus(int width, int height, int frame);  // 16k triangles lit by a spot and a directional light
 void drawBenchFogTerrain(int width, int height, int frame);  // the mesh's terrain under LINEAR fog
+void drawBenchFogTexturedTerrain(int width, int height, int frame);  // the fogged terrain with a mipmapped ground texture
 void drawBenchParticles(int width, int height, int frame);  // 2000 alpha-blended quads and points over a floor
 void drawBenchTexturedCubes(int width, int height, int frame);  // bench-cubes textured: mipmaps, LINEAR_MIPMAP_LINEAR
 void drawBenchDrawPixels(int width, int height, int frame);  // a 256x256 RGBA image, zoomed over the window

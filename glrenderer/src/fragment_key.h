@@ -70,6 +70,11 @@ struct FragmentKey {
     // Whether the texture environment colours the fragments.
     constexpr bool texturesColor() const { return textureEnv != TextureEnv::Off && texelUse == TexelUse::Color; }
 
+    // Whether texturing needs a level of detail: mipmaps, or two filters to choose between.
+    constexpr bool samplesLod() const {
+        return textureEnv != TextureEnv::Off && (mipFilter != MipmapFilter::None || minFilter != magFilter);
+    }
+
     bool operator==(const FragmentKey&) const = default;
 };
 

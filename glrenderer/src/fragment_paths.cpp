@@ -5,6 +5,7 @@
 namespace glrenderer {
 
 const FragmentRoutine& FragmentPaths::routine(FragmentKey key) const {
+    if (lodPaths_ && key.samplesLod()) return lodPaths_().routine(key);
     for (const FastPath& fast : fast_) {
         if (fast.key == key) return fast.routine;
     }

@@ -31,6 +31,8 @@ template <class L>
     if constexpr (L::kCheapMasks && L::kCount > 1) {
         first -= static_cast<int>((rowStart + begin) % L::kCount);
     }
+    // A level of detail per 2 x 2 quad: lanes in pairs from an even x (RowBlock::kRowQuads).
+    if (L::kCount > 1 && key.samplesLod()) first &= ~1;
     for (int px = first; px <= end; px += L::kCount) {
         const typename L::Mask covered = L::lanesBetween(begin - px, end - px);
         const typename L::Float x = L::toFloat(L::add(L::ints(px), L::laneIndex()));
@@ -59,6 +61,8 @@ class NarrowBlock {
 public:
     using Int = typename L::Int;
     using Mask = typename L::Mask;
+
+    static constexpr bool kRowQuads = false;  // a level of detail per lane
 
     // `laneOffsets` holds each lane's dx - dy * (framebuffer width), `rowLanes` the lanes of each
     // row of the block.
@@ -210,11 +214,11 @@ struct RoutinesOf {
 };
 
 // The paths of lane type L, in constants: nothing runs at static initialization, where the CPU
-// may not have L's instructions.
-template <class L>
+// may not have L's instructions. `LodPaths`: FragmentPaths' lodPaths.
+template <class L, FragmentPaths::PathsOf LodPaths = nullptr>
 const FragmentPaths& fragmentPathsOf() {
     static constexpr auto fast = RoutinesOf<L>::fastPaths(std::make_index_sequence<std::size(kFastFragmentKeys)>());
-    static constexpr FragmentPaths paths(L::kName, fast, RoutinesOf<L>::anyKey());
+    static constexpr FragmentPaths paths(L::kName, fast, RoutinesOf<L>::anyKey(), LodPaths);
     return paths;
 }
 

@@ -12,16 +12,9 @@
 #include "fragment_ops_lanes.h"
 #include "fragment_texture.h"
 #include "lane_clamp.h"
+#include "plane_lanes.h"
 
 namespace glrenderer {
-
-template <class L>
-struct PlaneLanes {
-    typename L::Float a0, dadx, dady;
-
-    explicit PlaneLanes(const AttributePlane& p) : a0(L::floats(p.a0)), dadx(L::floats(p.dadx)), dady(L::floats(p.dady)) {}
-    typename L::Float at(typename L::Float x, typename L::Float y) const { return L::fma(dady, y, L::fma(dadx, x, a0)); }
-};
 
 // The reference's fragment colour conversion (color_convert.h, fragmentToUnorm8) in lanes.
 template <class L>
@@ -82,7 +75,9 @@ public:
         return L::roundToInt(L::mul(clampUnit<L>(z), L::floats(16777215.0f)));
     }
 
-    // The colour words of the lanes `live`, packed R, G, B, A from the low byte.
+    // The colour words of the lanes `live`, packed R, G, B, A from the low byte. `RowQuads`: the
+    // lanes are consecutive pixels of a row from an even x (RowBlock::kRowQuads).
+    template <bool RowQuads>
     [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y, typename L::Mask live) const {
         const bool textured = key.texturesColor();
         if (key.shading == Shading::Flat && key.fog == FogMode::Off && !textured && !key.colorSum) return flat_;
@@ -102,7 +97,7 @@ public:
         }
         if (textured) {
             Float texel[4], c[4] = {r, g, b, a};
-            texture_.sample(key, x, y, w, live, texel);
+            texture_.template sample<RowQuads>(key, x, y, w, live, texel);
             applyTextureEnv<L>(key, texel, texture_.envColor(), key.colorSum ? secondary : nullptr, c);
             r = c[0], g = c[1], b = c[2], a = c[3];
         } else if (key.colorSum) {
@@ -137,6 +132,10 @@ class RowBlock {
 public:
     using Int = typename L::Int;
     using Mask = typename L::Mask;
+
+    // Under a key that samples a level of detail, the first lane is at an even x (shadeSpan):
+    // lanes 2k and 2k + 1 are one row of a 2 x 2 quad.
+    static constexpr bool kRowQuads = L::kCount > 1;
 
     // `first` may lie a few pixels before the buffer, where only masked-off lanes point.
     RowBlock(std::ptrdiff_t first, bool whole) : first_(first), whole_(whole) {}
@@ -208,7 +207,7 @@ template <class L, class Block>
     // The scissor test was done on the primitive's bounds (drawableRect).
     Int rgba{};
     if (key.alphaFunc != CompareFunc::Always) {  // in bytes, as the reference compares
-        rgba = in.rgba(key, x, y, live);
+        rgba = in.template rgba<Block::kRowQuads>(key, x, y, live);
         live = L::compare(key.alphaFunc, live, L::shiftRight(rgba, 24), in.alphaRef());
     }
     Int stencil{}, updatedStencil{}, stencilRef{};
@@ -237,7 +236,7 @@ template <class L, class Block>
         block.store(buffers.stencil, stencilLanes, L::bitOr(kept, L::bitAnd(updatedStencil, writeMask)));
     }
     if (L::none(live)) return live;
-    if (key.alphaFunc == CompareFunc::Always) rgba = in.rgba(key, x, y, live);
+    if (key.alphaFunc == CompareFunc::Always) rgba = in.template rgba<Block::kRowQuads>(key, x, y, live);
     if (key.readsColor()) rgba = combineWithStored<L>(key, in, rgba, block.load(buffers.color, live));
     block.store(buffers.color, live, rgba);
     return live;

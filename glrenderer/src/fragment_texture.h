@@ -10,16 +10,38 @@
 #include "fragment_inputs.h"
 #include "fragment_texture_float.h"
 #include "glrenderer/texture.h"
+#include "plane_lanes.h"
 #include "texel_lanes.h"
 #include "triangle_setup.h"
 
 namespace glrenderer {
 
-// The four bytes of words a and b lerped with weights w (0-255, 256 being one), as gallivm's
-// lerp of unorm8 values: a + ((w * (b - a) + 128) >> 8), the rounding of SSSE3's pmulhrsw.
+// A texel's four bytes as two words of 16-bit fields, each 0-255: bytes 0 and 2 (red, blue)
+// and bytes 1 and 3 (green, alpha). The bilinear and mipmap lerps work on them, as llvmpipe's
+// 8-bit sampler does, with no repacking between lerps.
 template <class L>
-[[gnu::always_inline]] inline typename L::Int lerpWords(typename L::Int w, typename L::Int a, typename L::Int b) {
-    return L::lerpBytes(w, a, b);
+struct TexelFields {
+    typename L::Int redBlue, greenAlpha;
+
+    static TexelFields of(typename L::Int word) {
+        const typename L::Int low = L::ints(0x00FF00FF);
+        return {L::bitAnd(word, low), L::bitAnd(L::template shiftRightUnsigned<8>(word), low)};
+    }
+    // The texel words again.
+    typename L::Int word() const { return L::bitOr(redBlue, L::template shiftLeft<8>(greenAlpha)); }
+    // Field 0 (low) or 1 (high) of a word as a float channel.
+    template <int Field>
+    static typename L::Float channel(typename L::Int fields) {
+        if constexpr (Field == 1) return unormToFloat<L>(L::template shiftRightUnsigned<16>(fields));
+        else return unormToFloat<L>(L::bitAnd(fields, L::ints(0xFFFF)));
+    }
+};
+
+// a and b lerped with weights w (0-255, 256 being one), as gallivm's lerp of unorm8 values:
+// a + ((w * (b - a) + 128) >> 8), the rounding of SSSE3's pmulhrsw.
+template <class L>
+[[gnu::always_inline]] inline TexelFields<L> lerpTexels(typename L::Int w, const TexelFields<L>& a, const TexelFields<L>& b) {
+    return {L::lerpFields(w, a.redBlue, b.redBlue), L::lerpFields(w, a.greenAlpha, b.greenAlpha)};
 }
 
 // gallivm's fast log2 (lp_build_fast_log2): floor(log2 x) - 1 plus the mantissa in [1, 2),
@@ -43,10 +65,15 @@ public:
         : s_(in.texCoord[0]), t_(in.texCoord[1]), q_(in.texCoord[2]), invW_(in.invW), texture_(in.texture),
           envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]), L::floats(in.textureEnvColor[2]),
                     L::floats(in.textureEnvColor[3])},
+          width0_(L::floats(texture_ ? static_cast<float>(texture_->width[0]) : 0.0f)),
+          height0_(L::floats(texture_ ? static_cast<float>(texture_->height[0]) : 0.0f)),
+          lastLevel_(L::ints(texture_ ? texture_->levelCount - 1 : 0)),
           floatSampler_(in.texture, in.textureBorderColor) {}
 
     // The texel colour of the fragments at (x, y) (w their interpolated w), each channel in
-    // [0, 1], read for the lanes of `live`.
+    // [0, 1], read for the lanes of `live`. With `RowQuads`, the lanes are consecutive pixels of
+    // one row from an even x (RowBlock), and share the level of detail's coordinates.
+    template <bool RowQuads>
     [[gnu::always_inline]] inline void sample(const FragmentKey& key, Float x, Float y, Float w, Mask live,
                                               Float texel[4]) const {
         Float s, t;
@@ -64,20 +91,30 @@ public:
             return;
         }
         const Level zero = Level::of(*texture_, 0);
-        Int word;
-        if (key.mipFilter == MipmapFilter::None && key.minFilter == key.magFilter) {
-            word = sampleLevel(key, key.minFilter, s, t, zero, live);
+        TexelFields<L> fields;
+        if (!key.samplesLod()) {
+            fields = sampleLevel(key, key.minFilter, s, t, zero, live);
         } else {
-            const Float lod = quadLod(key, L::toFloat(L::bitAnd(L::roundToInt(x), L::ints(~1))),
-                                      L::toFloat(L::bitAnd(L::roundToInt(y), L::ints(~1))));
-            word = minified(key, s, t, lod, live);
+            Float lod;
+            if constexpr (RowQuads) {
+                lod = rowQuadLod(key, x, y, s, t);
+            } else {
+                lod = quadLod(key, L::toFloat(L::bitAnd(L::roundToInt(x), L::ints(~1))),
+                              L::toFloat(L::bitAnd(L::roundToInt(y), L::ints(~1))));
+            }
+            fields = minified(key, s, t, lod, live);
             if (key.minFilter != key.magFilter) {
                 // Magnified where lod <= 0: the magnification filter on level 0.
                 const Mask minifiedLanes = L::greaterThan(lod, L::floats(0.0f));
-                word = L::select(minifiedLanes, word, sampleLevel(key, key.magFilter, s, t, zero, live));
+                const TexelFields<L> magnified = sampleLevel(key, key.magFilter, s, t, zero, live);
+                fields = {L::select(minifiedLanes, fields.redBlue, magnified.redBlue),
+                          L::select(minifiedLanes, fields.greenAlpha, magnified.greenAlpha)};
             }
         }
-        wordToFloats<L>(word, texel);
+        texel[0] = TexelFields<L>::template channel<0>(fields.redBlue);
+        texel[1] = TexelFields<L>::template channel<0>(fields.greenAlpha);
+        texel[2] = TexelFields<L>::template channel<1>(fields.redBlue);
+        texel[3] = TexelFields<L>::template channel<1>(fields.greenAlpha);
     }
 
     // The texel word at (x, y) of level 0 under the key's wraps, nearest: a depth or stencil
@@ -85,7 +122,7 @@ public:
     [[gnu::always_inline]] inline Int word(const FragmentKey& key, Float x, Float y, Mask live) const {
         Float s, t;
         coordinates(x, y, s, t);
-        return sampleLevel(key, TextureFilter::Nearest, s, t, Level::of(*texture_, 0), live);
+        return sampleLevel(key, TextureFilter::Nearest, s, t, Level::of(*texture_, 0), live).word();
     }
 
     const Float* envColor() const { return envColor_; }
@@ -93,17 +130,14 @@ public:
 private:
     using Level = LevelLanes<L>;
 
-    static Float planeAt(const AttributePlane& p, Float x, Float y) {
-        return L::fma(L::floats(p.dady), y, L::fma(L::floats(p.dadx), x, L::floats(p.a0)));
-    }
     // s/q and t/q at (x, y), as the reference's TXP: each times the reciprocal of q.
     void coordinates(Float x, Float y, Float w, Float& s, Float& t) const {
-        const Float oneOverQ = L::div(L::floats(1.0f), L::mul(planeAt(q_, x, y), w));
-        s = L::mul(L::mul(planeAt(s_, x, y), w), oneOverQ);
-        t = L::mul(L::mul(planeAt(t_, x, y), w), oneOverQ);
+        const Float oneOverQ = L::div(L::floats(1.0f), L::mul(q_.at(x, y), w));
+        s = L::mul(L::mul(s_.at(x, y), w), oneOverQ);
+        t = L::mul(L::mul(t_.at(x, y), w), oneOverQ);
     }
     void coordinates(Float x, Float y, Float& s, Float& t) const {
-        coordinates(x, y, L::div(L::floats(1.0f), planeAt(invW_, x, y)), s, t);
+        coordinates(x, y, L::div(L::floats(1.0f), invW_.at(x, y)), s, t);
     }
 
     // The level of detail of the 2 x 2 quads at (qx, qy) (even internal x and y): the
@@ -116,19 +150,39 @@ private:
         coordinates(qx, qy, s00, t00);
         coordinates(L::add(qx, L::floats(1.0f)), qy, s10, t10);
         coordinates(qx, L::add(qy, L::floats(1.0f)), s01, t01);
-        const Float width = L::floats(static_cast<float>(texture_->width[0]));
-        const Float dsdx = L::mul(L::sub(s10, s00), width), dsdy = L::mul(L::sub(s01, s00), width);
+        return lodOfDifferences(key, L::sub(s10, s00), L::sub(t10, t00), L::sub(s01, s00), L::sub(t01, t00));
+    }
+
+    // quadLod for lanes on consecutive pixels of one row from an even x: lanes 2k and 2k + 1 are
+    // one row of a quad, whose coordinates (s, t) are the lanes' own; the quad's other row is
+    // evaluated at the lanes' columns. The same coordinates at the same pixels, so the same bits:
+    // the difference down the quad may come out negated (the lanes' row at its bottom), which
+    // IEEE subtraction makes exact and the square undoes.
+    [[gnu::always_inline]] inline Float rowQuadLod(const FragmentKey& key, Float x, Float y, Float s, Float t) const {
+        const Int row = L::roundToInt(y);
+        Float otherS, otherT;
+        coordinates(x, L::toFloat(L::bitXor(row, L::ints(1))), otherS, otherT);
+        const Mask onTop = L::lessThan(L::bitAnd(row, L::ints(1)), L::ints(1));
+        const Float topS = L::select(onTop, s, otherS), topT = L::select(onTop, t, otherT);
+        return lodOfDifferences(key, L::sub(L::duplicateOdd(topS), L::duplicateEven(topS)),
+                                L::sub(L::duplicateOdd(topT), L::duplicateEven(topT)),
+                                L::sub(L::duplicateEven(otherS), L::duplicateEven(s)),
+                                L::sub(L::duplicateEven(otherT), L::duplicateEven(t)));
+    }
+
+    // The level of detail from a quad's coordinate differences across (x) and down (y).
+    [[gnu::always_inline]] inline Float lodOfDifferences(const FragmentKey& key, Float sx, Float tx, Float sy, Float ty) const {
+        const Float dsdx = L::mul(sx, width0_), dsdy = L::mul(sy, width0_);
         if (key.texture1D) return L::mul(fastLog2<L>(L::max(L::mul(dsdx, dsdx), L::mul(dsdy, dsdy))), L::floats(0.5f));
-        const Float height = L::floats(static_cast<float>(texture_->height[0]));
-        const Float dtdx = L::mul(L::sub(t10, t00), height), dtdy = L::mul(L::sub(t01, t00), height);
+        const Float dtdx = L::mul(tx, height0_), dtdy = L::mul(ty, height0_);
         const Float rhoX = L::add(L::mul(dsdx, dsdx), L::mul(dtdx, dtdx));
         const Float rhoY = L::add(L::mul(dsdy, dsdy), L::mul(dtdy, dtdy));
         return L::mul(fastLog2<L>(L::max(rhoX, rhoY)), L::floats(0.5f));
     }
 
     // The minification filter with the mipmap filter at `lod`.
-    [[gnu::always_inline]] inline Int minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
-        const Int last = L::ints(texture_->levelCount - 1);
+    [[gnu::always_inline]] inline TexelFields<L> minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
+        const Int last = lastLevel_;
         if (key.mipFilter == MipmapFilter::None) return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, 0), live);
         if (key.mipFilter == MipmapFilter::Nearest) {
             const Int index = L::minInt(L::maxInt(L::roundToInt(lod), L::ints(0)), last);
@@ -140,23 +194,24 @@ private:
         const Int index0 = L::minInt(L::maxInt(first, L::ints(0)), last);
         const Int index1 = L::minInt(L::maxInt(L::add(first, L::ints(1)), L::ints(0)), last);
         const Int weight = L::maxInt(L::truncateToInt(L::mul(L::sub(lod, floor), L::floats(256.0f))), L::ints(0));
-        const Int word0 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index0, live), live);
-        const Int word1 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index1, live), live);
-        return lerpWords<L>(weight, word0, word1);
+        const TexelFields<L> texel0 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index0, live), live);
+        const TexelFields<L> texel1 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index1, live), live);
+        return lerpTexels<L>(weight, texel0, texel1);
     }
 
-    [[gnu::always_inline]] inline Int sampleLevel(const FragmentKey& key, TextureFilter filter, Float s, Float t, const Level& l, Mask live) const {
+    [[gnu::always_inline]] inline TexelFields<L> sampleLevel(const FragmentKey& key, TextureFilter filter, Float s, Float t, const Level& l, Mask live) const {
         if (filter == TextureFilter::Nearest) {
             const Int i = nearestIndex<L>(key.wrapS, s, l.width, texture_->powerOfTwoWidth);
             const Int j = nearestIndex<L>(key.wrapT, t, l.height, texture_->powerOfTwoHeight);
-            return l.fetch(*texture_, i, j, live);
+            return TexelFields<L>::of(l.fetch(*texture_, i, j, live));
         }
         Int i0, i1, j0, j1, wi, wj;
         linear(key.wrapS, s, l.width, texture_->powerOfTwoWidth, i0, i1, wi);
         linear(key.wrapT, t, l.height, texture_->powerOfTwoHeight, j0, j1, wj);
-        const Int top = lerpWords<L>(wi, l.fetch(*texture_, i0, j0, live), l.fetch(*texture_, i1, j0, live));
-        const Int bottom = lerpWords<L>(wi, l.fetch(*texture_, i0, j1, live), l.fetch(*texture_, i1, j1, live));
-        return lerpWords<L>(wj, top, bottom);
+        const auto fetch = [&](Int i, Int j) { return TexelFields<L>::of(l.fetch(*texture_, i, j, live)); };
+        const TexelFields<L> top = lerpTexels<L>(wi, fetch(i0, j0), fetch(i1, j0));
+        const TexelFields<L> bottom = lerpTexels<L>(wi, fetch(i0, j1), fetch(i1, j1));
+        return lerpTexels<L>(wj, top, bottom);
     }
 
     // The two texel indices and the weight (0-255) of coordinate c under LINEAR, in 8.8 fixed
@@ -186,9 +241,11 @@ private:
         }
     }
 
-    AttributePlane s_, t_, q_, invW_;
+    PlaneLanes<L> s_, t_, q_, invW_;
     const Texture* texture_;
     Float envColor_[4];
+    Float width0_, height0_;  // level 0's size, for the level of detail
+    Int lastLevel_;
     FloatTextureSampler<L> floatSampler_;
 };
 

@@ -119,20 +119,17 @@ struct Avx2Lanes {
     }
     static void storeWhole(std::uint32_t* pixels, Int v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(pixels), v); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return _mm256_blendv_epi8(ifClear, ifSet, m); }
-    // The four bytes of words a and b lerped with weights w (0-255): a + ((w * (b - a) + 128) >> 8)
-    // per byte, two bytes per 32-bit lane at once with pmulhrsw, as llvmpipe's sampler does.
-    static Int lerpBytes(Int w, Int a, Int b) {
-        const __m256i low = _mm256_set1_epi32(0x00FF00FF);
+    // The two 16-bit fields (each 0-255) of words a and b lerped with weights w (0-255):
+    // a + ((w * (b - a) + 128) >> 8) per field with pmulhrsw, as llvmpipe's sampler does. The
+    // result lies between a and b: no field carries into the next.
+    static Int lerpFields(Int w, Int a, Int b) {
         const __m256i w16 = _mm256_or_si256(w, _mm256_slli_epi32(w, 16));
-        const auto half = [&](__m256i x, __m256i y) {
-            const __m256i delta = _mm256_slli_epi16(_mm256_sub_epi16(y, x), 7);
-            return _mm256_and_si256(_mm256_add_epi16(x, _mm256_mulhrs_epi16(w16, delta)), low);
-        };
-        const __m256i even = half(_mm256_and_si256(a, low), _mm256_and_si256(b, low));
-        const __m256i odd = half(_mm256_and_si256(_mm256_srli_epi32(a, 8), low), _mm256_and_si256(_mm256_srli_epi32(b, 8), low));
-        return _mm256_or_si256(even, _mm256_slli_epi32(odd, 8));
+        return _mm256_add_epi16(a, _mm256_mulhrs_epi16(w16, _mm256_slli_epi16(_mm256_sub_epi16(b, a), 7)));
     }
     static Mask greaterThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_GT_OQ)); }
+    // Lane 2k (even) or 2k + 1 (odd) in both lanes 2k and 2k + 1.
+    static Float duplicateEven(Float v) { return _mm256_moveldup_ps(v); }
+    static Float duplicateOdd(Float v) { return _mm256_movehdup_ps(v); }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
         return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), offsets, m, 4);

@@ -83,18 +83,11 @@ struct Avx512Lanes {
 
     static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
-    // As Avx2Lanes::lerpBytes, on each 256-bit half (pmulhrsw needs AVX-512BW at this width).
-    static Int lerpBytes(Int w, Int a, Int b) {
+    // As Avx2Lanes::lerpFields, on each 256-bit half (pmulhrsw needs AVX-512BW at this width).
+    static Int lerpFields(Int w, Int a, Int b) {
         const auto half = [](__m256i w8, __m256i x, __m256i y) {
-            const __m256i low = _mm256_set1_epi32(0x00FF00FF);
             const __m256i w16 = _mm256_or_si256(w8, _mm256_slli_epi32(w8, 16));
-            const auto bytes = [&](__m256i p, __m256i q) {
-                const __m256i delta = _mm256_slli_epi16(_mm256_sub_epi16(q, p), 7);
-                return _mm256_and_si256(_mm256_add_epi16(p, _mm256_mulhrs_epi16(w16, delta)), low);
-            };
-            const __m256i even = bytes(_mm256_and_si256(x, low), _mm256_and_si256(y, low));
-            const __m256i odd = bytes(_mm256_and_si256(_mm256_srli_epi32(x, 8), low), _mm256_and_si256(_mm256_srli_epi32(y, 8), low));
-            return _mm256_or_si256(even, _mm256_slli_epi32(odd, 8));
+            return _mm256_add_epi16(x, _mm256_mulhrs_epi16(w16, _mm256_slli_epi16(_mm256_sub_epi16(y, x), 7)));
         };
         const __m256i lowHalf = half(_mm512_castsi512_si256(w), _mm512_castsi512_si256(a), _mm512_castsi512_si256(b));
         const __m256i highHalf = half(_mm512_extracti64x4_epi64(w, 1), _mm512_extracti64x4_epi64(a, 1),
@@ -102,6 +95,9 @@ struct Avx512Lanes {
         return _mm512_inserti64x4(_mm512_castsi256_si512(lowHalf), highHalf, 1);
     }
     static Mask greaterThan(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
+    // Lane 2k (even) or 2k + 1 (odd) in both lanes 2k and 2k + 1.
+    static Float duplicateEven(Float v) { return _mm512_moveldup_ps(v); }
+    static Float duplicateOdd(Float v) { return _mm512_movehdup_ps(v); }
     static Mask notNegative(Int a) { return _mm512_cmpge_epi32_mask(a, _mm512_setzero_si512()); }
     static Mask lanesBetween(int first, int last) {
         const unsigned upTo = last >= 15 ? 0xFFFFu : last < 0 ? 0u : (2u << last) - 1;

@@ -73,12 +73,12 @@ struct ScalarLanes {
     static Mask lessThan(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return m ? ifSet : ifClear; }
     static Mask greaterThan(Float a, Float b) { return a > b; }
-    // The four bytes of words a and b lerped with weight w (0-255): a + ((w * (b - a) + 128) >> 8)
-    // per byte, the rounding of llvmpipe's pmulhrsw.
-    static Int lerpBytes(Int w, Int a, Int b) {
+    // The two 16-bit fields (each 0-255) of words a and b lerped with weight w (0-255):
+    // a + ((w * (b - a) + 128) >> 8) per field, the rounding of llvmpipe's pmulhrsw.
+    static Int lerpFields(Int w, Int a, Int b) {
         Int out = 0;
-        for (int shift = 0; shift < 32; shift += 8) {
-            const auto x = static_cast<std::int32_t>((a >> shift) & 0xFF), y = static_cast<std::int32_t>((b >> shift) & 0xFF);
+        for (int shift = 0; shift < 32; shift += 16) {
+            const auto x = static_cast<std::int32_t>((a >> shift) & 0xFFFF), y = static_cast<std::int32_t>((b >> shift) & 0xFFFF);
             const std::int32_t lerped = x + ((static_cast<std::int32_t>(w) * (y - x) + 128) >> 8);
             out |= static_cast<Int>(lerped) << shift;
         }

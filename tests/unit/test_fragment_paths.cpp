@@ -218,7 +218,10 @@ WindowVertex randomVertex(std::mt19937& random, float spread) {
 TEST(FragmentPaths, FastKeysFindTheirPathsAndOtherKeysTheRoutineForAnyKey) {
     for (const FragmentPaths* paths : pathsOfThisCpu()) {
         for (const FragmentPaths::FastPath& fast : paths->fastPaths()) {
-            EXPECT_EQ(&paths->routine(fast.key), &fast.routine) << paths->name();
+            // A key with a level of detail may be served by other paths (AVX-512's by AVX2's).
+            const bool elsewhere = paths->lodPaths() && fast.key.samplesLod();
+            const FragmentRoutine& expected = elsewhere ? paths->lodPaths()().routine(fast.key) : fast.routine;
+            EXPECT_EQ(&paths->routine(fast.key), &expected) << paths->name();
         }
         const FragmentKey greater = makeFragmentKey(Shading::Perspective, true, CompareFunc::Greater, true);
         EXPECT_EQ(&paths->routine(greater), &paths->anyKey()) << paths->name();

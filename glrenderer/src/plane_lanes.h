@@ -1,0 +1,16 @@
+#pragma once
+// An attribute plane broadcast to the lanes of a lane type L (fragment_stage.h), evaluated at
+// pixel (x, y) with the planes' two fmas, in the same order at every width.
+#include "triangle_setup.h"
+
+namespace glrenderer {
+
+template <class L>
+struct PlaneLanes {
+    typename L::Float a0, dadx, dady;
+
+    explicit PlaneLanes(const AttributePlane& p) : a0(L::floats(p.a0)), dadx(L::floats(p.dadx)), dady(L::floats(p.dady)) {}
+    typename L::Float at(typename L::Float x, typename L::Float y) const { return L::fma(dady, y, L::fma(dadx, x, a0)); }
+};
+
+}  // namespace glrenderer
