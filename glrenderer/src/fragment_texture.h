@@ -216,7 +216,8 @@ private:
 
     // The two texel indices and the weight (0-255) of coordinate c under LINEAR, in 8.8 fixed
     // point: round(c * size * 256) - 128.
-    static void linear(TextureWrap wrap, Float c, Int size, bool pot, Int& i0, Int& i1, Int& weight) {
+    [[gnu::always_inline]] static inline void linear(TextureWrap wrap, Float c, Int size, bool pot, Int& i0, Int& i1,
+                                                     Int& weight) {
         const Int last = L::sub(size, L::ints(1));
         if (wrap == TextureWrap::Repeat && !pot) {
             const Float f = L::sub(c, L::floor(c));
