@@ -61,14 +61,17 @@ public:
     using Int = typename L::Int;
     using Mask = typename L::Mask;
 
+    // Only a textured key's texture is read: an untextured primitive's record may still point at
+    // the texture of the draw it last served, freed since.
     explicit TextureLanes(const FragmentInputs& in)
-        : s_(in.texCoord[0]), t_(in.texCoord[1]), q_(in.texCoord[2]), invW_(in.invW), texture_(in.texture),
+        : s_(in.texCoord[0]), t_(in.texCoord[1]), q_(in.texCoord[2]), invW_(in.invW),
+          texture_(in.key.textureEnv != TextureEnv::Off ? in.texture : nullptr),
           envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]), L::floats(in.textureEnvColor[2]),
                     L::floats(in.textureEnvColor[3])},
           width0_(L::floats(texture_ ? static_cast<float>(texture_->width[0]) : 0.0f)),
           height0_(L::floats(texture_ ? static_cast<float>(texture_->height[0]) : 0.0f)),
           lastLevel_(L::ints(texture_ ? texture_->levelCount - 1 : 0)),
-          floatSampler_(in.texture, in.textureBorderColor) {}
+          floatSampler_(texture_, in.textureBorderColor) {}
 
     // The texel colour of the fragments at (x, y) (w their interpolated w), each channel in
     // [0, 1], read for the lanes of `live`. With `RowQuads`, the lanes are consecutive pixels of

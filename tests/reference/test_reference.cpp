@@ -210,6 +210,7 @@ TEST(CallRecorder, DepthStencilAndIndexImagesReplayOnOsmesa) {
     static const GLfloat depths[6 * 4] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f, 1.0f, 0.0f, 0.25f,
                                           0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f, 1.0f, 0.0f, 0.25f};
     static const GLubyte stencil[5 * 3] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+    static const GLubyte indices[9 * 3] = {1, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 1, 1, 1, 0, 1, 0, 0, 1, 1, 1, 0, 0, 0, 1, 0, 1};
     static const GLubyte bits[2 * 3] = {0xA5, 0x80, 0x3C, 0x00, 0xFF, 0x80};
     static const GLfloat red[2] = {0.2f, 1.0f}, oneRed = 0.7f;
     const auto display = [] {
@@ -226,7 +227,7 @@ TEST(CallRecorder, DepthStencilAndIndexImagesReplayOnOsmesa) {
         glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 2, red);
         glPixelZoom(2.0f, 2.0f);
         glRasterPos2f(-0.5f, 0.2f);
-        glDrawPixels(9, 3, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, stencil);
+        glDrawPixels(9, 3, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, indices);
         // One entry: every bit the same colour (the reference's bitmap bits are not matched yet).
         glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 1, &oneRed);
         glRasterPos2f(0.3f, 0.2f);
