@@ -47,6 +47,21 @@ inline void clearedPerspectiveView(float distance) {
     glTranslatef(0.0f, 0.0f, -distance);
 }
 
+// Clears colour to `clear`, depth to `depth` and stencil to `stencil`, and looks at
+// [0, width] x [0, height] orthographically with depth in [-1, 1]: the view the pixel and
+// fragment-operation tests draw in.
+inline void clearedOrthoView(int width, int height, const GLfloat (&clear)[4], GLdouble depth, GLint stencil) {
+    glClearColor(clear[0], clear[1], clear[2], clear[3]);
+    glClearDepth(depth);
+    glClearStencil(stencil);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, width, 0, height, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+}
+
 // The colour (RGBA8) and 24-bit depth (as GL_UNSIGNED_INT) of every pixel, after glFinish.
 struct Frame {
     std::vector<GLubyte> color;

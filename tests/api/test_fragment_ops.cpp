@@ -39,17 +39,7 @@ StencilFrame readStencilFrame() {
 }
 
 // An orthographic view of [0, 48] x [0, 40] with depth in [-1, 1], cleared.
-void clearedView() {
-    glClearColor(0.2f, 0.4f, 0.6f, 0.5f);
-    glClearDepth(1.0);
-    glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, kWidth, 0, kHeight, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-}
+void clearedView() { testing_support::clearedOrthoView(kWidth, kHeight, {0.2f, 0.4f, 0.6f, 0.5f}, 1.0, 0); }
 
 // Every kind of primitive, with colours and alphas spread over [0, 1] and depths over the
 // range: two smooth triangles, a flat quad, wide lines, points and a bitmap.

@@ -72,15 +72,7 @@ void expectSameBuffers(const std::function<void()>& calls, const std::string& wh
 // A scene of depths and stencil values to draw over: cleared, then a smooth triangle in depth
 // that also sets the stencil to 1 where it is drawn.
 void sceneBehind() {
-    glClearColor(0.1f, 0.2f, 0.3f, 1.0f);
-    glClearDepth(0.6);
-    glClearStencil(0x5A);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, kWidth, 0, kHeight, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    testing_support::clearedOrthoView(kWidth, kHeight, {0.1f, 0.2f, 0.3f, 1.0f}, 0.6, 0x5A);
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, 0xC3, 0xFF);
