@@ -5,6 +5,7 @@
 #include <span>
 
 #include "batch_drawer.h"
+#include "glrenderer/invariant.h"
 #include "glrenderer/pipeline.h"
 #include "pixel_rect.h"
 
@@ -16,6 +17,7 @@ void Pipeline::clear(const ClearRequest& request) {
     Framebuffer& fb = drawer_->framebuffer();
     const PixelRect rect = drawableRect(request.scissor, fb.width(), fb.height());
     if (rect.minX > rect.maxX || rect.minY > rect.maxY) return;
+    MYGL_INVARIANT(rect.minX >= 0 && rect.minY >= 0 && rect.maxX < fb.width() && rect.maxY < fb.height());
     const bool whole = rect.minX == 0 && rect.minY == 0 && rect.maxX == fb.width() - 1 && rect.maxY == fb.height() - 1;
     const bool wholeColor = request.color && whole && request.colorMask == 0xFFFFFFFFu;
     const bool wholeDepth = request.depth && whole;

@@ -70,10 +70,12 @@ ClippedPolygon clipTriangle(const ClipVertex& v0, const ClipVertex& v1, const Cl
             const float previousDistance = clipPlaneDistance(previous.position, plane, user);
             const float distance = clipPlaneDistance(vertex.position, plane, user);
             if (previousDistance >= 0.0f) {
+                if (out.count == kMaxClippedVertices) return ClippedPolygon{};
                 out.source[static_cast<std::size_t>(out.count)] = in.source[static_cast<std::size_t>(i - 1)];
                 out.vertices[static_cast<std::size_t>(out.count++)] = previous;
             }
             if ((previousDistance >= 0.0f) != (distance >= 0.0f)) {
+                if (out.count == kMaxClippedVertices) return ClippedPolygon{};
                 out.source[static_cast<std::size_t>(out.count)] = kNewVertex;
                 out.vertices[static_cast<std::size_t>(out.count++)] =
                     clipCrossing(previous, previousDistance, vertex, distance);

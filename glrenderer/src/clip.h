@@ -48,8 +48,10 @@ inline Outcode clipOutcode(const glm::vec4& position, const UserClipPlanes& user
 // interpolated in clip space from the end nearer the plane (the inside one on a tie), as the
 // reference does.
 ClipVertex clipCrossing(const ClipVertex& a, float distanceA, const ClipVertex& b, float distanceB);
-// A triangle gains at most one vertex per clip plane.
-inline constexpr int kMaxClippedVertices = 3 + kClipPlaneCount;
+// A convex polygon gains at most one vertex per clip plane, but rounding can make a nearly
+// degenerate one cross a plane more than twice; the reference's clipper has room for
+// 2 * 14 + 1 vertices and drops a triangle that would need more (draw_pipe_clip.c).
+inline constexpr int kMaxClippedVertices = 2 * kClipPlaneCount + 1;
 
 struct ClippedPolygon {
     std::array<ClipVertex, kMaxClippedVertices> vertices;

@@ -6,6 +6,7 @@
 #include "decompose.h"
 #include "denormals_are_zero.h"
 #include "glrenderer/immediate_buffer.h"
+#include "glrenderer/invariant.h"
 #include "lighting_pool.h"
 #include "thread_count.h"
 
@@ -107,7 +108,8 @@ std::size_t Pipeline::wrapOpenPrimitive() {
     const std::size_t count = open_.size();
     const WrapSplit split = splitAtWrap(mode, count, loopContinued_);
     std::array<Vertex, std::tuple_size_v<decltype(split.carried)>> carried;
-    const std::size_t carriedCount = std::min(split.carriedCount, carried.size());  // (it is never more)
+    MYGL_INVARIANT(split.carriedCount <= carried.size());
+    const std::size_t carriedCount = split.carriedCount;
     for (std::size_t i = 0; i < carriedCount; ++i) carried[i] = open_[split.carried[i]];
     open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(split.drawnFirst));
     open_.resize(split.drawnCount);
