@@ -57,12 +57,12 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
 
 void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                         LineStippler& stippler, Framebuffer& framebuffer, Stats& stats) {
-    // Points are drawn flat; lines as the state says. Smooth points and lines are triangles whose
-    // colour reaches the fragment stage per fragment, coverage in its alpha: a flat key.
+    // Points are drawn flat; lines as the state says; smooth ones as smoothFragmentKey says.
     const bool smooth = mode == PrimitiveMode::Points ? state.pointSmooth : state.lineSmooth;
-    const FragmentChoice fragments(bestFragmentPaths(),
-                                   mode == PrimitiveMode::Points || smooth ? flatFragmentKey(state) : fragmentKey(state),
-                                   state);
+    const FragmentKey key = smooth ? smoothFragmentKey(state)
+                            : mode == PrimitiveMode::Points ? flatFragmentKey(state)
+                                                            : fragmentKey(state);
+    const FragmentChoice fragments(bestFragmentPaths(), key, state);
     forEachPrimitive(
         mode, vertices, state, ViewportTransform(state, framebuffer.height()),
         [&](const WindowVertex& v) {

@@ -46,14 +46,14 @@ void rasterizeSmoothLine(const WindowVertex& start, const WindowVertex& end, con
         v[i].v.y += l * sinA + w * cosA;
         v[i].aa = {i % 2 == 0 ? -halfWidth : halfWidth, halfWidth, i < 2 ? -halfLength : halfLength, halfLength};
     }
-    const bool flat = state.shadeModel == ShadeModel::Flat;
-    if (flat) {
+    const SmoothShading shading = smoothShading(state);
+    if (shading.flat) {
         for (SmoothVertex& s : v) s.v.color = flatColor;
     }
     const PixelRect drawable = drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height());
     FragmentCounts counts;
-    drawSmoothTriangle(v[2], v[1], v[0], flat, flatColor, lineCoverage, fragments, drawable, framebuffer, counts);
-    drawSmoothTriangle(v[3], v[1], v[2], flat, flatColor, lineCoverage, fragments, drawable, framebuffer, counts);
+    drawSmoothTriangle(v[2], v[1], v[0], shading, flatColor, lineCoverage, fragments, drawable, framebuffer, counts);
+    drawSmoothTriangle(v[3], v[1], v[2], shading, flatColor, lineCoverage, fragments, drawable, framebuffer, counts);
     addFragmentCounts(stats, counts);
 }
 

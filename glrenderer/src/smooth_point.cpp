@@ -36,11 +36,11 @@ void rasterizeSmoothPoint(const WindowVertex& point, const DrawState& state, con
         v[i].v.y = corners[i][1] < 0 ? point.y - radius : point.y + radius;
         v[i].aa = {corners[i][0], corners[i][1], k, 1.0f};
     }
-    const bool flat = state.shadeModel == ShadeModel::Flat;
+    const SmoothShading shading = smoothShading(state);
     const PixelRect drawable = drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height());
     FragmentCounts counts;
-    drawSmoothTriangle(v[0], v[1], v[2], flat, point.color, pointCoverage, fragments, drawable, framebuffer, counts);
-    drawSmoothTriangle(v[0], v[2], v[3], flat, point.color, pointCoverage, fragments, drawable, framebuffer, counts);
+    drawSmoothTriangle(v[0], v[1], v[2], shading, point.color, pointCoverage, fragments, drawable, framebuffer, counts);
+    drawSmoothTriangle(v[0], v[2], v[3], shading, point.color, pointCoverage, fragments, drawable, framebuffer, counts);
     addFragmentCounts(stats, counts);
 }
 

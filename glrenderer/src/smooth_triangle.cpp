@@ -24,8 +24,8 @@ bool isUsable(const WindowVertex& v) {
 
 }  // namespace
 
-void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c, bool flatShaded,
-                        const glm::vec4& flatColor, CoverageShader coverage, const FragmentChoice& fragments,
+void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
+                        const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage, const FragmentChoice& fragments,
                         const PixelRect& drawable, Framebuffer& framebuffer, FragmentCounts& counts) {
     if (!isUsable(a.v) || !isUsable(b.v) || !isUsable(c.v)) return;
     const FixedPoint fa = snap(a.v), fb = snap(b.v), fc = snap(c.v);
@@ -85,11 +85,15 @@ void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const Smoo
             if (!cover.kept) continue;
             glm::vec4 rgba = flatColor;
             glm::vec3 specular = v2.secondaryColor;
-            if (!flatShaded) {
+            if (!shading.flat) {
                 rgba = {value(color[0]), value(color[1]), value(color[2]), value(color[3])};
                 specular = {value(secondary[0]), value(secondary[1]), value(secondary[2])};
             }
-            rgba.a *= cover.factor;
+            if (shading.replaceByModulate) {
+                rgba = {1.0f, 1.0f, 1.0f, shading.textureAlpha ? cover.factor : rgba.a * cover.factor};
+            } else {
+                rgba.a *= cover.factor;
+            }
             fragment.setFlatColor(rgba, specular);
             fragment.shadeSpan(py, px, px, framebuffer, counts);
         }
