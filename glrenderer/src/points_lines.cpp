@@ -76,7 +76,7 @@ void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices
             };
             if (!state.lineStipple.enabled) return draw(a, b);
             if (restart) stippler.restart();
-            stippler.cut(state.lineStipple, a, b, draw);
+            stippler.cut(state.lineStipple, a, b, smooth, draw);
         });
 }
 

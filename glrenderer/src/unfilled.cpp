@@ -201,7 +201,7 @@ private:
             if (state_.lineSmooth) return rasterizeSmoothLine(a, b, flatColor, state_, lineFragments_, framebuffer_, stats_);
             rasterizeLine(a, b, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
         };
-        if (stippling_) return target_.stippler->cut(state_.lineStipple, from, to, draw);
+        if (stippling_) return target_.stippler->cut(state_.lineStipple, from, to, state_.lineSmooth, draw);
         draw(from, to);
     }
     void point(const WindowVertex& p, bool flat, const glm::vec4& flatColor) {
