@@ -8,6 +8,7 @@
 #include <glad/gl.h>
 
 #include <functional>
+#include <initializer_list>
 #include <random>
 #include <string>
 #include <vector>
@@ -138,32 +139,29 @@ void expectIdentical(const testing_support::BothResults<Frame>& r, const std::st
     EXPECT_GT(drawnPixels(r.osmesa), 0) << what << ": nothing drawn";
 }
 
-TEST(SmoothPoints, SizesAndStatesMatchTheReference) {
-    for (float size : {1.0f, 2.0f, 2.5f, 4.0f, 5.3f, 9.0f}) {
+// Every variant with the smooth capability `cap` on, at each of `sizes` (point size or line
+// width), over random primitives of `mode`.
+void expectEveryVariantMatches(GLenum cap, GLenum mode, std::initializer_list<float> sizes) {
+    for (float size : sizes) {
         for (const Variant& v : variants()) {
             const auto r = render([&] {
                 v.setup();
-                glEnable(GL_POINT_SMOOTH);
+                glEnable(cap);
                 glPointSize(size);
-                randomPrimitives(GL_POINTS, static_cast<unsigned>(size * 10));
+                glLineWidth(size);
+                randomPrimitives(mode, static_cast<unsigned>(size * 10));
             });
             expectIdentical(r, "size " + std::to_string(size) + ", " + v.name);
         }
     }
 }
 
+TEST(SmoothPoints, SizesAndStatesMatchTheReference) {
+    expectEveryVariantMatches(GL_POINT_SMOOTH, GL_POINTS, {1.0f, 2.0f, 2.5f, 4.0f, 5.3f, 9.0f});
+}
+
 TEST(SmoothLines, WidthsAndStatesMatchTheReference) {
-    for (float width : {1.0f, 1.5f, 2.0f, 3.0f, 6.5f}) {
-        for (const Variant& v : variants()) {
-            const auto r = render([&] {
-                v.setup();
-                glEnable(GL_LINE_SMOOTH);
-                glLineWidth(width);
-                randomPrimitives(GL_LINE_STRIP, static_cast<unsigned>(width * 10));
-            });
-            expectIdentical(r, "width " + std::to_string(width) + ", " + v.name);
-        }
-    }
+    expectEveryVariantMatches(GL_LINE_SMOOTH, GL_LINE_STRIP, {1.0f, 1.5f, 2.0f, 3.0f, 6.5f});
 }
 
 // The coverage really is in alpha: a blended smooth point and line leave partly covered pixels.
