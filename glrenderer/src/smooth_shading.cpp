@@ -20,7 +20,7 @@ SmoothShading smoothShading(const DrawState& state) {
     const TextureBase base = state.texture.base;
     const bool alpha = base == TextureBase::Alpha || base == TextureBase::LuminanceAlpha ||
                        base == TextureBase::Intensity || base == TextureBase::Rgba;
-    return {state.shadeModel == ShadeModel::Flat, replacesColor(state), alpha};
+    return {state.shadeModel == ShadeModel::Flat, replacesColor(state), alpha, base != TextureBase::Alpha};
 }
 
 }  // namespace glrenderer

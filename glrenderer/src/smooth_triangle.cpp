@@ -90,7 +90,8 @@ void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const Smoo
                 specular = {value(secondary[0]), value(secondary[1]), value(secondary[2])};
             }
             if (shading.replaceByModulate) {
-                rgba = {1.0f, 1.0f, 1.0f, shading.textureAlpha ? cover.factor : rgba.a * cover.factor};
+                const float alpha = shading.textureAlpha ? cover.factor : rgba.a * cover.factor;
+                rgba = shading.textureColor ? glm::vec4(1.0f, 1.0f, 1.0f, alpha) : glm::vec4(glm::vec3(rgba), alpha);
             } else {
                 rgba.a *= cover.factor;
             }

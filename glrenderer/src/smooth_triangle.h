@@ -30,6 +30,7 @@ struct SmoothShading {
     bool flat;              // one colour (`flatColor` of each primitive)
     bool replaceByModulate;  // GL_REPLACE drawn as GL_MODULATE of (1, 1, 1, alpha): see smoothFragmentKey
     bool textureAlpha;       // the texture has alpha (under replaceByModulate)
+    bool textureColor;       // the texture has colour, not alpha alone (under replaceByModulate)
 };
 
 // The shading of a draw's smooth primitives.
@@ -42,7 +43,8 @@ SmoothShading smoothShading(const DrawState& state);
 // colour reaches it per fragment). `flatColor` is the colour under flat shading.
 // Under GL_REPLACE the alpha the coverage multiplies is the texture's: the fragment's colour
 // becomes (1, 1, 1, coverage) for a texture with alpha and (1, 1, 1, alpha * coverage) for one
-// without, modulated by the texel, which gives the texel's colour and the reference's alpha.
+// without (an alpha texture keeps the fragment's red, green and blue), modulated by the texel,
+// which gives GL_REPLACE's colour and the reference's alpha.
 void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
                         const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage, const FragmentChoice& fragments,
                         const PixelRect& drawable, Framebuffer& framebuffer, FragmentCounts& counts);

@@ -115,6 +115,10 @@ std::vector<Variant> variants() {
              blend(), makeTexture(GL_RGB);
              glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
          }},
+        {"texture replace alpha", [blend] {
+             blend(), makeTexture(GL_ALPHA);
+             glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+         }},
         {"texture replace intensity", [blend] {
              blend(), makeTexture(GL_INTENSITY);
              glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
