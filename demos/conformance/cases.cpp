@@ -328,6 +328,39 @@ void addSmoothAndStippleCases(std::vector<Case>& out) {
     }
 }
 
+// Smooth points and lines as programs draw them, blended over a triangle (issue 16): wide and
+// thin, at sub-pixel positions, a strip's colours smooth.
+void addBlendedSmoothCases(std::vector<Case>& out) {
+    for (const float size : {1.0f, 3.5f, 7.0f}) {
+        out.push_back({"smooth-stipple", "smooth_blended_size_" + std::to_string(static_cast<int>(size * 10)), true,
+                       [size](int width, int height) {
+                           scenes::resetState(width, height);
+                           glBegin(GL_TRIANGLES);
+                           glColor3f(0.2f, 0.3f, 0.6f);
+                           glVertex2f(-0.9f, -0.9f), glVertex2f(0.9f, -0.6f), glVertex2f(-0.2f, 0.9f);
+                           glEnd();
+                           glEnable(GL_BLEND);
+                           glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                           glEnable(GL_POINT_SMOOTH);
+                           glEnable(GL_LINE_SMOOTH);
+                           glPointSize(size);
+                           glLineWidth(size);
+                           glBegin(GL_LINE_STRIP);
+                           glColor4f(1.0f, 0.9f, 0.2f, 1.0f), glVertex2f(-0.83f, -0.41f);
+                           glColor4f(0.1f, 1.0f, 0.5f, 0.6f), glVertex2f(0.77f, 0.13f);
+                           glColor4f(1.0f, 0.2f, 0.9f, 0.9f), glVertex2f(-0.31f, 0.86f);
+                           glEnd();
+                           glBegin(GL_POINTS);
+                           glColor4f(1.0f, 1.0f, 1.0f, 0.8f);
+                           for (float i = 0.0f; i < 7.0f; i += 1.0f) glVertex2f(-0.7f + 0.23f * i, -0.75f + 0.071f * i);
+                           glEnd();
+                           glDisable(GL_POINT_SMOOTH);
+                           glDisable(GL_LINE_SMOOTH);
+                           glDisable(GL_BLEND);
+                       }});
+    }
+}
+
 // Two overlapping smooth triangles of varying colour and alpha, at varying depths.
 void fragmentOpsLayer(float shift) {
     glBegin(GL_TRIANGLES);
@@ -577,6 +610,7 @@ std::vector<Case> allCases() {
     addMergedBlocks(cases);
     addMergeBreakers(cases);
     addSmoothAndStippleCases(cases);
+    addBlendedSmoothCases(cases);
     addFragmentOpsCases(cases);
     addTextureCases(cases);
     addPixelRectangleCases(cases);

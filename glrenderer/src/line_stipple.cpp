@@ -20,6 +20,11 @@ float LineStippler::majorLength(const WindowVertex& a, const WindowVertex& b) {
     return dx > dy ? dx : dy;
 }
 
+float LineStippler::euclideanLength(const WindowVertex& a, const WindowVertex& b) {
+    const float dx = b.x - a.x, dy = b.y - a.y;
+    return std::sqrt(dx * dx + dy * dy);
+}
+
 int LineStippler::wholePixels(float length) {
     if (!(length <= kLongestLine)) return 0;  // NaN, infinite or huge
     return static_cast<int>(std::ceil(length));

@@ -19,10 +19,11 @@ class LineStippler {
 public:
     void restart() { counter_ = 0; }
 
-    // Calls draw(a, b) for each piece of start -> end the pattern keeps.
+    // Calls draw(a, b) for each piece of start -> end the pattern keeps. A smooth line (the
+    // reference's "rectangular" line) is measured along itself, sqrt(dx^2 + dy^2).
     template <class Draw>
-    void cut(const LineStipple& stipple, const WindowVertex& start, const WindowVertex& end, Draw&& draw) {
-        const float length = majorLength(start, end);
+    void cut(const LineStipple& stipple, const WindowVertex& start, const WindowVertex& end, bool smooth, Draw&& draw) {
+        const float length = smooth ? euclideanLength(start, end) : majorLength(start, end);
         const int whole = wholePixels(length);
         bool on = false;
         int pieceStart = 0;
@@ -39,6 +40,7 @@ public:
 
 private:
     static float majorLength(const WindowVertex& a, const WindowVertex& b);
+    static float euclideanLength(const WindowVertex& a, const WindowVertex& b);
     // ceil(length); 0 when it is not finite or beyond any line the rasterizer draws.
     static int wholePixels(float length);
     // The vertex at `t` from a to b.

@@ -5,6 +5,7 @@
 #include "feedback_output.h"
 #include "raster_line.h"
 #include "raster_point.h"
+#include "smooth_primitives.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -56,19 +57,26 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
 
 void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
                         LineStippler& stippler, Framebuffer& framebuffer, Stats& stats) {
-    // Points are drawn flat; lines as the state says.
-    const FragmentChoice fragments(bestFragmentPaths(),
-                                   mode == PrimitiveMode::Points ? flatFragmentKey(state) : fragmentKey(state), state);
+    // Points are drawn flat; lines as the state says; smooth ones as smoothFragmentKey says.
+    const bool smooth = mode == PrimitiveMode::Points ? state.pointSmooth : state.lineSmooth;
+    const FragmentKey key = smooth ? smoothFragmentKey(state)
+                            : mode == PrimitiveMode::Points ? flatFragmentKey(state)
+                                                            : fragmentKey(state);
+    const FragmentChoice fragments(bestFragmentPaths(), key, state);
     forEachPrimitive(
         mode, vertices, state, ViewportTransform(state, framebuffer.height()),
-        [&](const WindowVertex& v) { rasterizePoint(v, state, fragments, framebuffer, stats); },
+        [&](const WindowVertex& v) {
+            if (smooth) return rasterizeSmoothPoint(v, state, fragments, framebuffer, stats);
+            rasterizePoint(v, state, fragments, framebuffer, stats);
+        },
         [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4& flatColor, bool restart) {
             const auto draw = [&](const WindowVertex& from, const WindowVertex& to) {
+                if (smooth) return rasterizeSmoothLine(from, to, flatColor, state, fragments, framebuffer, stats);
                 rasterizeLine(from, to, flatColor, state.lineWidth, fragments, framebuffer, stats);
             };
             if (!state.lineStipple.enabled) return draw(a, b);
             if (restart) stippler.restart();
-            stippler.cut(state.lineStipple, a, b, draw);
+            stippler.cut(state.lineStipple, a, b, smooth, draw);
         });
 }
 

@@ -7,6 +7,7 @@
 #include "polygon_offset.h"
 #include "raster_line.h"
 #include "raster_point.h"
+#include "smooth_primitives.h"
 #include "triangle_setup.h"
 
 namespace glrenderer {
@@ -117,8 +118,9 @@ public:
     UnfilledDrawer(const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                    const UnfilledTarget& target)
         : state_(state), anyEdgeShown_(anyEdgeShown), framebuffer_(framebuffer), stats_(stats), target_(target),
-          lineFragments_(bestFragmentPaths(), fragmentKey(state), state),
-          pointFragments_(bestFragmentPaths(), flatFragmentKey(state), state) {}
+          lineFragments_(bestFragmentPaths(), state.lineSmooth ? smoothFragmentKey(state) : fragmentKey(state), state),
+          pointFragments_(bestFragmentPaths(), state.pointSmooth ? smoothFragmentKey(state) : flatFragmentKey(state),
+                          state) {}
 
     // One triangle out of the clipper (provoking vertex last) with its edge bits and the
     // provoking vertex (for its flat colours).
@@ -196,19 +198,17 @@ private:
     void line(const WindowVertex& from, const WindowVertex& to, const glm::vec4& flatColor) {
         if (target_.feedback) return target_.feedback->line(flatColored(from, flatColor), flatColored(to, flatColor));
         const auto draw = [&](const WindowVertex& a, const WindowVertex& b) {
+            if (state_.lineSmooth) return rasterizeSmoothLine(a, b, flatColor, state_, lineFragments_, framebuffer_, stats_);
             rasterizeLine(a, b, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
         };
-        if (stippling_) return target_.stippler->cut(state_.lineStipple, from, to, draw);
+        if (stippling_) return target_.stippler->cut(state_.lineStipple, from, to, state_.lineSmooth, draw);
         draw(from, to);
     }
     void point(const WindowVertex& p, bool flat, const glm::vec4& flatColor) {
         if (target_.feedback) return target_.feedback->point(flatColored(p, flatColor));
-        if (!flat) {
-            rasterizePoint(p, state_, pointFragments_, framebuffer_, stats_);
-            return;
-        }
         WindowVertex colored = p;
-        colored.color = flatColor;
+        if (flat) colored.color = flatColor;
+        if (state_.pointSmooth) return rasterizeSmoothPoint(colored, state_, pointFragments_, framebuffer_, stats_);
         rasterizePoint(colored, state_, pointFragments_, framebuffer_, stats_);
     }
 

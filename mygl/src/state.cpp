@@ -21,7 +21,7 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_DITHER, GL_LINE_SMOOTH, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH,
+    GL_DITHER, GL_POLYGON_SMOOTH,
 };
 
 bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
@@ -202,8 +202,11 @@ const EntryPoint kEntryPoints[] = {
 }  // namespace
 
 bool setCapability(Context::State& s, GLenum cap, bool enabled) {
-    if (cap == GL_CULL_FACE || cap == GL_DEPTH_TEST) {
-        bool& flag = cap == GL_CULL_FACE ? s.draw.cullEnabled : s.draw.depthTest;
+    if (cap == GL_CULL_FACE || cap == GL_DEPTH_TEST || cap == GL_POINT_SMOOTH || cap == GL_LINE_SMOOTH) {
+        bool& flag = cap == GL_CULL_FACE ? s.draw.cullEnabled
+                     : cap == GL_DEPTH_TEST ? s.draw.depthTest
+                     : cap == GL_POINT_SMOOTH ? s.draw.pointSmooth
+                                              : s.draw.lineSmooth;
         if (flag != enabled) endBatch(s);
         flag = enabled;
         return true;
@@ -230,6 +233,8 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
 std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
     if (cap == GL_CULL_FACE) return s.draw.cullEnabled;
     if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
+    if (cap == GL_POINT_SMOOTH) return s.draw.pointSmooth;
+    if (cap == GL_LINE_SMOOTH) return s.draw.lineSmooth;
     if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
     if (const std::optional<bool> plane = clipPlaneCapability(s, cap)) return *plane;
     if (cap == GL_FOG) return s.fog.enabled;

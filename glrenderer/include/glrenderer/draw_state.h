@@ -58,6 +58,8 @@ struct DrawState {
     float depthNear = 0.0f, depthFar = 1.0f;
     float lineWidth = 1.0f;
     float pointSize = 1.0f;
+    // GL_POINT_SMOOTH and GL_LINE_SMOOTH: drawn as the reference's draw module draws them.
+    bool pointSmooth = false, lineSmooth = false;
     bool selection = false;  // GL_SELECT: primitives make hits (Pipeline::takeHits), not pixels
     bool feedback = false;   // GL_FEEDBACK: primitives are handed back (Pipeline::takeFeedback)
     // Two-sided lighting: filled triangles facing back take their vertices' back colours.
