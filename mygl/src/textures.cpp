@@ -37,7 +37,8 @@ void defineLevel(TextureLevel& level, int width, int height, int border, GLint i
     level.base = base;
     level.defined = true;
     level.imageWidth = width - 2 * border;
-    level.imageHeight = std::max(height - 2 * border, 1);  // a 1D texture's one row
+    // A 1D texture (height 1) has one row, its border or not; a 2D one with height 2 * border none.
+    level.imageHeight = height == 1 ? 1 : height - 2 * border;
     std::vector<glm::vec4> inner;
     if (border == 0) {
         inner = rgba;

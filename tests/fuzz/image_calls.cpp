@@ -151,16 +151,18 @@ struct Description {
     void (*call)(const Args&, void* image);
 };
 
-// glGetTexImage's level size, when its target and level are valid (an error call writes nothing).
+// glGetTexImage's image size, without its border, when its target and level are valid (an error
+// call writes nothing).
 Shape textureLevel(const Args& a, int, int) {
     Shape s{0, 0, E(a[2]), E(a[3])};
     const GLenum target = E(a[0]);
-    if ((target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) || I(a[1]) < 0 || I(a[1]) > 12) return s;
-    GLint w = 0, h = 0;
+    if ((target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) || I(a[1]) < 0 || I(a[1]) > 14) return s;
+    GLint w = 0, h = 0, border = 0;
     glGetTexLevelParameteriv(target, I(a[1]), GL_TEXTURE_WIDTH, &w);
     glGetTexLevelParameteriv(target, I(a[1]), GL_TEXTURE_HEIGHT, &h);
-    s.width = w;
-    s.height = h;
+    glGetTexLevelParameteriv(target, I(a[1]), GL_TEXTURE_BORDER, &border);
+    s.width = w - 2 * border;
+    s.height = target == GL_TEXTURE_1D ? std::min(h, 1) : h - 2 * border;
     return s;
 }
 

@@ -104,6 +104,40 @@ bool popsNestedChange(const Call& call, const StreamContext& context) {
     return functionName(call) == "glPopAttrib" && context.attribStack.size() >= 2 && context.attribStack.back().changedSince;
 }
 
+// glTexImage2D/glCopyTexImage2D's border argument and height, by argument position.
+bool definesBorderedTexture(std::string_view name, const std::vector<double>& a, double& height) {
+    if (name == "glTexImage1D" || name == "glCopyTexImage1D") {
+        height = 1;
+        return a[name == "glTexImage1D" ? 4 : 5] == 1;
+    }
+    if (name != "glTexImage2D" && name != "glCopyTexImage2D") return false;
+    height = a[name == "glTexImage2D" ? 4 : 6];
+    return a[name == "glTexImage2D" ? 5 : 7] == 1;
+}
+
+bool definesBorderWithoutRows(const Call& call, const StreamContext&) {
+    double height = 0;
+    return definesBorderedTexture(functionName(call), call.args, height) && height == 2;
+}
+
+bool queriesBorderedSize(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    if (!c.borderedTexture || !name.starts_with("glGetTexLevelParameter")) return false;
+    const auto pname = static_cast<GLenum>(call.args[2]);
+    return pname == GL_TEXTURE_WIDTH || pname == GL_TEXTURE_HEIGHT || pname == GL_TEXTURE_BORDER;
+}
+
+bool isPixelMapIToIAnySize(const Call& call, const StreamContext&) {
+    const std::string_view name = functionName(call);
+    if (!name.starts_with("glPixelMap") || static_cast<GLenum>(call.args[0]) != GL_PIXEL_MAP_I_TO_I) return false;
+    const auto size = static_cast<std::int64_t>(call.args[1]);
+    return size > 0 && (size & (size - 1)) != 0;
+}
+
+bool queriesPriorityAsInteger(const Call& call, const StreamContext&) {
+    return functionName(call) == "glGetTexParameteriv" && static_cast<GLenum>(call.args[1]) == GL_TEXTURE_PRIORITY;
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -132,6 +166,18 @@ constexpr Departure kDepartures[] = {
     {"pop-after-nested-change",
      "glPopAttrib of a nested push after a state change: OSMesa resets its changed-groups mask to the push's, so the outer pop skips groups changed inside",
      popsNestedChange},
+    {"texture-border-without-rows",
+     "glTexImage2D/glCopyTexImage2D with border 1 and height 2: OSMesa strips the border from the width only (a w-2 x 2 image), the spec's image has no rows",
+     definesBorderWithoutRows},
+    {"texture-border-stripped",
+     "glGetTexLevelParameter of GL_TEXTURE_WIDTH/HEIGHT/BORDER after a bordered image: OSMesa stores it stripped (width - 2, border 0), the spec counts the border",
+     queriesBorderedSize},
+    {"pixel-map-i-to-i-any-size",
+     "glPixelMap(GL_PIXEL_MAP_I_TO_I) with a size not a power of two: OSMesa takes it, the spec gives GL_INVALID_VALUE",
+     isPixelMapIToIAnySize},
+    {"texture-priority-as-integer",
+     "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
+     queriesPriorityAsInteger},
 };
 
 }  // namespace
@@ -157,6 +203,8 @@ void StreamContext::update(const Call& call) {
         inBlock = atFirstVertex = {};
     } else if (name == "glEnd") {
         insideBegin = false;
+    } else if (double height = 0; definesBorderedTexture(name, call.args, height)) {
+        borderedTexture = true;
     } else if (name == "glFlush" || name == "glFinish") {
         alphaNotOneSinceFlush = false;
     } else if (name == "glLineWidth" || name == "glPointSize") {
