@@ -43,4 +43,32 @@ TEST(FuzzFindings, TextureWithBorderAndNoInteriorRowsHasAnEmptyImage) {
     EXPECT_EQ(results.osmesa.image[16 * 2 * 4 - 1], 200);
 }
 
+// A user clip plane culls the raster position as it culls a point (the fuzzer's seed 9: MyGL kept
+// a position outside GL_CLIP_PLANE0 valid and drew the bitmap there).
+TEST(FuzzFindings, UserClipPlanesInvalidateTheRasterPosition) {
+    const auto results = onBothBackends<std::vector<GLfloat>>([] {
+        const GLdouble plane[] = {1, 0, 0, 0.25};  // x >= -0.25, in eye space
+        glClipPlane(GL_CLIP_PLANE0, plane);
+        glEnable(GL_CLIP_PLANE0);
+        glMatrixMode(GL_PROJECTION);
+        glOrtho(-1, 1, -1, 1, -1, 1);  // the plane follows the projection too
+        glMatrixMode(GL_MODELVIEW);
+        const GLubyte bits[8] = {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF};
+        std::vector<GLfloat> answers;
+        for (GLfloat x : {-0.75f, -0.25f, 0.5f}) {
+            glRasterPos2f(x, 0.0f);
+            GLfloat valid = 0;
+            glGetFloatv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+            answers.push_back(valid);
+            glBitmap(8, 8, 0, 0, 0, 0, bits);
+        }
+        std::vector<GLubyte> pixels(16 * 16 * 4);
+        glReadPixels(0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        answers.insert(answers.end(), pixels.begin(), pixels.end());
+        return answers;
+    });
+    EXPECT_EQ(results.mygl, results.osmesa);
+    EXPECT_EQ(results.osmesa[0], 0.0f);  // the case shows: the first position is culled
+}
+
 }  // namespace
