@@ -71,4 +71,22 @@ TEST(FuzzFindings, UserClipPlanesInvalidateTheRasterPosition) {
     EXPECT_EQ(results.osmesa[0], 0.0f);  // the case shows: the first position is culled
 }
 
+// glGenTextures hands out names after the largest ever given or bound, deleted or not (the
+// fuzzer's seed 13: MyGL gave 1 after name 2 was bound and deleted; OSMesa gives 3).
+TEST(FuzzFindings, GeneratedTextureNamesFollowTheLargestNameEverUsed) {
+    const auto results = onBothBackends<std::vector<GLuint>>([] {
+        std::vector<GLuint> names(5);
+        glBindTexture(GL_TEXTURE_2D, 2);
+        const GLuint two = 2;
+        glDeleteTextures(1, &two);
+        glGenTextures(2, names.data());
+        glDeleteTextures(2, names.data());
+        glGenTextures(1, &names[2]);
+        glBindTexture(GL_TEXTURE_1D, 9);
+        glGenTextures(2, &names[3]);
+        return names;
+    });
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
 }  // namespace
