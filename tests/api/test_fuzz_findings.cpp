@@ -89,4 +89,27 @@ TEST(FuzzFindings, GeneratedTextureNamesFollowTheLargestNameEverUsed) {
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
+// A depth clear the reference makes with a quad (scissored, or with the stencil under a partial
+// write mask) rounds the clear value through float (the fuzzer's seed 42: glStencilMask(1), then
+// glClear of depth and stencil at depth 0.51744331 gave 8681257, MyGL 8681258).
+TEST(FuzzFindings, DepthClearedWithAQuadTakesTheFloatPath) {
+    const auto results = onBothBackends<std::vector<GLuint>>([] {
+        std::vector<GLuint> depths;
+        for (int mode = 0; mode < 3; ++mode) {
+            for (double d : {0.51744331097978524, 0.3, 0.123456789, 0.9999, 0.00001, 0.7}) {
+                glClearDepth(d);
+                glStencilMask(mode == 0 ? 1 : 0xFF);
+                if (mode == 1) glEnable(GL_SCISSOR_TEST);
+                glScissor(0, 0, mode == 2 ? 4 : 2, mode == 2 ? 4 : 2);  // mode 2: the whole window
+                glClear(GL_DEPTH_BUFFER_BIT | (mode == 0 ? GL_STENCIL_BUFFER_BIT : 0));
+                GLuint z = 0;
+                glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &z);
+                depths.push_back(z);
+            }
+        }
+        return depths;
+    }, 4, 4);
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
 }  // namespace
