@@ -112,4 +112,20 @@ TEST(FuzzFindings, DepthClearedWithAQuadTakesTheFloatPath) {
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
+// A lit glRasterPos before the first lit draw (the fuzzer's seed 78: the raster position prepared
+// the lighting without handing it to the pipeline, so the point after it was drawn unlit).
+TEST(FuzzFindings, LitRasterPositionLeavesTheNextDrawLit) {
+    const auto results = onBothBackends<std::vector<GLubyte>>([] {
+        glEnable(GL_LIGHTING);
+        glRasterPos4i(1, 1, 0, 1);
+        glBegin(GL_POINTS);
+        glVertex4i(0, 0, 0, 1);
+        glEnd();
+        std::vector<GLubyte> pixels(2 * 2 * 4);
+        glReadPixels(0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        return pixels;
+    }, 2, 2);
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
 }  // namespace
