@@ -138,6 +138,11 @@ bool queriesPriorityAsInteger(const Call& call, const StreamContext&) {
     return functionName(call) == "glGetTexParameteriv" && static_cast<GLenum>(call.args[1]) == GL_TEXTURE_PRIORITY;
 }
 
+bool readsStencilAsBitmap(const Call& call, const StreamContext&) {
+    return functionName(call) == "glReadPixels" && static_cast<GLenum>(call.args[4]) == GL_STENCIL_INDEX &&
+           static_cast<GLenum>(call.args[5]) == GL_BITMAP;
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -175,6 +180,9 @@ constexpr Departure kDepartures[] = {
     {"pixel-map-i-to-i-any-size",
      "glPixelMap(GL_PIXEL_MAP_I_TO_I) with a size not a power of two: OSMesa takes it, the spec gives GL_INVALID_VALUE",
      isPixelMapIToIAnySize},
+    {"read-pixels-stencil-bitmap",
+     "glReadPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa loops without end printing 'Unsupported format/type' (the spec packs bits)",
+     readsStencilAsBitmap},
     {"texture-priority-as-integer",
      "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
      queriesPriorityAsInteger},
