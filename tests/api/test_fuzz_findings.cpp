@@ -128,4 +128,31 @@ TEST(FuzzFindings, LitRasterPositionLeavesTheNextDrawLit) {
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
+// glCopyPixels of a rectangle far larger than the window (the fuzzer's seed 214: MyGL ran out of
+// memory making its 30 x 10^9 image). A plain copy is a blit of the part in the window, as the
+// reference's; one drawn through the fragment operations copies nothing in MyGL (the reference
+// draws its rectangle as zeros: rule copy-pixels-beyond-texture-size in the fuzzer).
+TEST(FuzzFindings, CopyPixelsOfAHugeRectangle) {
+    const auto results = onBothBackends<std::vector<GLubyte>>([] {
+        glClearColor(0.2f, 0.4f, 0.6f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glColor3f(1, 0, 0);
+        glRectf(-1, -1, 0, 0);
+        glRasterPos2f(0.25f, 0.25f);
+        glCopyPixels(0, 0, 30, 1000000000, GL_COLOR);  // a blit
+        std::vector<GLubyte> pixels(16 * 16 * 4);
+        glReadPixels(0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        glPixelZoom(1.0f, -1.0f);
+        glCopyPixels(0, 0, 30, 1000000000, GL_COLOR);  // drawn
+        glCopyPixels(0, 0, 1000000000, 4, GL_DEPTH);
+        std::vector<GLubyte> after(16 * 16 * 4);
+        glReadPixels(0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, after.data());
+        pixels.push_back(after == pixels);
+        return pixels;
+    });
+    EXPECT_EQ(std::vector<GLubyte>(results.mygl.begin(), results.mygl.end() - 1),
+              std::vector<GLubyte>(results.osmesa.begin(), results.osmesa.end() - 1));
+    EXPECT_EQ(results.mygl.back(), 1);  // the drawn copies left the frame as it was
+}
+
 }  // namespace

@@ -143,6 +143,20 @@ bool readsStencilAsBitmap(const Call& call, const StreamContext&) {
            static_cast<GLenum>(call.args[5]) == GL_BITMAP;
 }
 
+bool copiesBeyondTextureSize(const Call& call, const StreamContext&) {
+    constexpr double kTextureSizeMax = 16384;  // llvmpipe's largest texture side
+    return functionName(call) == "glCopyPixels" && (call.args[2] > kTextureSizeMax || call.args[3] > kTextureSizeMax);
+}
+
+bool copiesTextureWithBadInternalFormat(const Call& call, const StreamContext&) {
+    const std::string_view name = functionName(call);
+    if (name != "glCopyTexImage1D" && name != "glCopyTexImage2D") return false;
+    const auto internal = static_cast<GLenum>(call.args[2]);
+    constexpr GLenum kFormats[] = {1, 2, 3, 4, GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, 0x8049, GL_RGB, GL_RGBA,
+                                   GL_RGB8, GL_RGBA8, GL_LUMINANCE8, GL_ALPHA8};
+    return std::find(std::begin(kFormats), std::end(kFormats), internal) == std::end(kFormats);
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -183,6 +197,12 @@ constexpr Departure kDepartures[] = {
     {"read-pixels-stencil-bitmap",
      "glReadPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa loops without end printing 'Unsupported format/type' (the spec packs bits)",
      readsStencilAsBitmap},
+    {"copy-pixels-beyond-texture-size",
+     "glCopyPixels wider or taller than 16384 not done as a blit: OSMesa draws its rectangle as zeros (its texture cannot hold the copy); MyGL copies nothing",
+     copiesBeyondTextureSize},
+    {"copy-texture-bad-internal-format",
+     "glCopyTexImage1D/2D with an internal format GL 1.1 does not define: OSMesa gives GL_INVALID_ENUM, GL 1.1 GL_INVALID_VALUE",
+     copiesTextureWithBadInternalFormat},
     {"texture-priority-as-integer",
      "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
      queriesPriorityAsInteger},
