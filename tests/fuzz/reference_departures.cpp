@@ -165,9 +165,14 @@ bool copiesTextureWithBadInternalFormat(const Call& call, const StreamContext&) 
     const std::string_view name = functionName(call);
     if (name != "glCopyTexImage1D" && name != "glCopyTexImage2D") return false;
     const auto internal = static_cast<GLenum>(call.args[2]);
-    constexpr GLenum kFormats[] = {1, 2, 3, 4, GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, 0x8049, GL_RGB, GL_RGBA,
+    // GL 1.1 leaves 1, 2, 3 and 4 out of glCopyTexImage's formats.
+    constexpr GLenum kFormats[] = {GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, 0x8049, GL_RGB, GL_RGBA,
                                    GL_RGB8, GL_RGBA8, GL_LUMINANCE8, GL_ALPHA8};
     return std::find(std::begin(kFormats), std::end(kFormats), internal) == std::end(kFormats);
+}
+
+bool queriesLevelFormat(const Call& call, const StreamContext&) {
+    return functionName(call).starts_with("glGetTexLevelParameter") && static_cast<GLenum>(call.args[2]) == GL_TEXTURE_COMPONENTS;
 }
 
 constexpr Departure kDepartures[] = {
@@ -217,8 +222,11 @@ constexpr Departure kDepartures[] = {
      "glCopyPixels wider or taller than 16384 not done as a blit: OSMesa draws its rectangle as zeros (its texture cannot hold the copy); MyGL copies nothing",
      copiesBeyondTextureSize},
     {"copy-texture-bad-internal-format",
-     "glCopyTexImage1D/2D with an internal format GL 1.1 does not define: OSMesa gives GL_INVALID_ENUM, GL 1.1 GL_INVALID_VALUE",
+     "glCopyTexImage1D/2D with an internal format GL 1.1 does not take (1-4 too): OSMesa gives GL_INVALID_ENUM, GL 1.1 GL_INVALID_VALUE",
      copiesTextureWithBadInternalFormat},
+    {"undefined-level-format",
+     "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial value), GL 1.1's is 1",
+     queriesLevelFormat},
     {"texture-priority-as-integer",
      "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
      queriesPriorityAsInteger},
