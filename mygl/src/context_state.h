@@ -145,6 +145,9 @@ struct Context::State {
     GLenum colorMaterialFace = GL_FRONT_AND_BACK, colorMaterialMode = GL_AMBIENT_AND_DIFFUSE;
     glrenderer::VertexLighting vertexLighting;
     bool lightingStale = true;
+    // The pipeline's copy of vertexLighting is out of date (a raster position may have made a
+    // new vertexLighting without handing it to the pipeline).
+    bool pipelineLightingStale = true;
     // glMaterial came inside the open glBegin/glEnd: its vertices are lit as they come.
     bool lightingOnProgramThread = false;
 

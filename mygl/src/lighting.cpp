@@ -360,6 +360,7 @@ const glrenderer::VertexLighting& preparedLighting(Context::State& s) {
         const StackMatrix& m = s.modelview.top();
         s.vertexLighting = glrenderer::VertexLighting(s.lighting, {m.matrix(), m.inverse(), m.lengthPreserving()});
         s.lightingStale = false;
+        s.pipelineLightingStale = true;
     }
     return s.vertexLighting;
 }
@@ -367,8 +368,14 @@ const glrenderer::VertexLighting& preparedLighting(Context::State& s) {
 }  // namespace
 
 void prepareLighting(Context::State& s) {
-    if (!s.lightingEnabled) return s.pipeline.setUnlit();
-    if (s.lightingStale) s.pipeline.setLighting(preparedLighting(s));
+    if (!s.lightingEnabled) {
+        s.pipelineLightingStale = true;
+        return s.pipeline.setUnlit();
+    }
+    const glrenderer::VertexLighting& lighting = preparedLighting(s);
+    if (!s.pipelineLightingStale) return;
+    s.pipeline.setLighting(lighting);
+    s.pipelineLightingStale = false;
 }
 
 void updateLitColors(Context::State& s) {

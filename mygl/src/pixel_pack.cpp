@@ -39,9 +39,11 @@ int fromRgba(const glm::vec4& c, GLenum format, float* out) {
     }
 }
 
+// A texel's bytes as floats, times 1/255 as the reference converts them (not divided: 126 of the
+// 256 values differ by an ulp).
 glm::vec4 texelColor(std::uint32_t word, glrenderer::TextureBase base) {
     using glrenderer::TextureBase;
-    auto channel = [word](int i) { return static_cast<float>((word >> (8 * i)) & 0xFFu) / 255.0f; };
+    auto channel = [word](int i) { return static_cast<float>((word >> (8 * i)) & 0xFFu) * (1.0f / 255.0f); };
     switch (base) {
     case TextureBase::Alpha: return {0, 0, 0, channel(3)};
     case TextureBase::Luminance: return {channel(0), 0, 0, 1};

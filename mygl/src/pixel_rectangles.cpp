@@ -299,9 +299,13 @@ void copyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
     drawCachedBitmaps(*s);
     endBatch(*s);
     s->pipeline.finish();
+    if (type == GL_COLOR && blitsColors(*s) && blitColors(*s, x, y, width, height, targetX, targetY)) return;
+    // Else the reference draws the copy from a texture of the whole rectangle, which llvmpipe
+    // cannot allocate beyond 1 GiB (LP_MAX_TEXTURE_SIZE): then it copies nothing.
+    constexpr std::uint64_t kTextureBytesMax = std::uint64_t{1} << 30;
+    if (std::uint64_t(width) * std::uint64_t(height) * 4 > kTextureBytesMax) return;
     // Read first, then draw: overlapping rectangles copy what was there before.
     if (type != GL_COLOR) return drawCopiedValues(*s, x, y, width, height, type);
-    if (blitsColors(*s) && blitColors(*s, x, y, width, height, targetX, targetY)) return;
     drawColors(*s, width, height, windowColors(fb, x, y, width, height), true);
 }
 

@@ -17,6 +17,18 @@ bool insideViewVolume(const glm::vec4& clip) {
              clip.y > clip.w);
 }
 
+// Whether a clip-space point is on the inner side of every enabled user clip plane (their
+// clip-space equations): the reference's draw module culls the raster position's point when a
+// distance is below 0, so a NaN distance keeps it.
+bool insideClipPlanes(const glrenderer::UserClipPlanes& planes, const glm::vec4& clip) {
+    for (std::size_t i = 0; i < planes.planes.size(); ++i) {
+        if (!(planes.enabled >> i & 1u)) continue;
+        const glm::vec4& p = planes.planes[i];
+        if (clip.x * p.x + clip.y * p.y + clip.z * p.z + clip.w * p.w < 0.0f) return false;
+    }
+    return true;
+}
+
 // The reference transforms by the modelview, then the projection (two steps, not their
 // product), divides, and maps to the viewport in float; an invalid position leaves every
 // raster value as it was.
@@ -25,7 +37,11 @@ void rasterPos(const glm::vec4& object) {
     if (!s) return;
     const glm::vec4 eye = transform(s->modelview.top().matrix(), object);
     const glm::vec4 clip = transform(s->projection.top().matrix(), eye);
-    s->rasterValid = insideViewVolume(clip);
+    if (s->clipPlanesStale) {
+        s->clipPlanesStale = false;
+        updateClipPlanes(*s);
+    }
+    s->rasterValid = insideViewVolume(clip) && insideClipPlanes(s->draw.clipPlanes, clip);
     if (!s->rasterValid) return;
     const float d = clip.w == 0.0f ? 1.0f : 1.0f / clip.w;
     const auto& v = s->draw.viewport;

@@ -37,7 +37,8 @@ void defineLevel(TextureLevel& level, int width, int height, int border, GLint i
     level.base = base;
     level.defined = true;
     level.imageWidth = width - 2 * border;
-    level.imageHeight = std::max(height - 2 * border, 1);  // a 1D texture's one row
+    // A 1D texture (height 1) has one row, its border or not; a 2D one with height 2 * border none.
+    level.imageHeight = height == 1 ? 1 : height - 2 * border;
     std::vector<glm::vec4> inner;
     if (border == 0) {
         inner = rgba;
@@ -209,12 +210,15 @@ void genTextures(GLsizei n, GLuint* names) {
     if (n < 0) return setError(*s, GL_INVALID_VALUE);
     if (!names) return;
     auto& objects = s->textures.objects;
-    // Consecutive names after the largest in use, as the reference gives them.
-    GLuint next = objects.empty() ? 1 : objects.rbegin()->first + 1;
+    // Consecutive names after the largest ever given or bound, deleted or not, as the reference
+    // gives them (_mesa_HashFindFreeKeyBlock); after the largest in use when those would overflow.
+    GLuint& largest = s->textures.largestNameEver;
+    GLuint next = largest < 0xFFFFFFFEu - static_cast<GLuint>(n) ? largest + 1 : (objects.empty() ? 1 : objects.rbegin()->first + 1);
     for (GLsizei i = 0; i < n; ++i) {
         objects.emplace(next, TextureObject{});
         names[i] = next++;
     }
+    largest = std::max(largest, next - 1);
 }
 
 void bindTexture(GLenum target, GLuint name) {
@@ -222,6 +226,7 @@ void bindTexture(GLenum target, GLuint name) {
     if (!s) return;
     if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return setError(*s, GL_INVALID_ENUM);
     if (name != 0) {
+        s->textures.largestNameEver = std::max(s->textures.largestNameEver, name);
         TextureObject& texture = s->textures.objects[name];
         if (texture.target != 0 && texture.target != target) return setError(*s, GL_INVALID_OPERATION);
         texture.target = target;

@@ -19,10 +19,11 @@
 namespace fuzz {
 namespace {
 
-// Every pixel, 4 bytes each, rows packed.
+// Every pixel, 4 bytes each, rows packed (whatever pixel-store state the stream left).
 Answer readFrame(GLenum format, GLenum type, AnswerKind kind, const Stream& stream) {
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(stream.width) * static_cast<std::size_t>(stream.height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (GLenum pname : {GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS, GL_PACK_SWAP_BYTES}) glPixelStorei(pname, 0);
     glReadPixels(0, 0, stream.width, stream.height, format, type, pixels.data());
     return {kind, kFinalFrame, std::move(pixels)};
 }

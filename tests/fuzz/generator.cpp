@@ -6,8 +6,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 
+#include "pixel_feature_calls.h"
 #include "random_source.h"
 #include "reference_departures.h"
 
@@ -58,6 +60,7 @@ public:
         badness_ = random_.pick({0.0, 0.0, 0.0, 0.02, 0.02, 0.15});
         invalidEnumRate_ = badness_ > 0 ? 0.1 : 0.01;
         bigDrawLeft_ = random_.chance(0.03);
+        pixelFeatures_.emplace(seed, stream_.width, stream_.height, badness_, invalidEnumRate_);
     }
 
     Stream generate() {
@@ -67,6 +70,7 @@ public:
             episode();
             attribStackCall();
             featureCalls();
+            pixelFeatures_->between([this](Call call) { emit(std::move(call)); });
             if (random_.chance(0.6)) emit("glGetError");
         }
         emit("glGetError");
@@ -683,6 +687,7 @@ private:
     RandomSource random_;
     RandomSource attribRandom_;
     RandomSource featureRandom_;
+    std::optional<PixelFeatureCalls> pixelFeatures_;  // made once the stream's size and badness are drawn
     AvoidedCounts& avoided_;
     Stream stream_;
     StreamContext context_;

@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "gl_enum_names.h"
+#include "image_calls.h"
 
 namespace fuzz {
 namespace {
@@ -156,6 +157,7 @@ UnsignedStyle unsignedStyle(std::string_view name) {
     if (name == "glClear" || name.ends_with("Attrib")) return UnsignedStyle::ClearMask;
     if (name == "glBegin") return UnsignedStyle::PrimitiveMode;
     if (name.ends_with("List") || name.ends_with("Lists") || name == "glListBase") return UnsignedStyle::Number;
+    if (name.ends_with("Texture") || name.ends_with("Textures") || name.starts_with("glStencil")) return UnsignedStyle::Number;
     return UnsignedStyle::Enum;
 }
 
@@ -193,32 +195,6 @@ struct Entry<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
     }
 };
 
-int readPixelsBytesPerPixel(GLenum format, GLenum type) {
-    if (format == GL_RGB && type == GL_UNSIGNED_BYTE) return 3;
-    return 4;  // RGBA bytes, 32-bit depth; for pairs GL rejects, a safe size for a faulty write
-}
-
-// glReadPixels into a heap buffer of exactly the bytes GL may write (so that AddressSanitizer sees
-// any write beyond), prefilled so that untouched bytes show; the whole buffer is the answer.
-void runReadPixels(const Call& call, std::uint32_t index, int width, int height, Answers& answers) {
-    ArgumentReader r{call.args};
-    const auto x = fromDouble<GLint>(r.take()), y = fromDouble<GLint>(r.take());
-    const auto w = fromDouble<GLsizei>(r.take()), h = fromDouble<GLsizei>(r.take());
-    const auto format = fromDouble<GLenum>(r.take()), type = fromDouble<GLenum>(r.take());
-    std::vector<std::uint8_t> buffer(readPixelsBytes(x, y, w, h, readPixelsBytesPerPixel(format, type), width, height), 0x5A);
-    glReadPixels(x, y, w, h, format, type, buffer.data());
-    answers.push_back({format == GL_DEPTH_COMPONENT ? AnswerKind::Depth : AnswerKind::Color, index, std::move(buffer)});
-}
-
-std::string printReadPixels(const Call& call) {
-    ArgumentReader r{call.args};
-    std::string args;
-    for (int i = 0; i < 4; ++i) args += std::to_string(fromDouble<GLint>(r.take())) + ", ";
-    args += literal(fromDouble<GLenum>(r.take()), UnsignedStyle::Enum) + ", ";
-    args += literal(fromDouble<GLenum>(r.take()), UnsignedStyle::Enum);
-    return "{ static GLubyte pixels[1 << 24]; glReadPixels(" + args + ", pixels); }";
-}
-
 // Every entry point the fuzzer calls: the recorded (state and drawing) calls and the queries.
 #define MYGL_QUERY_CALLS(X)                                                                       \
     X(glad_glGetError, 0) X(glad_glGetBooleanv, 0) X(glad_glGetIntegerv, 0) X(glad_glGetFloatv, 0) \
@@ -236,6 +212,39 @@ std::string printReadPixels(const Call& call) {
     X(glad_glPolygonOffset, 0) X(glad_glClipPlane, 4)                                             \
     X(glad_glNewList, 0) X(glad_glEndList, 0) X(glad_glCallList, 0) X(glad_glDeleteLists, 0) X(glad_glListBase, 0)
 
+// Textures, per-fragment operations, stipple, pixel rectangles, raster positions and the
+// accumulation buffer (the image calls are in image_calls.cpp). glGenTextures writes at most 16
+// names, glPixelMap reads and glGetPixelMap writes at most 16 entries: the generator keeps to that.
+#define MYGL_PIXEL_FEATURE_CALLS(X)                                                               \
+    X(glad_glGenTextures, 0) X(glad_glDeleteTextures, 4) X(glad_glBindTexture, 0) X(glad_glIsTexture, 0) \
+    X(glad_glPrioritizeTextures, 4) X(glad_glTexParameterf, 0) X(glad_glTexParameteri, 0)        \
+    X(glad_glTexParameterfv, 4) X(glad_glTexParameteriv, 4) X(glad_glTexEnvf, 0) X(glad_glTexEnvi, 0) \
+    X(glad_glTexEnvfv, 4) X(glad_glTexEnviv, 4) X(glad_glTexGend, 0) X(glad_glTexGenf, 0) X(glad_glTexGeni, 0) \
+    X(glad_glTexGendv, 4) X(glad_glTexGenfv, 4) X(glad_glTexGeniv, 4)                             \
+    X(glad_glCopyTexImage1D, 0) X(glad_glCopyTexImage2D, 0) X(glad_glCopyTexSubImage1D, 0) X(glad_glCopyTexSubImage2D, 0) \
+    X(glad_glGetTexParameterfv, 0) X(glad_glGetTexParameteriv, 0) X(glad_glGetTexLevelParameterfv, 0) \
+    X(glad_glGetTexLevelParameteriv, 0) X(glad_glGetTexEnvfv, 0) X(glad_glGetTexEnviv, 0)        \
+    X(glad_glGetTexGendv, 0) X(glad_glGetTexGenfv, 0) X(glad_glGetTexGeniv, 0)                    \
+    X(glad_glTexCoord1d, 0) X(glad_glTexCoord1f, 0) X(glad_glTexCoord1i, 0) X(glad_glTexCoord1s, 0) \
+    X(glad_glTexCoord3d, 0) X(glad_glTexCoord3f, 0) X(glad_glTexCoord3i, 0) X(glad_glTexCoord3s, 0) \
+    X(glad_glTexCoord4d, 0) X(glad_glTexCoord4f, 0) X(glad_glTexCoord4i, 0) X(glad_glTexCoord4s, 0) \
+    X(glad_glTexCoord1dv, 1) X(glad_glTexCoord1fv, 1) X(glad_glTexCoord1iv, 1) X(glad_glTexCoord1sv, 1) \
+    X(glad_glTexCoord3dv, 3) X(glad_glTexCoord3fv, 3) X(glad_glTexCoord3iv, 3) X(glad_glTexCoord3sv, 3) \
+    X(glad_glTexCoord4dv, 4) X(glad_glTexCoord4fv, 4) X(glad_glTexCoord4iv, 4) X(glad_glTexCoord4sv, 4) \
+    X(glad_glScissor, 0) X(glad_glAlphaFunc, 0) X(glad_glStencilFunc, 0) X(glad_glStencilOp, 0)   \
+    X(glad_glStencilMask, 0) X(glad_glClearStencil, 0) X(glad_glBlendFunc, 0) X(glad_glLogicOp, 0) \
+    X(glad_glColorMask, 0) X(glad_glDrawBuffer, 0) X(glad_glReadBuffer, 0) X(glad_glLineStipple, 0) \
+    X(glad_glCopyPixels, 0) X(glad_glPixelZoom, 0) X(glad_glPixelStoref, 0) X(glad_glPixelTransferf, 0) \
+    X(glad_glPixelTransferi, 0) X(glad_glPixelMapfv, 16) X(glad_glPixelMapuiv, 16) X(glad_glPixelMapusv, 16) \
+    X(glad_glGetPixelMapfv, 0) X(glad_glGetPixelMapuiv, 0) X(glad_glGetPixelMapusv, 0)            \
+    X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
+    X(glad_glRasterPos3d, 0) X(glad_glRasterPos3f, 0) X(glad_glRasterPos3i, 0) X(glad_glRasterPos3s, 0) \
+    X(glad_glRasterPos4d, 0) X(glad_glRasterPos4f, 0) X(glad_glRasterPos4i, 0) X(glad_glRasterPos4s, 0) \
+    X(glad_glRasterPos2dv, 2) X(glad_glRasterPos2fv, 2) X(glad_glRasterPos2iv, 2) X(glad_glRasterPos2sv, 2) \
+    X(glad_glRasterPos3dv, 3) X(glad_glRasterPos3fv, 3) X(glad_glRasterPos3iv, 3) X(glad_glRasterPos3sv, 3) \
+    X(glad_glRasterPos4dv, 4) X(glad_glRasterPos4fv, 4) X(glad_glRasterPos4iv, 4) X(glad_glRasterPos4sv, 4) \
+    X(glad_glClearAccum, 0) X(glad_glAccum, 0)
+
 const std::vector<FunctionInfo>& table() {
     static const std::vector<FunctionInfo> functions = [] {
         std::vector<FunctionInfo> t;
@@ -245,8 +254,9 @@ const std::vector<FunctionInfo>& table() {
         MYGL_RECORDED_CALLS(MYGL_FUZZ_ENTRY)
         MYGL_QUERY_CALLS(MYGL_FUZZ_ENTRY)
         MYGL_FEATURE_CALLS(MYGL_FUZZ_ENTRY)
+        MYGL_PIXEL_FEATURE_CALLS(MYGL_FUZZ_ENTRY)
 #undef MYGL_FUZZ_ENTRY
-        t.push_back({"glReadPixels", 6, &runReadPixels, &printReadPixels});
+        for (const ImageFunction& f : imageFunctions()) t.push_back({f.name, f.argumentCount, f.run, f.print});
         return t;
     }();
     return functions;

@@ -104,6 +104,77 @@ bool popsNestedChange(const Call& call, const StreamContext& context) {
     return functionName(call) == "glPopAttrib" && context.attribStack.size() >= 2 && context.attribStack.back().changedSince;
 }
 
+// glTexImage2D/glCopyTexImage2D's border argument and height, by argument position.
+bool definesBorderedTexture(std::string_view name, const std::vector<double>& a, double& height) {
+    if (name == "glTexImage1D" || name == "glCopyTexImage1D") {
+        height = 1;
+        return a[name == "glTexImage1D" ? 4 : 5] == 1;
+    }
+    if (name != "glTexImage2D" && name != "glCopyTexImage2D") return false;
+    height = a[name == "glTexImage2D" ? 4 : 6];
+    return a[name == "glTexImage2D" ? 5 : 7] == 1;
+}
+
+bool definesBorderWithoutRows(const Call& call, const StreamContext&) {
+    double height = 0;
+    return definesBorderedTexture(functionName(call), call.args, height) && height == 2;
+}
+
+bool queriesBorderedSize(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    if (!c.borderedTexture || !name.starts_with("glGetTexLevelParameter")) return false;
+    const auto pname = static_cast<GLenum>(call.args[2]);
+    return pname == GL_TEXTURE_WIDTH || pname == GL_TEXTURE_HEIGHT || pname == GL_TEXTURE_BORDER;
+}
+
+bool isPixelMapIToIAnySize(const Call& call, const StreamContext&) {
+    const std::string_view name = functionName(call);
+    if (!name.starts_with("glPixelMap") || static_cast<GLenum>(call.args[0]) != GL_PIXEL_MAP_I_TO_I) return false;
+    const auto size = static_cast<std::int64_t>(call.args[1]);
+    return size > 0 && (size & (size - 1)) != 0;
+}
+
+bool queriesPriorityAsInteger(const Call& call, const StreamContext&) {
+    return functionName(call) == "glGetTexParameteriv" && static_cast<GLenum>(call.args[1]) == GL_TEXTURE_PRIORITY;
+}
+
+bool movesStencilAsBitmap(const Call& call, const StreamContext&) {
+    const std::string_view name = functionName(call);
+    const std::size_t format = name == "glReadPixels" ? 4 : name == "glDrawPixels" ? 2 : 0;
+    return format && static_cast<GLenum>(call.args[format]) == GL_STENCIL_INDEX && static_cast<GLenum>(call.args[format + 1]) == GL_BITMAP;
+}
+
+// glGetTexLevelParameterfv that fails: a target, level or name GL rejects.
+bool failsFloatLevelQuery(const Call& call, const StreamContext&) {
+    if (functionName(call) != "glGetTexLevelParameterfv") return false;
+    const auto target = static_cast<GLenum>(call.args[0]);
+    const auto pname = static_cast<GLenum>(call.args[2]);
+    constexpr GLenum kNames[] = {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER, GL_TEXTURE_COMPONENTS, GL_TEXTURE_RED_SIZE,
+                                 GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE,
+                                 GL_TEXTURE_INTENSITY_SIZE};
+    return (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) || call.args[1] < 0 || call.args[1] > 14 ||
+           std::find(std::begin(kNames), std::end(kNames), pname) == std::end(kNames);
+}
+
+bool copiesBeyondTextureSize(const Call& call, const StreamContext&) {
+    constexpr double kTextureSizeMax = 16384;  // llvmpipe's largest texture side
+    return functionName(call) == "glCopyPixels" && (call.args[2] > kTextureSizeMax || call.args[3] > kTextureSizeMax);
+}
+
+bool copiesTextureWithBadInternalFormat(const Call& call, const StreamContext&) {
+    const std::string_view name = functionName(call);
+    if (name != "glCopyTexImage1D" && name != "glCopyTexImage2D") return false;
+    const auto internal = static_cast<GLenum>(call.args[2]);
+    // GL 1.1 leaves 1, 2, 3 and 4 out of glCopyTexImage's formats.
+    constexpr GLenum kFormats[] = {GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, 0x8049, GL_RGB, GL_RGBA,
+                                   GL_RGB8, GL_RGBA8, GL_LUMINANCE8, GL_ALPHA8};
+    return std::find(std::begin(kFormats), std::end(kFormats), internal) == std::end(kFormats);
+}
+
+bool queriesLevelFormat(const Call& call, const StreamContext&) {
+    return functionName(call).starts_with("glGetTexLevelParameter") && static_cast<GLenum>(call.args[2]) == GL_TEXTURE_COMPONENTS;
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -132,6 +203,33 @@ constexpr Departure kDepartures[] = {
     {"pop-after-nested-change",
      "glPopAttrib of a nested push after a state change: OSMesa resets its changed-groups mask to the push's, so the outer pop skips groups changed inside",
      popsNestedChange},
+    {"texture-border-without-rows",
+     "glTexImage2D/glCopyTexImage2D with border 1 and height 2: OSMesa strips the border from the width only (a w-2 x 2 image), the spec's image has no rows",
+     definesBorderWithoutRows},
+    {"texture-border-stripped",
+     "glGetTexLevelParameter of GL_TEXTURE_WIDTH/HEIGHT/BORDER after a bordered image: OSMesa stores it stripped (width - 2, border 0), the spec counts the border",
+     queriesBorderedSize},
+    {"pixel-map-i-to-i-any-size",
+     "glPixelMap(GL_PIXEL_MAP_I_TO_I) with a size not a power of two: OSMesa takes it, the spec gives GL_INVALID_VALUE",
+     isPixelMapIToIAnySize},
+    {"stencil-as-bitmap",
+     "glReadPixels/glDrawPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa never returns (glReadPixels loops printing 'Unsupported format/type'); the spec moves bits",
+     movesStencilAsBitmap},
+    {"failed-level-query-writes",
+     "glGetTexLevelParameterfv with a bad target, level or name: OSMesa records the error and still writes its uninitialized int (0) to params",
+     failsFloatLevelQuery},
+    {"copy-pixels-beyond-texture-size",
+     "glCopyPixels wider or taller than 16384 not done as a blit: OSMesa draws its rectangle as zeros (its texture cannot hold the copy); MyGL copies nothing",
+     copiesBeyondTextureSize},
+    {"copy-texture-bad-internal-format",
+     "glCopyTexImage1D/2D with an internal format GL 1.1 does not take (1-4 too): OSMesa gives GL_INVALID_ENUM, GL 1.1 GL_INVALID_VALUE",
+     copiesTextureWithBadInternalFormat},
+    {"undefined-level-format",
+     "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial value), GL 1.1's is 1",
+     queriesLevelFormat},
+    {"texture-priority-as-integer",
+     "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
+     queriesPriorityAsInteger},
 };
 
 }  // namespace
@@ -157,6 +255,8 @@ void StreamContext::update(const Call& call) {
         inBlock = atFirstVertex = {};
     } else if (name == "glEnd") {
         insideBegin = false;
+    } else if (double height = 0; definesBorderedTexture(name, call.args, height)) {
+        borderedTexture = true;
     } else if (name == "glFlush" || name == "glFinish") {
         alphaNotOneSinceFlush = false;
     } else if (name == "glLineWidth" || name == "glPointSize") {

@@ -54,4 +54,13 @@ inline std::uint32_t clearDepth24(double depth) {
     return static_cast<std::uint32_t>(std::nearbyint(depth * 16777215.0));
 }
 
+// glClear's depth when the reference clears depth by drawing a quad (a scissor smaller than the
+// window, or the stencil cleared with it under a partial write mask): the clear value as a
+// float NDC z, (d * 2 - 1) * 0.5 + 0.5 in float, times 16777215 in float, rounded to nearest even.
+inline std::uint32_t quadClearDepth24(double depth) {
+    const float clamped = static_cast<float>(std::clamp(depth, 0.0, 1.0));
+    const float window = (clamped * 2.0f - 1.0f) * 0.5f + 0.5f;
+    return static_cast<std::uint32_t>(std::nearbyint(window * 16777215.0f));
+}
+
 }  // namespace glrenderer
