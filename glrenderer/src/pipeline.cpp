@@ -109,7 +109,7 @@ std::size_t Pipeline::wrapOpenPrimitive() {
     const WrapSplit split = splitAtWrap(mode, count, loopContinued_);
     std::array<Vertex, std::tuple_size_v<decltype(split.carried)>> carried;
     MYGL_INVARIANT(split.carriedCount <= carried.size());
-    const std::size_t carriedCount = split.carriedCount;
+    const std::size_t carriedCount = std::min(split.carriedCount, carried.size());  // (a bound the compiler sees)
     for (std::size_t i = 0; i < carriedCount; ++i) carried[i] = open_[split.carried[i]];
     open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(split.drawnFirst));
     open_.resize(split.drawnCount);
