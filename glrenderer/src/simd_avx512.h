@@ -126,6 +126,10 @@ struct Avx512Lanes {
 
     static Int load(const std::uint32_t* pixels, Mask m) { return _mm512_maskz_loadu_epi32(m, pixels); }
     static void store(std::uint32_t* pixels, Mask m, Int v) { _mm512_mask_storeu_epi32(pixels, m, v); }
+    // table[index] per lane, index 0-15: one permute.
+    static Int lookup16(const std::uint32_t* table, Int index) {
+        return _mm512_permutexvar_epi32(index, _mm512_loadu_si512(table));
+    }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
         return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), m, offsets, base, 4);
