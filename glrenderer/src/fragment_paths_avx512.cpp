@@ -1,5 +1,5 @@
-// The fragment routines in 16 lanes of AVX-512F. Compiled with -mavx512f -mfma; called only
-// after cpuHasAvx512().
+// The fragment routines in 16 lanes of AVX-512F and BW. Compiled with -mavx512f -mavx512bw
+// -mfma; called only after cpuHasAvx512().
 #include "fragment_routines.h"
 #include "simd_avx512.h"
 

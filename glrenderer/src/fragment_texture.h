@@ -189,7 +189,7 @@ private:
         if (key.mipFilter == MipmapFilter::None) return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, 0), live);
         if (key.mipFilter == MipmapFilter::Nearest) {
             const Int index = L::minInt(L::maxInt(L::roundToInt(lod), L::ints(0)), last);
-            return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index, live), live);
+            return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index), live);
         }
         // Linear: floor and fraction of lod; the fraction in 8 bits, truncated, weighs the two levels.
         const Float floor = L::floor(lod);
@@ -197,8 +197,8 @@ private:
         const Int index0 = L::minInt(L::maxInt(first, L::ints(0)), last);
         const Int index1 = L::minInt(L::maxInt(L::add(first, L::ints(1)), L::ints(0)), last);
         const Int weight = L::maxInt(L::truncateToInt(L::mul(L::sub(lod, floor), L::floats(256.0f))), L::ints(0));
-        const TexelFields<L> texel0 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index0, live), live);
-        const TexelFields<L> texel1 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index1, live), live);
+        const TexelFields<L> texel0 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index0), live);
+        const TexelFields<L> texel1 = sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index1), live);
         return lerpTexels<L>(weight, texel0, texel1);
     }
 

@@ -65,7 +65,7 @@ private:
         const Int last = L::ints(texture_->levelCount - 1);
         if (mip == MipmapFilter::Nearest) {
             const Int index = L::minInt(L::maxInt(L::roundToInt(lod), L::ints(0)), last);
-            return image(key, filter, s, t, Level::of(*texture_, index, live), nearestLanes, live, out);
+            return image(key, filter, s, t, Level::of(*texture_, index), nearestLanes, live, out);
         }
         const Float floor = L::floor(lod);
         const Int first = L::roundToInt(floor);
@@ -74,8 +74,8 @@ private:
         const Int index0 = L::minInt(L::maxInt(first, L::ints(0)), last);
         const Int index1 = L::minInt(L::maxInt(L::add(first, L::ints(1)), L::ints(0)), last);
         Float next[4];
-        image(key, filter, s, t, Level::of(*texture_, index0, live), nearestLanes, live, out);
-        image(key, filter, s, t, Level::of(*texture_, index1, live), nearestLanes, live, next);
+        image(key, filter, s, t, Level::of(*texture_, index0), nearestLanes, live, out);
+        image(key, filter, s, t, Level::of(*texture_, index1), nearestLanes, live, next);
         for (int c = 0; c < 4; ++c) out[c] = lerp(weight, out[c], next[c]);
     }
 

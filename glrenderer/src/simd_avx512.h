@@ -1,5 +1,5 @@
 #pragma once
-// Only for files compiled with -mavx512f -mfma, called after cpuHasAvx512().
+// Only for files compiled with -mavx512f -mavx512bw -mfma, called after cpuHasAvx512().
 #include <immintrin.h>
 
 #include <bit>
@@ -10,7 +10,7 @@
 
 namespace glrenderer {
 
-// 16 lanes of AVX-512F: the lane operations of the fragment stage (fragment_stage.h). Masks are
+// 16 lanes of AVX-512F and BW: the lane operations of the fragment stage (fragment_stage.h). Masks are
 // mask registers, which make partial blocks as cheap as whole ones (kCheapMasks).
 struct Avx512Lanes {
     static constexpr int kCount = 16;
@@ -59,17 +59,11 @@ struct Avx512Lanes {
     static Float loadFloats(const float* lanes) { return _mm512_loadu_ps(lanes); }
     static void storeFloats(float* lanes, Float v) { _mm512_storeu_ps(lanes, v); }
     static Int minUnsigned(Int a, Int b) { return _mm512_min_epu32(a, b); }
-    // Per 16-bit half of each lane: the low 16 bits of the product, the unsigned minimum (in two
-    // AVX2 halves: AVX-512F has no 16-bit multiply, that is AVX-512BW), a logical shift right by 8.
-    static Int mulLow16(Int a, Int b) { return byHalves(a, b, _mm256_mullo_epi16); }
-    static Int minUnsigned16(Int a, Int b) { return byHalves(a, b, _mm256_min_epu16); }
-    static Int shiftRight16By8(Int v) { return _mm512_and_epi32(_mm512_srli_epi32(v, 8), _mm512_set1_epi32(0x00FF00FF)); }
-    template <class Op>
-    static Int byHalves(Int a, Int b, Op op) {
-        const __m256i low = op(_mm512_castsi512_si256(a), _mm512_castsi512_si256(b));
-        const __m256i high = op(_mm512_extracti64x4_epi64(a, 1), _mm512_extracti64x4_epi64(b, 1));
-        return _mm512_inserti64x4(_mm512_castsi256_si512(low), high, 1);
-    }
+    // Per 16-bit half of each lane (AVX-512BW): the low 16 bits of the product, the unsigned
+    // minimum, a logical shift right by 8.
+    static Int mulLow16(Int a, Int b) { return _mm512_mullo_epi16(a, b); }
+    static Int minUnsigned16(Int a, Int b) { return _mm512_min_epu16(a, b); }
+    static Int shiftRight16By8(Int v) { return _mm512_srli_epi16(v, 8); }
     static Int maxUnsigned(Int a, Int b) { return _mm512_max_epu32(a, b); }
     static Int minInt(Int a, Int b) { return _mm512_min_epi32(a, b); }
     static Int maxInt(Int a, Int b) { return _mm512_max_epi32(a, b); }
@@ -83,16 +77,10 @@ struct Avx512Lanes {
 
     static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
-    // As Avx2Lanes::lerpFields, on each 256-bit half (pmulhrsw needs AVX-512BW at this width).
+    // As Avx2Lanes::lerpFields (pmulhrsw at this width is AVX-512BW).
     static Int lerpFields(Int w, Int a, Int b) {
-        const auto half = [](__m256i w8, __m256i x, __m256i y) {
-            const __m256i w16 = _mm256_or_si256(w8, _mm256_slli_epi32(w8, 16));
-            return _mm256_add_epi16(x, _mm256_mulhrs_epi16(w16, _mm256_slli_epi16(_mm256_sub_epi16(y, x), 7)));
-        };
-        const __m256i lowHalf = half(_mm512_castsi512_si256(w), _mm512_castsi512_si256(a), _mm512_castsi512_si256(b));
-        const __m256i highHalf = half(_mm512_extracti64x4_epi64(w, 1), _mm512_extracti64x4_epi64(a, 1),
-                                      _mm512_extracti64x4_epi64(b, 1));
-        return _mm512_inserti64x4(_mm512_castsi256_si512(lowHalf), highHalf, 1);
+        const __m512i w16 = _mm512_or_si512(w, _mm512_slli_epi32(w, 16));
+        return _mm512_add_epi16(a, _mm512_mulhrs_epi16(w16, _mm512_slli_epi16(_mm512_sub_epi16(b, a), 7)));
     }
     static Mask greaterThan(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
     // Lane 2k (even) or 2k + 1 (odd) in both lanes 2k and 2k + 1.
@@ -126,6 +114,10 @@ struct Avx512Lanes {
 
     static Int load(const std::uint32_t* pixels, Mask m) { return _mm512_maskz_loadu_epi32(m, pixels); }
     static void store(std::uint32_t* pixels, Mask m, Int v) { _mm512_mask_storeu_epi32(pixels, m, v); }
+    // table[index] per lane, index 0-15: one permute.
+    static Int lookup16(const std::uint32_t* table, Int index) {
+        return _mm512_permutexvar_epi32(index, _mm512_loadu_si512(table));
+    }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
         return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), m, offsets, base, 4);

@@ -85,6 +85,7 @@ struct ScalarLanes {
         return out;
     }
     static Int gather(const std::uint32_t* base, Int offset, Mask m) { return m ? base[offset] : 0; }
+    static Int lookup16(const std::uint32_t* table, Int index) { return table[index]; }  // index 0-15
     static Int bitAnd(Int a, Int b) { return a & b; }
     static Int bitOr(Int a, Int b) { return a | b; }
     static Int bitXor(Int a, Int b) { return a ^ b; }

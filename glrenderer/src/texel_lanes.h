@@ -57,9 +57,11 @@ struct LevelLanes {
         return {L::ints(static_cast<int>(texture.width[i])), L::ints(static_cast<int>(texture.height[i])),
                 L::ints(static_cast<int>(texture.offset[i]))};
     }
-    static LevelLanes of(const Texture& texture, typename L::Int index, typename L::Mask live) {
-        return {L::gather(texture.width.data(), index, live), L::gather(texture.height.data(), index, live),
-                L::gather(texture.offset.data(), index, live)};
+    // Level `index` of each lane (clamped to the texture's levels: every lane, live or not).
+    static LevelLanes of(const Texture& texture, typename L::Int index) {
+        static_assert(Texture::kMaxLevels == 16);
+        return {L::lookup16(texture.width.data(), index), L::lookup16(texture.height.data(), index),
+                L::lookup16(texture.offset.data(), index)};
     }
 
     // The texel words at column i, row j (both inside the level).
