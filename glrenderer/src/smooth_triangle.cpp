@@ -89,13 +89,7 @@ void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const Smoo
                 rgba = {value(color[0]), value(color[1]), value(color[2]), value(color[3])};
                 specular = {value(secondary[0]), value(secondary[1]), value(secondary[2])};
             }
-            if (shading.replaceByModulate) {
-                const float alpha = shading.textureAlpha ? cover.factor : rgba.a * cover.factor;
-                rgba = shading.textureColor ? glm::vec4(1.0f, 1.0f, 1.0f, alpha) : glm::vec4(glm::vec3(rgba), alpha);
-            } else {
-                rgba.a *= cover.factor;
-            }
-            fragment.setFlatColor(rgba, specular);
+            fragment.setFlatColor(shading.covered(rgba, cover.factor), specular);
             fragment.shadeSpan(py, px, px, framebuffer, counts);
         }
     }

@@ -25,12 +25,13 @@ struct Coverage {
 };
 using CoverageShader = Coverage (*)(const glm::vec4& aa);
 
+// The colour a fragment hands on, from its interpolated colour and its coverage.
+using CoveredColor = glm::vec4 (*)(const glm::vec4& color, float coverage);
+
 // How a draw's smooth primitives shade, chosen once per draw.
 struct SmoothShading {
-    bool flat;              // one colour (`flatColor` of each primitive)
-    bool replaceByModulate;  // GL_REPLACE drawn as GL_MODULATE of (1, 1, 1, alpha): see smoothFragmentKey
-    bool textureAlpha;       // the texture has alpha (under replaceByModulate)
-    bool textureColor;       // the texture has colour, not alpha alone (under replaceByModulate)
+    bool flat;  // one colour (`flatColor` of each primitive)
+    CoveredColor covered;
 };
 
 // The shading of a draw's smooth primitives.
@@ -41,10 +42,7 @@ SmoothShading smoothShading(const DrawState& state);
 // texture coordinates and `aa` with perspective, then multiplies each fragment's alpha by
 // `coverage` of its `aa` and hands it to the fragment stage of `fragments` (a flat key: the
 // colour reaches it per fragment). `flatColor` is the colour under flat shading.
-// Under GL_REPLACE the alpha the coverage multiplies is the texture's: the fragment's colour
-// becomes (1, 1, 1, coverage) for a texture with alpha and (1, 1, 1, alpha * coverage) for one
-// without (an alpha texture keeps the fragment's red, green and blue), modulated by the texel,
-// which gives GL_REPLACE's colour and the reference's alpha.
+// The shading's `covered` gives the colour the stage takes (smoothShading).
 void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
                         const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage, const FragmentChoice& fragments,
                         const PixelRect& drawable, Framebuffer& framebuffer, FragmentCounts& counts);

@@ -75,16 +75,26 @@ struct Variant {
     std::function<void()> setup;
 };
 
+void blendOver() {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+}
+
+// Blending over a texture of `format` under the environment `env`.
+Variant textured(const char* name, GLenum format, GLint env) {
+    return {name, [format, env] {
+                blendOver();
+                makeTexture(format);
+                glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, env);
+            }};
+}
+
 // State on top of the smooth primitives: each variant alone.
 std::vector<Variant> variants() {
-    const auto blend = [] {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    };
     return {
         {"plain", [] {}},
-        {"blend", blend},
-        {"flat blend", [blend] { blend(), glShadeModel(GL_FLAT); }},
+        {"blend", blendOver},
+        {"flat blend", [] { blendOver(), glShadeModel(GL_FLAT); }},
         {"depth", [] { glEnable(GL_DEPTH_TEST); }},
         {"depth blend additive", [] {
              glEnable(GL_DEPTH_TEST);
@@ -99,38 +109,20 @@ std::vector<Variant> variants() {
              glEnable(GL_SCISSOR_TEST);
              glScissor(7, 5, 31, 22);
          }},
-        {"fog", [blend] {
-             blend();
+        {"fog", [] {
+             blendOver();
              glEnable(GL_FOG);
              glFogi(GL_FOG_MODE, GL_LINEAR);
              glFogf(GL_FOG_START, -1.0f);
              glFogf(GL_FOG_END, 1.0f);
          }},
-        {"texture modulate", [blend] { blend(), makeTexture(GL_RGBA); }},
-        {"texture replace rgba", [blend] {
-             blend(), makeTexture(GL_RGBA);
-             glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-         }},
-        {"texture replace rgb", [blend] {
-             blend(), makeTexture(GL_RGB);
-             glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-         }},
-        {"texture replace alpha", [blend] {
-             blend(), makeTexture(GL_ALPHA);
-             glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-         }},
-        {"texture replace intensity", [blend] {
-             blend(), makeTexture(GL_INTENSITY);
-             glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-         }},
-        {"texture decal", [blend] {
-             blend(), makeTexture(GL_RGBA);
-             glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
-         }},
-        {"texture blend", [blend] {
-             blend(), makeTexture(GL_LUMINANCE_ALPHA);
-             glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);
-         }},
+        textured("texture modulate", GL_RGBA, GL_MODULATE),
+        textured("texture replace rgba", GL_RGBA, GL_REPLACE),
+        textured("texture replace rgb", GL_RGB, GL_REPLACE),
+        textured("texture replace alpha", GL_ALPHA, GL_REPLACE),
+        textured("texture replace intensity", GL_INTENSITY, GL_REPLACE),
+        textured("texture decal", GL_RGBA, GL_DECAL),
+        textured("texture blend", GL_LUMINANCE_ALPHA, GL_BLEND),
         {"lighting", [] {
              glEnable(GL_LIGHTING);
              glEnable(GL_LIGHT0);
