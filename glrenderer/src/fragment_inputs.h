@@ -89,6 +89,12 @@ struct FragmentInputs {
 
     // The texture planes of s, t and q through `planes` (a PlaneBuilder or a line's), each
     // coordinate divided by w as a perspective colour is, with the plane of 1 / w.
+    // The draw's texture and its colours, for planes set up elsewhere.
+    void setTextureImage(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor) {
+        texture = image;
+        textureEnvColor = envColor;
+        textureBorderColor = borderColor;
+    }
     template <class Planes, class... Vertices>
     void setTexture(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor, const Planes& planes,
                     const Vertices&... v);
@@ -114,9 +120,7 @@ namespace glrenderer {
 template <class Planes, class... Vertices>
 void FragmentInputs::setTexture(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor,
                                 const Planes& planes, const Vertices&... v) {
-    texture = image;
-    textureEnvColor = envColor;
-    textureBorderColor = borderColor;
+    setTextureImage(image, envColor, borderColor);
     invW = planes.plane(v.invW...);
     texCoord[0] = planes.plane((v.texCoord.s * v.invW)...);
     texCoord[1] = planes.plane((v.texCoord.t * v.invW)...);
