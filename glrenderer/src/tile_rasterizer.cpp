@@ -93,11 +93,19 @@ void TileRasterizer::releaseTriangles() {
 
 void TileRasterizer::bin(const RasterTriangle& triangle) {
     ++queued_;
-    for (int ty = triangle.minY >> tileShift_; ty <= triangle.maxY >> tileShift_; ++ty) {
-        for (int tx = triangle.minX >> tileShift_; tx <= triangle.maxX >> tileShift_; ++tx) {
-            const auto tile = static_cast<std::size_t>(ty * tilesX_ + tx);
-            bins_[tile].push_back(&triangle);
-            ++binnedSinceFlush_[tile];
+    // In locals: the stores into the bins could otherwise alias the triangle and the members,
+    // which were read again per tile (most of a mesh's triangles lie in one tile).
+    const int shift = tileShift_;
+    const int firstX = triangle.minX >> shift, lastX = triangle.maxX >> shift;
+    const int firstY = triangle.minY >> shift, lastY = triangle.maxY >> shift;
+    const auto tilesX = static_cast<std::size_t>(tilesX_);
+    std::vector<const RasterTriangle*>* const bins = bins_.data();
+    std::uint32_t* const binned = binnedSinceFlush_.data();
+    for (int ty = firstY; ty <= lastY; ++ty) {
+        for (int tx = firstX; tx <= lastX; ++tx) {
+            const std::size_t tile = static_cast<std::size_t>(ty) * tilesX + static_cast<std::size_t>(tx);
+            bins[tile].push_back(&triangle);
+            ++binned[tile];
         }
     }
 }
