@@ -12,10 +12,11 @@ namespace glrenderer {
 namespace {
 
 // prepareTriangle stores the planes of 1 / w, z and the fog coordinate as three in a row, and
-// loads a vertex's secondary colour as four floats.
+// loads a vertex's position and its secondary colour with the fog coordinate as four floats.
 static_assert(offsetof(FragmentInputs, depth) == offsetof(FragmentInputs, invW) + sizeof(AttributePlane) &&
               offsetof(FragmentInputs, fogCoord) == offsetof(FragmentInputs, depth) + sizeof(AttributePlane));
 static_assert(offsetof(WindowVertex, fogCoord) == offsetof(WindowVertex, secondaryColor) + 3 * sizeof(float));
+static_assert(offsetof(WindowVertex, z) == 2 * sizeof(float) && offsetof(WindowVertex, invW) == 3 * sizeof(float));
 
 // Floor and ceiling of a fixed-point value in whole pixels, for any sign.
 std::int64_t floorToPixel(std::int64_t fixed) { return fixed >> kSubpixelBits; }
@@ -111,7 +112,9 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     // each other in FragmentInputs.
     if (perspective || key.depthTest || key.fog != FogMode::Off || key.textureEnv != TextureEnv::Off) {
         lanes([&](const WindowVertex& v) {
-            return _mm_setr_ps(v.invW, v.z, v.fogCoord * v.invW, 0.0f);
+            const __m128 position = _mm_loadu_ps(&v.x);  // x, y, z, 1 / w
+            const __m128 fogOverW = _mm_mul_ps(_mm_loadu_ps(&v.secondaryColor.x), oneOverW(v));  // in lane 3
+            return _mm_shuffle_ps(position, fogOverW, _MM_SHUFFLE(3, 3, 2, 3));
         }).store(&in.invW, 0, 3);
     }
     if (perspective) in.setPath(fragments.path(in.invW));
