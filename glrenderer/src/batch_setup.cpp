@@ -107,12 +107,14 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
+    const PixelRect drawable = drawableRect(batch.state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
     // The vertices first .. first + count, on the direct path or through the draw module.
     const auto decompose = [&](std::uint32_t first, std::uint32_t count, Outcode outside) {
         const DecompositionPath path = outside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
         const Call call{batch, batch.vertices, assembled, &target, stats, &fragments,
                         path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
-                            batch.methods.culling == CullMethod::WindowArea};
+                            batch.methods.culling == CullMethod::WindowArea,
+                        nullptr, nullptr, drawable};
         decomposeTriangles(batch.mode, count, path, v1v3Quads, [&](TriangleIndices t) {
             for (std::uint32_t& v : t.v) v = indexed ? batch.indices[v + first] : v + first;
             setUpTriangle(call, t, viewport);
@@ -227,7 +229,9 @@ void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
-    setUpTriangle(Call{batch, {}, {}, &target, stats, &fragments}, v0, v1, v2, flatColor);
+    const PixelRect drawable = drawableRect(batch.state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
+    setUpTriangle(Call{batch, {}, {}, &target, stats, &fragments, false, nullptr, nullptr, drawable}, v0, v1, v2,
+                  flatColor);
 }
 
 // Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.
@@ -270,8 +274,7 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     ++call.stats.rasterized;
-    const PixelRect drawable = drawableRect(state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
-    if (prepareTriangle(triangle, *call.fragments, methods.raster, drawable, call.target->slot())) {
+    if (prepareTriangle(triangle, *call.fragments, methods.raster, call.drawable, call.target->slot())) {
         call.target->keep();
     }
 }

@@ -7,6 +7,7 @@
 #include "batch.h"
 #include "feedback_output.h"
 #include "fragment_paths.h"
+#include "pixel_rect.h"
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/hit_range.h"
 #include "glrenderer/stats.h"
@@ -67,16 +68,18 @@ private:
         bool drawModuleCulls = false;
         HitRange* hits = nullptr;  // GL_SELECT
         FeedbackOutput* feedback = nullptr;  // GL_FEEDBACK
+        PixelRect drawable{};  // drawableRect of the draw, when drawing
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     // A triangle's window vertices (by address: most triangles take them as they are) with the
     // records they came from (Vertex or ClipVertex), for their back colours, and its provoking
     // vertex, for its flat colours.
     template <class Record>
-    void setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
+    [[gnu::always_inline]] inline void setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
                             std::array<const Record*, 3> records, const Vertex& provoking);
     Outcode run(const SubmittedBatch& batch);
-    void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+    // (Inlined into the callers: it is most of the work per triangle, called once each.)
+    [[gnu::always_inline]] inline void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor);
 
     const Framebuffer& framebuffer_;  // for its size only

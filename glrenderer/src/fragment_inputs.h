@@ -65,30 +65,38 @@ struct FragmentPath {
 // evaluated at pixel (x, y) in internal rows, and the path that draws them. Only the planes the
 // key reads are set.
 struct FragmentInputs {
+    // The path's key and routine, as two fields so that the flat colour packs between them.
+    // (The fields every key reads come first, then the planes most keys read: a triangle's
+    // setup writes and its tiles read the cache lines it uses, RasterTriangle.)
+    FragmentKey key;
+    std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
+    const FragmentRoutine* routine = nullptr;
+    FragmentOpsConstants ops;  // (issue 16)
+    const PolygonStipplePattern* polygonStipple = nullptr;  // with a key that has it (interned)
     AttributePlane color[4];  // colour, or colour / w under perspective shading
-    AttributePlane secondaryColor[3];  // the same of the secondary colour, with a key that has the colour sum
     AttributePlane invW;      // 1 / w, under perspective shading
     AttributePlane depth;     // window z, with the depth test
     // Fog (issue 16), with a key that has it: the fog coordinate's plane, divided by w as a
     // perspective colour's is (invW and the colour planes are set too, constant under flat
     // shading), and the draw's constants.
     AttributePlane fogCoord;
-    FogState fog;
     float depthOffset = 0.0f;  // polygon offset, with a key that has it
-    const PolygonStipplePattern* polygonStipple = nullptr;  // with a key that has it (interned)
-    FragmentOpsConstants ops;  // (issue 16)
+    AttributePlane secondaryColor[3];  // the same of the secondary colour, with a key that has the colour sum
+    FogState fog;
     // Texturing (issue 16), with a key that has it: planes of s, t and q divided by w (invW is
     // set too) and the draw's texture.
     AttributePlane texCoord[3];
     const Texture* texture = nullptr;
     glm::vec4 textureEnvColor{0.0f}, textureBorderColor{0.0f};
-    // The path's key and routine, as two fields so that the flat colour packs between them.
-    FragmentKey key;
-    std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
-    const FragmentRoutine* routine = nullptr;
 
     // The texture planes of s, t and q through `planes` (a PlaneBuilder or a line's), each
     // coordinate divided by w as a perspective colour is, with the plane of 1 / w.
+    // The draw's texture and its colours, for planes set up elsewhere.
+    void setTextureImage(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor) {
+        texture = image;
+        textureEnvColor = envColor;
+        textureBorderColor = borderColor;
+    }
     template <class Planes, class... Vertices>
     void setTexture(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor, const Planes& planes,
                     const Vertices&... v);
@@ -114,9 +122,7 @@ namespace glrenderer {
 template <class Planes, class... Vertices>
 void FragmentInputs::setTexture(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor,
                                 const Planes& planes, const Vertices&... v) {
-    texture = image;
-    textureEnvColor = envColor;
-    textureBorderColor = borderColor;
+    setTextureImage(image, envColor, borderColor);
     invW = planes.plane(v.invW...);
     texCoord[0] = planes.plane((v.texCoord.s * v.invW)...);
     texCoord[1] = planes.plane((v.texCoord.t * v.invW)...);

@@ -11,9 +11,27 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {  // b > 0
 }
 std::int64_t ceilDiv(std::int64_t a, std::int64_t b) { return -floorDiv(-a, b); }  // b > 0
 
-}  // namespace
+// Up to this many columns, testing pixels costs less than the three 64-bit divisions.
+constexpr int kScannedColumns = 4;
 
-Span coveredSpan(const RasterTriangle& t, int row, int minX, int maxX) {
+// Each pixel's test from the left for the first covered one, then from the right for the last
+// (a row's covered pixels are contiguous).
+Span scannedSpan(const RasterTriangle& t, int row, int minX, int maxX) {
+    if (minX > maxX) return {1, 0};
+    std::int64_t e0 = t.edges[0].at(minX, row), e1 = t.edges[1].at(minX, row), e2 = t.edges[2].at(minX, row);
+    int begin = minX;
+    while ((e0 | e1 | e2) < 0) {
+        if (begin == maxX) return {1, 0};
+        ++begin, e0 += t.edges[0].stepX, e1 += t.edges[1].stepX, e2 += t.edges[2].stepX;
+    }
+    const int columns = maxX - begin;
+    e0 += t.edges[0].stepX * columns, e1 += t.edges[1].stepX * columns, e2 += t.edges[2].stepX * columns;
+    int end = maxX;  // stops at `begin` at the latest, which is covered
+    while ((e0 | e1 | e2) < 0) --end, e0 -= t.edges[0].stepX, e1 -= t.edges[1].stepX, e2 -= t.edges[2].stepX;
+    return {begin, end};
+}
+
+Span dividedSpan(const RasterTriangle& t, int row, int minX, int maxX) {
     std::int64_t begin = minX, end = maxX;
     for (const EdgeFunction& edge : t.edges) {
         // Inside where value + stepX * x >= 0.
@@ -24,6 +42,13 @@ Span coveredSpan(const RasterTriangle& t, int row, int minX, int maxX) {
     }
     if (begin > end) return {1, 0};
     return {static_cast<int>(begin), static_cast<int>(end)};
+}
+
+}  // namespace
+
+Span coveredSpan(const RasterTriangle& t, int row, int minX, int maxX) {
+    if (maxX - minX < kScannedColumns) return scannedSpan(t, row, minX, maxX);
+    return dividedSpan(t, row, minX, maxX);
 }
 
 void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts,

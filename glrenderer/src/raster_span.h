@@ -5,7 +5,8 @@
 namespace glrenderer {
 
 // The columns [begin, end] of one pixel row that a triangle covers, found exactly from its
-// three integer edge functions (one division per edge) instead of testing every pixel.
+// three integer edge functions: one division per edge, or for a few columns a test per pixel
+// from each end.
 struct Span {
     int begin, end;  // inclusive; empty when begin > end
 };

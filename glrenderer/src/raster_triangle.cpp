@@ -1,12 +1,22 @@
 #include "raster_triangle.h"
 
+#include <immintrin.h>
+
 #include <algorithm>
+#include <cstddef>
 
 #include "polygon_offset.h"
 
 
 namespace glrenderer {
 namespace {
+
+// prepareTriangle stores the planes of 1 / w, z and the fog coordinate as three in a row, and
+// loads a vertex's position and its secondary colour with the fog coordinate as four floats.
+static_assert(offsetof(FragmentInputs, depth) == offsetof(FragmentInputs, invW) + sizeof(AttributePlane) &&
+              offsetof(FragmentInputs, fogCoord) == offsetof(FragmentInputs, depth) + sizeof(AttributePlane));
+static_assert(offsetof(WindowVertex, fogCoord) == offsetof(WindowVertex, secondaryColor) + 3 * sizeof(float));
+static_assert(offsetof(WindowVertex, z) == 2 * sizeof(float) && offsetof(WindowVertex, invW) == 3 * sizeof(float));
 
 // Floor and ceiling of a fixed-point value in whole pixels, for any sign.
 std::int64_t floorToPixel(std::int64_t fixed) { return fixed >> kSubpixelBits; }
@@ -80,35 +90,44 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     const WindowVertex& v1 = clockwise ? *t.v[0] : *t.v[1];
     const WindowVertex& v2 = *t.v[2];
     const PlaneBuilder planes(v0, v1, v2);
-    if (key.shading == Shading::Linear) {
-        for (int i = 0; i < 4; ++i) in.color[i] = planes.plane(v0.color[i], v1.color[i], v2.color[i]);
-        if (key.colorSum) {
-            for (int i = 0; i < 3; ++i) {
-                in.secondaryColor[i] = planes.plane(v0.secondaryColor[i], v1.secondaryColor[i], v2.secondaryColor[i]);
-            }
+    const bool perspective = key.shading == Shading::Perspective;
+    // The planes in lanes of four, each vertex's values loaded as they lie in WindowVertex.
+    const auto lanes = [&](auto valuesOf) {
+        return planes.planes(valuesOf(v0), valuesOf(v1), valuesOf(v2));
+    };
+    const auto oneOverW = [](const WindowVertex& v) { return _mm_set1_ps(v.invW); };
+    if (key.shading != Shading::Flat) {
+        lanes([&](const WindowVertex& v) {
+            const __m128 color = _mm_loadu_ps(&v.color.x);
+            return perspective ? _mm_mul_ps(color, oneOverW(v)) : color;
+        }).store(in.color, 0, 4);
+        if (key.colorSum) {  // (the fourth lane is the fog coordinate, left unused)
+            lanes([&](const WindowVertex& v) {
+                const __m128 secondary = _mm_loadu_ps(&v.secondaryColor.x);
+                return perspective ? _mm_mul_ps(secondary, oneOverW(v)) : secondary;
+            }).store(in.secondaryColor, 0, 3);
         }
-    } else if (key.shading == Shading::Perspective) {
-        for (int i = 0; i < 4; ++i) {
-            in.color[i] = planes.plane(v0.color[i] * v0.invW, v1.color[i] * v1.invW, v2.color[i] * v2.invW);
-        }
-        if (key.colorSum) {
-            for (int i = 0; i < 3; ++i) {
-                in.secondaryColor[i] = planes.plane(v0.secondaryColor[i] * v0.invW, v1.secondaryColor[i] * v1.invW,
-                                                    v2.secondaryColor[i] * v2.invW);
-            }
-        }
-        in.invW = planes.plane(v0.invW, v1.invW, v2.invW);
-        in.setPath(fragments.path(in.invW));
     }
-    if (key.depthTest) in.depth = planes.plane(v0.z, v1.z, v2.z);
+    // 1 / w, z and the fog coordinate / w: the planes invW, depth and fogCoord, which follow
+    // each other in FragmentInputs.
+    if (perspective || key.depthTest || key.fog != FogMode::Off || key.textureEnv != TextureEnv::Off) {
+        lanes([&](const WindowVertex& v) {
+            const __m128 position = _mm_loadu_ps(&v.x);  // x, y, z, 1 / w
+            const __m128 fogOverW = _mm_mul_ps(_mm_loadu_ps(&v.secondaryColor.x), oneOverW(v));  // in lane 3
+            return _mm_shuffle_ps(position, fogOverW, _MM_SHUFFLE(3, 3, 2, 3));
+        }).store(&in.invW, 0, 3);
+    }
+    if (perspective) in.setPath(fragments.path(in.invW));
     if (key.depthOffset) in.depthOffset = setupDepthOffset(fragments.polygonOffset, v0, v1, v2);
-    if (key.fog != FogMode::Off) {
-        in.fog = fragments.fog;
-        in.invW = planes.plane(v0.invW, v1.invW, v2.invW);
-        in.fogCoord = planes.plane(v0.fogCoord * v0.invW, v1.fogCoord * v1.invW, v2.fogCoord * v2.invW);
-    }
+    if (key.fog != FogMode::Off) in.fog = fragments.fog;
     if (key.textureEnv != TextureEnv::Off) {
-        in.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, planes, v0, v1, v2);
+        in.setTextureImage(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor);
+        // s, t and q divided by w: lanes s, t, r, q.
+        const FourPlanes st = lanes([&](const WindowVertex& v) {
+            return _mm_mul_ps(_mm_loadu_ps(&v.texCoord.x), oneOverW(v));
+        });
+        st.store(in.texCoord, 0, 2);
+        st.store(&in.texCoord[2], 3, 1);
     }
     return true;
 }

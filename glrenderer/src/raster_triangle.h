@@ -38,13 +38,16 @@ struct EdgeFunction {
 };
 
 // Everything the kernel needs, computed once per triangle so that any tile can draw its part.
-struct RasterTriangle {
+// What every triangle uses comes first: a small mesh triangle's setup writes, and its tile reads,
+// only the first four cache lines (FragmentInputs keeps its common fields first likewise), which
+// are four lines on a line boundary.
+struct alignas(64) RasterTriangle {
     EdgeFunction edges[3];
-    FragmentInputs fragment;
-    RasterMethod method = RasterMethod::Exact;
-    float windowX[3] = {}, windowY[3] = {};  // unsnapped, for the float methods
-    float meanDepth = 0;                      // for the painter's sort
     int minX = 0, maxX = -1, minY = 0, maxY = -1;  // inclusive pixel bounds, internal rows
+    RasterMethod method = RasterMethod::Exact;
+    float meanDepth = 0;                      // for the painter's sort
+    FragmentInputs fragment;
+    float windowX[3] = {}, windowY[3] = {};  // unsnapped, for the float methods
 };
 
 // The fragment key of a draw's triangles: the state's, with the methods' departures (the

@@ -4,6 +4,7 @@
 #include "thread_count.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -51,9 +52,12 @@ void finishStreaming() {
 #endif
 }
 
+// The lines every triangle uses (RasterTriangle's first fields): fetching the rest too read
+// lines that most keys never touch, a third of a dense mesh's triangle records.
 void prefetch(const RasterTriangle& triangle) {
+    constexpr std::size_t kCommonBytes = offsetof(RasterTriangle, fragment) + offsetof(FragmentInputs, secondaryColor);
     const char* bytes = reinterpret_cast<const char*>(&triangle);
-    for (std::size_t line = 0; line < sizeof(RasterTriangle); line += 64) __builtin_prefetch(bytes + line);
+    for (std::size_t line = 0; line < kCommonBytes; line += 64) __builtin_prefetch(bytes + line);
 }
 
 }  // namespace
@@ -93,12 +97,20 @@ void TileRasterizer::releaseTriangles() {
 
 void TileRasterizer::bin(const RasterTriangle& triangle) {
     ++queued_;
-    for (int ty = triangle.minY >> tileShift_; ty <= triangle.maxY >> tileShift_; ++ty) {
-        for (int tx = triangle.minX >> tileShift_; tx <= triangle.maxX >> tileShift_; ++tx) {
-            const auto tile = static_cast<std::size_t>(ty * tilesX_ + tx);
-            bins_[tile].push_back(&triangle);
-            ++binnedSinceFlush_[tile];
-        }
+    const int shift = tileShift_;
+    const int firstX = triangle.minX >> shift, lastX = triangle.maxX >> shift;
+    const int firstY = triangle.minY >> shift, lastY = triangle.maxY >> shift;
+    const auto tileAt = [this](int tx, int ty) {
+        return static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX_) + static_cast<std::size_t>(tx);
+    };
+    const auto add = [&](std::size_t tile) {
+        bins_[tile].push_back(&triangle);
+        ++binnedSinceFlush_[tile];
+    };
+    // Most of a mesh's triangles lie in one tile.
+    if (firstX == lastX && firstY == lastY) return add(tileAt(firstX, firstY));
+    for (int ty = firstY; ty <= lastY; ++ty) {
+        for (int tx = firstX; tx <= lastX; ++tx) add(tileAt(tx, ty));
     }
 }
 

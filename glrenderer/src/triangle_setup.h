@@ -2,6 +2,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include <immintrin.h>
+
 #include "glrenderer/round_to_even.h"
 #include "window_vertex.h"
 
@@ -59,26 +61,58 @@ struct AttributePlane {
     float at(float x, float y) const { return std::fma(dady, y, std::fma(dadx, x, a0)); }
 };
 
+// Four planes at once, lane i of each vector for plane i (a0, dadx, dady as AttributePlane's).
+struct FourPlanes {
+    __m128 a0, dadx, dady;
+
+    // Planes `first` .. `first + count - 1` (count <= 4) to consecutive AttributePlanes, writing
+    // nothing past the last one.
+    void store(AttributePlane* out, int first, int count) const {
+        __m128 rows[4] = {a0, dadx, dady, _mm_setzero_ps()};  // to (a0, dadx, dady, 0) per plane
+        _MM_TRANSPOSE4_PS(rows[0], rows[1], rows[2], rows[3]);
+        float* to = &out->a0;
+        for (int i = 0; i < count - 1; ++i, to += 3) _mm_storeu_ps(to, rows[first + i]);
+        _mm_storel_pi(reinterpret_cast<__m64*>(to), rows[first + count - 1]);
+        _mm_store_ss(to + 2, _mm_movehl_ps(rows[first + count - 1], rows[first + count - 1]));
+    }
+};
+
 // Builds planes through three vertices from their unsnapped window positions, with the
 // reference's order of float operations (the planes are anchored at v0).
 class PlaneBuilder {
 public:
-    PlaneBuilder(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2)
-        : dx01_(v0.x - v1.x), dy01_(v0.y - v1.y), dx20_(v2.x - v0.x), dy20_(v2.y - v0.y),
-          oneOverArea_(1.0f / (dx01_ * dy20_ - dy01_ * dx20_)), x0Center_(v0.x - 0.5f), y0Center_(v0.y - 0.5f) {}
+    PlaneBuilder(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2) {
+        const float dx01 = v0.x - v1.x, dy01 = v0.y - v1.y, dx20 = v2.x - v0.x, dy20 = v2.y - v0.y;
+        const float oneOverArea = 1.0f / (dx01 * dy20 - dy01 * dx20);
+        dy20Scaled_ = dy20 * oneOverArea, dy01Scaled_ = dy01 * oneOverArea;
+        dx01Scaled_ = dx01 * oneOverArea, dx20Scaled_ = dx20 * oneOverArea;
+        x0Center_ = v0.x - 0.5f, y0Center_ = v0.y - 0.5f;
+    }
 
     AttributePlane plane(float a0, float a1, float a2) const {
         const float da01 = a0 - a1;
         const float da20 = a2 - a0;
         AttributePlane p;
-        p.dadx = da01 * (dy20_ * oneOverArea_) - da20 * (dy01_ * oneOverArea_);
-        p.dady = da20 * (dx01_ * oneOverArea_) - da01 * (dx20_ * oneOverArea_);
+        p.dadx = da01 * dy20Scaled_ - da20 * dy01Scaled_;
+        p.dady = da20 * dx01Scaled_ - da01 * dx20Scaled_;
         p.a0 = a0 - (p.dadx * x0Center_ + p.dady * y0Center_);
+        return p;
+    }
+    // plane() of each lane: the same operations, so the same bits.
+    FourPlanes planes(__m128 a0, __m128 a1, __m128 a2) const {
+        const __m128 da01 = _mm_sub_ps(a0, a1);
+        const __m128 da20 = _mm_sub_ps(a2, a0);
+        FourPlanes p;
+        p.dadx = _mm_sub_ps(_mm_mul_ps(da01, _mm_set1_ps(dy20Scaled_)), _mm_mul_ps(da20, _mm_set1_ps(dy01Scaled_)));
+        p.dady = _mm_sub_ps(_mm_mul_ps(da20, _mm_set1_ps(dx01Scaled_)), _mm_mul_ps(da01, _mm_set1_ps(dx20Scaled_)));
+        p.a0 = _mm_sub_ps(a0, _mm_add_ps(_mm_mul_ps(p.dadx, _mm_set1_ps(x0Center_)),
+                                         _mm_mul_ps(p.dady, _mm_set1_ps(y0Center_))));
         return p;
     }
 
 private:
-    float dx01_, dy01_, dx20_, dy20_, oneOverArea_;
+    // The edge deltas times 1 / area, as the reference scales them before the attributes' deltas.
+    float dy20Scaled_, dy01Scaled_, dx01Scaled_, dx20Scaled_;
     float x0Center_, y0Center_;
 };
 

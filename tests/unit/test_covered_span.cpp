@@ -1,0 +1,73 @@
+// coveredSpan against its definition: the pixels of the row whose centers pass all three edge
+// functions, over random triangles from tiny to huge, on areas narrow enough for the per-pixel
+// search and wide enough for the divisions.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+
+#include "raster_span.h"
+#include "raster_triangle.h"
+
+using namespace glrenderer;
+
+namespace {
+
+bool covers(const RasterTriangle& t, int x, int row) {
+    return (t.edges[0].at(x, row) | t.edges[1].at(x, row) | t.edges[2].at(x, row)) >= 0;
+}
+
+// Triangles with vertices up to `reach` fixed-point units (1/256 pixel) from a center up to
+// `reach` from the origin, in either winding; rows and areas around them.
+void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
+    std::mt19937_64 random(seed);
+    std::uniform_int_distribution<std::int64_t> offset(-reach, reach);
+    std::uniform_int_distribution<int> width(-1, 12), pick(0, 7);
+    int compared = 0, nonEmpty = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const std::int64_t cx = offset(random), cy = offset(random);
+        FixedPoint p[3];
+        for (FixedPoint& v : p) v = {cx + offset(random), cy + offset(random)};
+        RasterTriangle t;
+        const bool flip = pick(random) < 4;
+        const FixedPoint& b = flip ? p[2] : p[1];
+        const FixedPoint& c = flip ? p[1] : p[2];
+        t.edges[0] = EdgeFunction(p[0], b), t.edges[1] = EdgeFunction(b, c), t.edges[2] = EdgeFunction(c, p[0]);
+        const auto pixelNear = [&](std::int64_t fixed) { return static_cast<int>((fixed >> kSubpixelBits) + pick(random) - 3); };
+        for (int j = 0; j < 24; ++j) {
+            const FixedPoint& corner = p[static_cast<std::size_t>(j % 3)];
+            const int row = pixelNear(corner.y);
+            const int minX = pixelNear(corner.x) - pick(random);
+            const int maxX = minX + (j % 4 == 0 ? 40 + pick(random) * 9 : width(random));  // both searches
+            bool found = false;
+            int first = 0, last = 0;
+            for (int x = minX; x <= maxX; ++x) {
+                if (!covers(t, x, row)) continue;
+                ASSERT_TRUE(!found || last == x - 1) << "covered pixels not contiguous";
+                if (!found) first = x, found = true;
+                last = x;
+            }
+            const Span span = coveredSpan(t, row, minX, maxX);
+            ++compared;
+            if (!found) {
+                EXPECT_GT(span.begin, span.end) << "row " << row << " [" << minX << ", " << maxX << "]";
+                continue;
+            }
+            ++nonEmpty;
+            EXPECT_EQ(span.begin, first) << "row " << row << " [" << minX << ", " << maxX << "]";
+            EXPECT_EQ(span.end, last) << "row " << row << " [" << minX << ", " << maxX << "]";
+        }
+    }
+    EXPECT_GT(nonEmpty, compared / 20);  // the cases reach covered pixels, not only empty rows
+}
+
+}  // namespace
+
+TEST(CoveredSpan, SmallTrianglesMatchThePixelTests) { expectSpansMatchPixelTests(4 * 256, 1); }
+
+TEST(CoveredSpan, MeshSizedTrianglesMatchThePixelTests) { expectSpansMatchPixelTests(40 * 256, 2); }
+
+// Up to 2^19 pixels from the origin (the edge values stay within 64 bits).
+TEST(CoveredSpan, HugeTrianglesAndSliversMatchThePixelTests) {
+    expectSpansMatchPixelTests(std::int64_t{1} << 27, 3);
+}
