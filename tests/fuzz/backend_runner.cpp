@@ -38,6 +38,7 @@ void executeStream(const Stream& stream, Answers& answers) {
         runCall(stream.calls[i], static_cast<std::uint32_t>(i), stream.width, stream.height, answers);
     }
     glEnd();
+    glEndList();  // a list left open would compile the reads
     for (int i = 0; i < 8 && glGetError() != GL_NO_ERROR; ++i) {
     }
     glFinish();

@@ -175,6 +175,13 @@ bool queriesLevelFormat(const Call& call, const StreamContext&) {
     return functionName(call).starts_with("glGetTexLevelParameter") && static_cast<GLenum>(call.args[2]) == GL_TEXTURE_COMPONENTS;
 }
 
+bool drawsDepthWithUnflushedColor(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    const bool depth = (name == "glCopyPixels" && static_cast<GLenum>(call.args[4]) == GL_DEPTH) ||
+                       (name == "glDrawPixels" && static_cast<GLenum>(call.args[2]) == GL_DEPTH_COMPONENT);
+    return depth && c.colorSinceEnd;
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -224,6 +231,9 @@ constexpr Departure kDepartures[] = {
     {"copy-texture-bad-internal-format",
      "glCopyTexImage1D/2D with an internal format GL 1.1 does not take (1-4 too): OSMesa gives GL_INVALID_ENUM, GL 1.1 GL_INVALID_VALUE",
      copiesTextureWithBadInternalFormat},
+    {"depth-image-unflushed-color",
+     "glCopyPixels(GL_DEPTH)/glDrawPixels(GL_DEPTH_COMPONENT) after a glColor outside glBegin/glEnd: OSMesa colours the fragments with ctx->Current before that glColor (not flushed: _mesa_CopyPixels only flushes vertices)",
+     drawsDepthWithUnflushedColor},
     {"undefined-level-format",
      "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial value), GL 1.1's is 1",
      queriesLevelFormat},
@@ -255,6 +265,7 @@ void StreamContext::update(const Call& call) {
         inBlock = atFirstVertex = {};
     } else if (name == "glEnd") {
         insideBegin = false;
+        colorSinceEnd = false;
     } else if (double height = 0; definesBorderedTexture(name, call.args, height)) {
         borderedTexture = true;
     } else if (name == "glFlush" || name == "glFinish") {
@@ -263,6 +274,7 @@ void StreamContext::update(const Call& call) {
         if (insideBegin || call.args[0] <= 0) return;  // an error: the state stays
         (name == "glLineWidth" ? lineWidthBeyondInt : pointSizeBeyondInt) = !(call.args[0] < kIntLimit);
     } else if (name.starts_with("glColor")) {
+        colorSinceEnd |= !insideBegin;
         colorBeyondUnit = anyBeyond(name, call.args, 1.0, true);
         if (components(name, "glColor") == 4 && !setsAlphaOne(name, call.args[3])) alphaNotOneSinceFlush = true;
         if (insideBegin) inBlock.colorSize = std::max(inBlock.colorSize, components(name, "glColor"));

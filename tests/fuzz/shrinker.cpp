@@ -112,7 +112,7 @@ std::string toCSnippet(const Stream& stream, const Difference& difference) {
         }
         text += "\n";
     }
-    text += "/* then the runner: glEnd(); glGetError() until GL_NO_ERROR; glFinish(); read colour and depth */\n";
+    text += "/* then the runner: glEnd(); glEndList(); glGetError() until GL_NO_ERROR; glFinish(); read colour and depth */\n";
     return text;
 }
 
