@@ -179,7 +179,7 @@ bool drawsDepthWithUnflushedColor(const Call& call, const StreamContext& c) {
     const std::string_view name = functionName(call);
     const bool depth = (name == "glCopyPixels" && static_cast<GLenum>(call.args[4]) == GL_DEPTH) ||
                        (name == "glDrawPixels" && static_cast<GLenum>(call.args[2]) == GL_DEPTH_COMPONENT);
-    return depth && c.colorSinceEnd;
+    return depth && c.colorSinceFlush;
 }
 
 constexpr Departure kDepartures[] = {
@@ -232,7 +232,7 @@ constexpr Departure kDepartures[] = {
      "glCopyTexImage1D/2D with an internal format GL 1.1 does not take (1-4 too): OSMesa gives GL_INVALID_ENUM, GL 1.1 GL_INVALID_VALUE",
      copiesTextureWithBadInternalFormat},
     {"depth-image-unflushed-color",
-     "glCopyPixels(GL_DEPTH)/glDrawPixels(GL_DEPTH_COMPONENT) after a glColor outside glBegin/glEnd: OSMesa colours the fragments with ctx->Current before that glColor (not flushed: _mesa_CopyPixels only flushes vertices)",
+     "glCopyPixels(GL_DEPTH)/glDrawPixels(GL_DEPTH_COMPONENT) after a glColor outside glBegin/glEnd and no glFlush since: OSMesa colours the fragments with ctx->Current before that glColor (not flushed: _mesa_CopyPixels only flushes vertices)",
      drawsDepthWithUnflushedColor},
     {"undefined-level-format",
      "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial value), GL 1.1's is 1",
@@ -265,16 +265,16 @@ void StreamContext::update(const Call& call) {
         inBlock = atFirstVertex = {};
     } else if (name == "glEnd") {
         insideBegin = false;
-        colorSinceEnd = false;
     } else if (double height = 0; definesBorderedTexture(name, call.args, height)) {
         borderedTexture = true;
     } else if (name == "glFlush" || name == "glFinish") {
         alphaNotOneSinceFlush = false;
+        colorSinceFlush = false;
     } else if (name == "glLineWidth" || name == "glPointSize") {
         if (insideBegin || call.args[0] <= 0) return;  // an error: the state stays
         (name == "glLineWidth" ? lineWidthBeyondInt : pointSizeBeyondInt) = !(call.args[0] < kIntLimit);
     } else if (name.starts_with("glColor")) {
-        colorSinceEnd |= !insideBegin;
+        colorSinceFlush |= !insideBegin;
         colorBeyondUnit = anyBeyond(name, call.args, 1.0, true);
         if (components(name, "glColor") == 4 && !setsAlphaOne(name, call.args[3])) alphaNotOneSinceFlush = true;
         if (insideBegin) inBlock.colorSize = std::max(inBlock.colorSize, components(name, "glColor"));
