@@ -173,4 +173,24 @@ TEST(FuzzFindings, TextureBytesReadAsFloatsAreTimesOneOver255) {
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
+// A point, a glDrawPixels, then an empty glBegin/glEnd (the fuzzer's seed 160): the point's
+// flush forgot the image's texture, which the empty block's state then freed while its quad was
+// still queued (the pixel took freed memory's colour).
+TEST(FuzzFindings, ImageDrawnAfterAPointKeepsItsTextureUntilDrawn) {
+    const auto results = onBothBackends<std::vector<GLubyte>>([] {
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBegin(GL_POINTS);
+        glVertex2d(0.0, 0.0);
+        glEnd();
+        const GLubyte image[4] = {10, 200, 30, 255};
+        glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, image);
+        glBegin(GL_POINTS);
+        glEnd();
+        std::vector<GLubyte> pixel(4);
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel.data());
+        return pixel;
+    }, 1, 1);
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
 }  // namespace
