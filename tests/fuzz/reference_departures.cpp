@@ -144,6 +144,11 @@ bool movesStencilAsBitmap(const Call& call, const StreamContext&) {
     return format && static_cast<GLenum>(call.args[format]) == GL_STENCIL_INDEX && static_cast<GLenum>(call.args[format + 1]) == GL_BITMAP;
 }
 
+bool drawsIndexBitmapImage(const Call& call, const StreamContext&) {
+    return functionName(call) == "glDrawPixels" && static_cast<GLenum>(call.args[2]) == GL_COLOR_INDEX &&
+           static_cast<GLenum>(call.args[3]) == GL_BITMAP;
+}
+
 // glGetTexLevelParameterfv that fails: a target, level or name GL rejects.
 bool failsFloatLevelQuery(const Call& call, const StreamContext&) {
     if (functionName(call) != "glGetTexLevelParameterfv") return false;
@@ -222,6 +227,9 @@ constexpr Departure kDepartures[] = {
     {"stencil-as-bitmap",
      "glReadPixels/glDrawPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa never returns (glReadPixels loops printing 'Unsupported format/type'); the spec moves bits",
      movesStencilAsBitmap},
+    {"index-bitmap-image",
+     "glDrawPixels(GL_COLOR_INDEX, GL_BITMAP): OSMesa's pixels differ from run to run (it reads memory it never wrote; seed 209)",
+     drawsIndexBitmapImage},
     {"failed-level-query-writes",
      "glGetTexLevelParameterfv with a bad target, level or name: OSMesa records the error and still writes its uninitialized int (0) to params",
      failsFloatLevelQuery},
