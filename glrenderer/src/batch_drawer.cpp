@@ -50,12 +50,17 @@ void BatchDrawer::draw(const SubmittedBatch& submitted) {
 }
 
 void BatchDrawer::draw(BatchChunk& chunk) {
-    for (const BatchEntry& entry : chunk.batches) keepTexture(entry.state.texture);
     if (!chunk.setUp) {
         lightChunk(chunk);
-        for (const BatchEntry& entry : chunk.batches) draw(chunk.batch(entry));
+        for (const BatchEntry& entry : chunk.batches) {
+            draw(chunk.batch(entry));
+            // Kept after drawing: a later point or line batch's flush forgets the textures kept
+            // so far, and a texture kept before it would be freed with the chunk while queued.
+            keepTexture(entry.state.texture);
+        }
         return;
     }
+    for (const BatchEntry& entry : chunk.batches) keepTexture(entry.state.texture);
     tiles_.queue(chunk.setUpTriangles);
     stats_ = stats_ + chunk.setupStats;
     paintersSort_ = chunk.batches.back().methods.hiddenSurface == HiddenSurface::PaintersSort;

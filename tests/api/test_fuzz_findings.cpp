@@ -53,14 +53,14 @@ TEST(FuzzFindings, UserClipPlanesInvalidateTheRasterPosition) {
         glMatrixMode(GL_PROJECTION);
         glOrtho(-1, 1, -1, 1, -1, 1);  // the plane follows the projection too
         glMatrixMode(GL_MODELVIEW);
-        const GLubyte bits[8] = {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF};
+        const std::vector<GLubyte> bits(8 * 4, 0xFF);  // 8 rows of 4 bytes (GL_UNPACK_ALIGNMENT 4)
         std::vector<GLfloat> answers;
         for (GLfloat x : {-0.75f, -0.25f, 0.5f}) {
             glRasterPos2f(x, 0.0f);
             GLfloat valid = 0;
             glGetFloatv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
             answers.push_back(valid);
-            glBitmap(8, 8, 0, 0, 0, 0, bits);
+            glBitmap(8, 8, 0, 0, 0, 0, bits.data());
         }
         std::vector<GLubyte> pixels(16 * 16 * 4);
         glReadPixels(0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
@@ -170,6 +170,26 @@ TEST(FuzzFindings, TextureBytesReadAsFloatsAreTimesOneOver255) {
         }
         return floats;
     });
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
+// A point, a glDrawPixels, then an empty glBegin/glEnd (the fuzzer's seed 160): the point's
+// flush forgot the image's texture, which the empty block's state then freed while its quad was
+// still queued (the pixel took freed memory's colour).
+TEST(FuzzFindings, ImageDrawnAfterAPointKeepsItsTextureUntilDrawn) {
+    const auto results = onBothBackends<std::vector<GLubyte>>([] {
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBegin(GL_POINTS);
+        glVertex2d(0.0, 0.0);
+        glEnd();
+        const GLubyte image[4] = {10, 200, 30, 255};
+        glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, image);
+        glBegin(GL_POINTS);
+        glEnd();
+        std::vector<GLubyte> pixel(4);
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel.data());
+        return pixel;
+    }, 1, 1);
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 

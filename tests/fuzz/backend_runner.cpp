@@ -31,11 +31,14 @@ Answer readFrame(GLenum format, GLenum type, AnswerKind kind, const Stream& stre
 void executeStream(const Stream& stream, Answers& answers) {
     glClearColor(0, 0, 0, 0);
     glClearDepth(1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // Stencil and accumulation too: their contents are undefined until cleared (the reference's
+    // accumulation buffer holds whatever its memory held, which differs from run to run).
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
     for (std::size_t i = 0; i < stream.calls.size(); ++i) {
         runCall(stream.calls[i], static_cast<std::uint32_t>(i), stream.width, stream.height, answers);
     }
     glEnd();
+    glEndList();  // a list left open would compile the reads
     for (int i = 0; i < 8 && glGetError() != GL_NO_ERROR; ++i) {
     }
     glFinish();

@@ -144,6 +144,11 @@ bool movesStencilAsBitmap(const Call& call, const StreamContext&) {
     return format && static_cast<GLenum>(call.args[format]) == GL_STENCIL_INDEX && static_cast<GLenum>(call.args[format + 1]) == GL_BITMAP;
 }
 
+bool drawsIndexBitmapImage(const Call& call, const StreamContext&) {
+    return functionName(call) == "glDrawPixels" && static_cast<GLenum>(call.args[2]) == GL_COLOR_INDEX &&
+           static_cast<GLenum>(call.args[3]) == GL_BITMAP;
+}
+
 // glGetTexLevelParameterfv that fails: a target, level or name GL rejects.
 bool failsFloatLevelQuery(const Call& call, const StreamContext&) {
     if (functionName(call) != "glGetTexLevelParameterfv") return false;
@@ -173,6 +178,13 @@ bool copiesTextureWithBadInternalFormat(const Call& call, const StreamContext&) 
 
 bool queriesLevelFormat(const Call& call, const StreamContext&) {
     return functionName(call).starts_with("glGetTexLevelParameter") && static_cast<GLenum>(call.args[2]) == GL_TEXTURE_COMPONENTS;
+}
+
+bool drawsDepthWithUnflushedColor(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    const bool depth = (name == "glCopyPixels" && static_cast<GLenum>(call.args[4]) == GL_DEPTH) ||
+                       (name == "glDrawPixels" && static_cast<GLenum>(call.args[2]) == GL_DEPTH_COMPONENT);
+    return depth && c.colorSinceFlush;
 }
 
 constexpr Departure kDepartures[] = {
@@ -215,6 +227,9 @@ constexpr Departure kDepartures[] = {
     {"stencil-as-bitmap",
      "glReadPixels/glDrawPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa never returns (glReadPixels loops printing 'Unsupported format/type'); the spec moves bits",
      movesStencilAsBitmap},
+    {"index-bitmap-image",
+     "glDrawPixels(GL_COLOR_INDEX, GL_BITMAP): OSMesa's pixels differ from run to run (it reads memory it never wrote; seed 209)",
+     drawsIndexBitmapImage},
     {"failed-level-query-writes",
      "glGetTexLevelParameterfv with a bad target, level or name: OSMesa records the error and still writes its uninitialized int (0) to params",
      failsFloatLevelQuery},
@@ -224,6 +239,9 @@ constexpr Departure kDepartures[] = {
     {"copy-texture-bad-internal-format",
      "glCopyTexImage1D/2D with an internal format GL 1.1 does not take (1-4 too): OSMesa gives GL_INVALID_ENUM, GL 1.1 GL_INVALID_VALUE",
      copiesTextureWithBadInternalFormat},
+    {"depth-image-unflushed-color",
+     "glCopyPixels(GL_DEPTH)/glDrawPixels(GL_DEPTH_COMPONENT) after a glColor outside glBegin/glEnd and no glFlush since: OSMesa colours the fragments with ctx->Current before that glColor (not flushed: _mesa_CopyPixels only flushes vertices)",
+     drawsDepthWithUnflushedColor},
     {"undefined-level-format",
      "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial value), GL 1.1's is 1",
      queriesLevelFormat},
@@ -259,10 +277,12 @@ void StreamContext::update(const Call& call) {
         borderedTexture = true;
     } else if (name == "glFlush" || name == "glFinish") {
         alphaNotOneSinceFlush = false;
+        colorSinceFlush = false;
     } else if (name == "glLineWidth" || name == "glPointSize") {
         if (insideBegin || call.args[0] <= 0) return;  // an error: the state stays
         (name == "glLineWidth" ? lineWidthBeyondInt : pointSizeBeyondInt) = !(call.args[0] < kIntLimit);
     } else if (name.starts_with("glColor")) {
+        colorSinceFlush |= !insideBegin;
         colorBeyondUnit = anyBeyond(name, call.args, 1.0, true);
         if (components(name, "glColor") == 4 && !setsAlphaOne(name, call.args[3])) alphaNotOneSinceFlush = true;
         if (insideBegin) inBlock.colorSize = std::max(inBlock.colorSize, components(name, "glColor"));

@@ -31,6 +31,7 @@ struct StreamContext {
     bool texCoordBeyondInt = false, lineWidthBeyondInt = false, pointSizeBeyondInt = false;
     bool alphaNotOneSinceFlush = false;  // a glColor4* set an alpha other than 1 since the last glFlush/glFinish
     bool borderedTexture = false;        // a texture image with a border was given
+    bool colorSinceFlush = false;        // a glColor came outside glBegin/glEnd since the last glFlush/glFinish
 
     // Each glPushAttrib that pushed: its mask, the flags above as they were then (a pop may
     // bring back their values, so a pop ORs them back in), and whether a call that may change
