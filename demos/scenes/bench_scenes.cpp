@@ -436,8 +436,8 @@ void drawBenchParticles(int width, int height, int frame) {
         const float a = unit(random) * kTwoPi, r = unit(random) * 3.0f, h = std::fmod(unit(random) * 4.0f + t, 4.0f);
         x = r * std::cos(a), y = h - 2.0f + 0.5f * std::sin(r + t), z = r * std::sin(a);
     };
-    // Each quad as two triangles: a smooth GL_QUADS block this long is split into triangles by
-    // the reference in a way MyGL does not follow yet past its 1024th quad (see the report).
+    // Each quad as two triangles, as the scene was first measured (a GL_QUADS block this long
+    // is reproduced too, segment by segment: DrawModuleCulling.LongQuadDrawsChooseThePathPerSegment).
     glBegin(GL_TRIANGLES);
     for (int i = 0; i < 1600; ++i) {
         float x, y, z;
