@@ -12,11 +12,16 @@ int main(int argc, char** argv) {
     int tolerance = 1;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--tolerance" && i + 1 < argc) tolerance = std::atoi(argv[++i]);
-        else if (arg == "--diff" && i + 1 < argc) diff = argv[++i];
-        else if (ours.empty()) ours = arg;
-        else if (theirs.empty()) theirs = arg;
-        else ours.clear(), theirs.clear(), i = argc;
+        if (arg == "--tolerance" && i + 1 < argc)
+            tolerance = std::atoi(argv[++i]);
+        else if (arg == "--diff" && i + 1 < argc)
+            diff = argv[++i];
+        else if (ours.empty())
+            ours = arg;
+        else if (theirs.empty())
+            theirs = arg;
+        else
+            ours.clear(), theirs.clear(), i = argc;
     }
     if (ours.empty() || theirs.empty()) {
         std::fprintf(stderr, "usage: mygl-compare OURS.png REFERENCE.png [--diff DIFF.png] [--tolerance N]\n");

@@ -42,25 +42,32 @@ Options parse(int argc, char** argv) {
             if (i + 1 >= argc) usage("missing value after " + arg);
             return argv[++i];
         };
-        if (arg == "--scene") o.scene = value();
-        else if (arg == "--backend") o.backend = value();
-        else if (arg == "--out") o.out = value();
-        else if (arg == "--frame") o.frame = std::atoi(value().c_str());
-        else if (arg == "--list") o.list = true;
-        else if (arg == "--stats") o.stats = true;
-        else if (arg == "--stability") o.stability = true;
+        if (arg == "--scene")
+            o.scene = value();
+        else if (arg == "--backend")
+            o.backend = value();
+        else if (arg == "--out")
+            o.out = value();
+        else if (arg == "--frame")
+            o.frame = std::atoi(value().c_str());
+        else if (arg == "--list")
+            o.list = true;
+        else if (arg == "--stats")
+            o.stats = true;
+        else if (arg == "--stability")
+            o.stability = true;
         else if (arg == "--method") {
             const std::string name = value();
             const auto method = glrenderer::parseRasterMethod(name);
             if (!method) usage("unknown method '" + name + "' (exact, exact-per-pixel, scanline, bbox-float)");
             o.methods.raster = *method;
-        }
-        else if (arg == "--size") {
+        } else if (arg == "--size") {
             const std::string size = value();
             if (std::sscanf(size.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1 ||
                 o.width > mygl::Context::kMaxSize || o.height > mygl::Context::kMaxSize)
                 usage("bad --size '" + size + "' (expected WxH, e.g. 320x240)");
-        } else usage("unknown argument '" + arg + "'");
+        } else
+            usage("unknown argument '" + arg + "'");
     }
     if (o.backend != "both" && !scenes::parseBackend(o.backend)) usage("unknown backend '" + o.backend + "'");
     if (o.scene != "all" && !scenes::findScene(o.scene)) usage("unknown scene '" + o.scene + "' (see --list)");
@@ -74,12 +81,14 @@ void printStats(const std::vector<const scenes::Scene*>& selected, const Options
                 "back", "front", "zero", "rasterized", "fragments");
     for (const scenes::Scene* scene : selected) {
         for (bool culling : {false, true}) {
-            const mygl::Stats s =
-                scenes::render(scenes::Backend::MyGL, *scene, o.width, o.height, o.frame, {culling, std::nullopt, false, false}).stats;
+            const mygl::Stats s = scenes::render(scenes::Backend::MyGL, *scene, o.width, o.height, o.frame,
+                                                 {culling, std::nullopt, false, false})
+                                      .stats;
             std::printf("%-28s %-9s %5llu %8llu %8llu %7llu %7llu %5llu %10llu %10llu\n", scene->name.c_str(),
                         culling ? "cull=back" : "cull=off", static_cast<unsigned long long>(s.triangles),
-                        static_cast<unsigned long long>(s.clipCreated), static_cast<unsigned long long>(s.clippedAway), static_cast<unsigned long long>(s.culledBack),
-                        static_cast<unsigned long long>(s.culledFront), static_cast<unsigned long long>(s.culledZeroArea),
+                        static_cast<unsigned long long>(s.clipCreated), static_cast<unsigned long long>(s.clippedAway),
+                        static_cast<unsigned long long>(s.culledBack), static_cast<unsigned long long>(s.culledFront),
+                        static_cast<unsigned long long>(s.culledZeroArea),
                         static_cast<unsigned long long>(s.rasterized), static_cast<unsigned long long>(s.fragments));
         }
     }
@@ -97,8 +106,10 @@ void printStability() {
         std::printf("| %s |", check.name.c_str());
         for (const auto& m : methods) {
             const stability::Outcome o = stability::run(check, m);
-            if (o.holds) std::printf(" holds |");
-            else std::printf(" breaks (%lld px) |", o.pixelsOver1);
+            if (o.holds)
+                std::printf(" holds |");
+            else
+                std::printf(" breaks (%lld px) |", o.pixelsOver1);
         }
         std::printf("\n");
     }
@@ -133,11 +144,12 @@ int main(int argc, char** argv) {
     for (const scenes::Scene* scene : selected) {
         const std::string base = options.out + "/" + scene->name;
         if (both || options.backend == "mygl") {
-            const scenes::Frame ours =
-                scenes::render(scenes::Backend::MyGL, *scene, options.width, options.height, options.frame, {}, options.methods);
+            const scenes::Frame ours = scenes::render(scenes::Backend::MyGL, *scene, options.width, options.height,
+                                                      options.frame, {}, options.methods);
             reference::writePng(base + "-mygl.png", ours.image);
             if (both) {
-                const scenes::Frame theirs = scenes::render(scenes::Backend::OSMesa, *scene, options.width, options.height, options.frame);
+                const scenes::Frame theirs =
+                    scenes::render(scenes::Backend::OSMesa, *scene, options.width, options.height, options.frame);
                 reference::writePng(base + "-osmesa.png", theirs.image);
                 reference::writePng(base + "-diff.png", reference::diffImage(ours.image, theirs.image));
                 const reference::Comparison c = reference::compareImages(ours.image, theirs.image);
@@ -145,8 +157,9 @@ int main(int argc, char** argv) {
                             c.differingMoreThan1, c.maxChannelDifference);
             }
         } else {
-            reference::writePng(base + "-osmesa.png",
-                                scenes::render(scenes::Backend::OSMesa, *scene, options.width, options.height, options.frame).image);
+            reference::writePng(
+                base + "-osmesa.png",
+                scenes::render(scenes::Backend::OSMesa, *scene, options.width, options.height, options.frame).image);
         }
     }
     std::printf("images written to %s/\n", options.out.c_str());

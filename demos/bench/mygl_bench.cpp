@@ -26,9 +26,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-const char* const kScenes[] = {"bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears",
-                               "bench-gears-lists", "bench-mesh", "bench-lit-torus", "bench-fog-terrain",
-                               "bench-fog-textured-terrain", "bench-particles", "bench-textured-cubes", "bench-draw-pixels"};
+const char* const kScenes[] = {
+    "bench-torus",       "bench-fill",           "bench-cubes",      "bench-tiny",        "bench-gears",
+    "bench-gears-lists", "bench-mesh",           "bench-lit-torus",  "bench-fog-terrain", "bench-fog-textured-terrain",
+    "bench-particles",   "bench-textured-cubes", "bench-draw-pixels"};
 
 struct Variant {
     std::string name;
@@ -77,8 +78,10 @@ public:
     }
     // Draws one frame and returns the milliseconds until glFinish returned.
     double drawFrame(const scenes::Scene& scene, int width, int height) {
-        if (mygl_) mygl_->makeCurrent();
-        else osmesa_->makeCurrent();
+        if (mygl_)
+            mygl_->makeCurrent();
+        else
+            osmesa_->makeCurrent();
         const auto start = Clock::now();
         scene.draw(width, height, 0);
         glFinish();
@@ -106,13 +109,14 @@ int runWorker(const std::string& backend, const std::string& sceneName, int widt
     return 0;
 }
 
-Timing runInChild(const char* self, const Variant& v, const std::string& scene, int width, int height, int repetitions) {
+Timing runInChild(const char* self, const Variant& v, const std::string& scene, int width, int height,
+                  int repetitions) {
     // One file per process: benchmark runs may overlap (tests run in parallel).
     const std::string framePath =
         (std::filesystem::temp_directory_path() / ("mygl-bench-frame-" + std::to_string(getpid()) + ".png")).string();
     const std::string backend = v.isReference ? "osmesa" : "mygl";
-    const std::string command = "env " + v.environment + " '" + std::string(self) + "' --worker " + backend + " " + scene + " " +
-                                std::to_string(width) + " " + std::to_string(height) + " " +
+    const std::string command = "env " + v.environment + " '" + std::string(self) + "' --worker " + backend + " " +
+                                scene + " " + std::to_string(width) + " " + std::to_string(height) + " " +
                                 std::to_string(repetitions) + " '" + framePath + "'";
     Timing timing;
     FILE* pipe = popen(command.c_str(), "r");
@@ -152,13 +156,18 @@ int main(int argc, char** argv) {
     std::vector<std::string> onlyScenes, onlyVariants;  // empty: all
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--quick") quick = true;
-        else if (arg == "--out" && i + 1 < argc) out = argv[++i];
-        else if (arg == "--scene" && i + 1 < argc) onlyScenes.push_back(argv[++i]);
-        else if (arg == "--variant" && i + 1 < argc) onlyVariants.push_back(argv[++i]);
+        if (arg == "--quick")
+            quick = true;
+        else if (arg == "--out" && i + 1 < argc)
+            out = argv[++i];
+        else if (arg == "--scene" && i + 1 < argc)
+            onlyScenes.push_back(argv[++i]);
+        else if (arg == "--variant" && i + 1 < argc)
+            onlyVariants.push_back(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: mygl-bench [--quick] [--out DIR] [--scene NAME]... [--variant NAME]...\n"
-                                 "  (llvmpipe is always run: the ratios are to it)\n");
+            std::fprintf(stderr,
+                         "usage: mygl-bench [--quick] [--out DIR] [--scene NAME]... [--variant NAME]...\n"
+                         "  (llvmpipe is always run: the ratios are to it)\n");
             return 2;
         }
     }
@@ -199,8 +208,10 @@ int main(int argc, char** argv) {
                 }
             }
             for (std::size_t v = 0; v < all.size(); ++v) {
-                if (targets[v]) timings[v].frame = targets[v]->frame(width, height);
-                else if (!all[v].name.empty()) timings[v] = runInChild(argv[0], all[v], sceneName, width, height, repetitions);
+                if (targets[v])
+                    timings[v].frame = targets[v]->frame(width, height);
+                else if (!all[v].name.empty())
+                    timings[v] = runInChild(argv[0], all[v], sceneName, width, height, repetitions);
             }
             std::fprintf(stderr, "\r%60s\r", "");
             // llvmpipe has slow phases on a shared machine: its best frame is quoted too.
@@ -211,12 +222,15 @@ int main(int argc, char** argv) {
                 const auto [lo, hi] = std::minmax_element(timings[v].ms.begin(), timings[v].ms.end());
                 const reference::Comparison c = reference::compareImages(timings[v].frame, timings[llvmpipe].frame);
                 rows.push_back({sceneName, std::to_string(width) + "x" + std::to_string(height), all[v].name,
-                                all[v].isReference, timings[v].median(), *lo, *hi, timings[v].median() / referenceMedian,
-                                timings[v].median() / referenceBest, c.differing, c.differingMoreThan1});
+                                all[v].isReference, timings[v].median(), *lo, *hi,
+                                timings[v].median() / referenceMedian, timings[v].median() / referenceBest, c.differing,
+                                c.differingMoreThan1});
                 const Row& r = rows.back();
-                std::printf("%-12s %-9s %-26s %9.2f ms  (%.2f-%.2f)  x%.2f of llvmpipe (x%.2f of its best)  differing %lld (>1: %lld)\n",
-                            r.scene.c_str(), r.size.c_str(), r.variant.c_str(), r.median, r.min, r.max, r.ratio,
-                            r.ratioToBest, r.differing, r.differingMoreThan1);
+                std::printf(
+                    "%-12s %-9s %-26s %9.2f ms  (%.2f-%.2f)  x%.2f of llvmpipe (x%.2f of its best)  differing %lld "
+                    "(>1: %lld)\n",
+                    r.scene.c_str(), r.size.c_str(), r.variant.c_str(), r.median, r.min, r.max, r.ratio, r.ratioToBest,
+                    r.differing, r.differingMoreThan1);
             }
         }
     }
@@ -228,16 +242,19 @@ int main(int argc, char** argv) {
           "|---|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {
         csv << r.scene << ',' << r.size << ',' << r.variant << ',' << r.isReference << ',' << r.median << ',' << r.min
-            << ',' << r.max << ',' << r.ratio << ',' << r.ratioToBest << ',' << r.differing << ',' << r.differingMoreThan1 << '\n';
+            << ',' << r.max << ',' << r.ratio << ',' << r.ratioToBest << ',' << r.differing << ','
+            << r.differingMoreThan1 << '\n';
         char line[256];
         std::snprintf(line, sizeof line, "| %s | %s | %s | %.2f | %.2f-%.2f | %.2f | %.2f | %lld | %lld |\n",
-                      r.scene.c_str(), r.size.c_str(), r.variant.c_str(), r.median, r.min, r.max, r.ratio, r.ratioToBest,
-                      r.differing, r.differingMoreThan1);
+                      r.scene.c_str(), r.size.c_str(), r.variant.c_str(), r.median, r.min, r.max, r.ratio,
+                      r.ratioToBest, r.differing, r.differingMoreThan1);
         md << line;
     }
     csv.close();
-    const std::string plot = std::string(MYGL_PYTHON) + " '" + MYGL_PLOT_SCRIPT + "' '" + out + "/bench.csv' '" + out + "/bench.png'";
+    const std::string plot =
+        std::string(MYGL_PYTHON) + " '" + MYGL_PLOT_SCRIPT + "' '" + out + "/bench.csv' '" + out + "/bench.png'";
     const bool charted = std::system(plot.c_str()) == 0;
-    std::printf("wrote %s/bench.csv, %s/bench.md%s\n", out.c_str(), out.c_str(), charted ? " and bench.png" : " (no chart: matplotlib missing?)");
+    std::printf("wrote %s/bench.csv, %s/bench.md%s\n", out.c_str(), out.c_str(),
+                charted ? " and bench.png" : " (no chart: matplotlib missing?)");
     return 0;
 }

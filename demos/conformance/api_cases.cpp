@@ -46,8 +46,10 @@ void runRow(const ApiFunction& f, Observations& o) {
         if (i == 0 ? !f.validCompiled : !f.errors[i - 1].compiled) continue;
         const ApiCall& call = i == 0 ? f.valid : f.errors[i - 1].call;
         glNewList(kList, GL_COMPILE);
-        if (i > 0) asErrorCall(call, o);
-        else call(o);
+        if (i > 0)
+            asErrorCall(call, o);
+        else
+            call(o);
         glEndList();
         o.error("compiled");
         glCallList(kList);

@@ -33,7 +33,7 @@ struct ApiFunction {
     std::string group;  // the case's category is "api-" + group
     ApiCall valid;      // calls with valid arguments (also inside glBegin/glEnd and compiled into a list)
     std::vector<ErrorCall> errors = {};  // each a call the spec makes an error
-    ApiCall effect = {};               // queries showing the state the calls leave
+    ApiCall effect = {};                 // queries showing the state the calls leave
     bool allowedInsideBeginEnd = false;  // else a case calls `valid` inside glBegin/glEnd too
     ApiCall cleanup = {};                // puts back what resetState does not
     bool validCompiled = true;           // else `valid` stays out of the display-list pass (as notCompiled)
@@ -51,9 +51,10 @@ ApiCall get(std::vector<unsigned> pnames);
 // True while a case runs one of a row's error calls (the coverage test counts calls then).
 bool inErrorCall();
 
-std::vector<ApiFunction> vertexApiTable();     // glVertex, glColor, glNormal, glTexCoord, glIndex, glRasterPos, glRect, glEdgeFlag, glEval*
-std::vector<ApiFunction> stateApiTable();      // enables, modes, matrices, lighting, fog, per-fragment state
-std::vector<ApiFunction> textureApiTable();    // texture objects, images, parameters, environment, coordinate generation
-std::vector<ApiFunction> objectApiTable();     // glBegin/glEnd, lists, arrays, pixels, selection, feedback, evaluators
+std::vector<ApiFunction>
+vertexApiTable();  // glVertex, glColor, glNormal, glTexCoord, glIndex, glRasterPos, glRect, glEdgeFlag, glEval*
+std::vector<ApiFunction> stateApiTable();    // enables, modes, matrices, lighting, fog, per-fragment state
+std::vector<ApiFunction> textureApiTable();  // texture objects, images, parameters, environment, coordinate generation
+std::vector<ApiFunction> objectApiTable();   // glBegin/glEnd, lists, arrays, pixels, selection, feedback, evaluators
 
 }  // namespace conformance

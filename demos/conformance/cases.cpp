@@ -26,8 +26,8 @@ struct ModeCase {
 };
 
 const char* modeName(GLenum mode) {
-    static const char* names[] = {"points", "lines", "lineloop", "linestrip", "triangles",
-                                  "tristrip", "trifan", "quads", "quadstrip", "polygon"};
+    static const char* names[] = {"points",   "lines",  "lineloop", "linestrip", "triangles",
+                                  "tristrip", "trifan", "quads",    "quadstrip", "polygon"};
     return names[mode];
 }
 
@@ -91,7 +91,8 @@ void drawModeCase(const ModeCase& c, int width, int height) {
 void addModeCases(std::vector<Case>& out) {
     const std::array<std::pair<Placement, const char*>, 3> placements{
         {{Placement::Inside, "inside"}, {Placement::CrossingViewport, "viewport"}, {Placement::CrossingNear, "near"}}};
-    const std::array<std::pair<GLenum, const char*>, 3> polygonModes{{{GL_FILL, "fill"}, {GL_LINE, "line"}, {GL_POINT, "point"}}};
+    const std::array<std::pair<GLenum, const char*>, 3> polygonModes{
+        {{GL_FILL, "fill"}, {GL_LINE, "line"}, {GL_POINT, "point"}}};
     const std::array<std::pair<int, const char*>, 4> culls{
         {{0, "nocull"}, {GL_BACK, "cullback"}, {GL_FRONT, "cullfront"}, {GL_FRONT_AND_BACK, "cullboth"}}};
     for (GLenum mode = GL_POINTS; mode <= GL_POLYGON; ++mode)
@@ -105,9 +106,10 @@ void addModeCases(std::vector<Case>& out) {
                                 // Culling, winding and polygon mode only matter to triangles.
                                 if (!triangles && (cull != 0 || !ccw || polygonMode != GL_FILL)) continue;
                                 const ModeCase c{mode, flat, cull, ccw, depth, polygonMode, placement};
-                                std::string name = std::string(modeName(mode)) + "_" + (flat ? "flat" : "smooth") + "_" +
-                                                   cullName + "_" + (ccw ? "ccw" : "cw") + "_" + (depth ? "depth" : "nodepth") +
-                                                   "_" + polygonName + "_" + placementName;
+                                std::string name = std::string(modeName(mode)) + "_" + (flat ? "flat" : "smooth") +
+                                                   "_" + cullName + "_" + (ccw ? "ccw" : "cw") + "_" +
+                                                   (depth ? "depth" : "nodepth") + "_" + polygonName + "_" +
+                                                   placementName;
                                 out.push_back({"modes", name, flat, [c](int w, int h) { drawModeCase(c, w, h); }});
                             }
 }
@@ -115,11 +117,15 @@ void addModeCases(std::vector<Case>& out) {
 // One triangle per case from a fixed seed, in window pixels (sub-pixel positions), smooth.
 void addRandomTriangles(std::vector<Case>& out) {
     std::mt19937 random(2024);
-    std::uniform_real_distribution<float> x(-8.0f, kWidth + 8.0f), y(-8.0f, kHeight + 8.0f), c(0.0f, 1.0f), z(-0.9f, 0.9f);
+    std::uniform_real_distribution<float> x(-8.0f, kWidth + 8.0f), y(-8.0f, kHeight + 8.0f), c(0.0f, 1.0f),
+        z(-0.9f, 0.9f);
     for (int i = 0; i < 400; ++i) {
         std::array<float, 15> v;
-        for (int k = 0; k < 3; ++k) v[static_cast<std::size_t>(k * 5)] = x(random), v[static_cast<std::size_t>(k * 5 + 1)] = y(random),
-            v[static_cast<std::size_t>(k * 5 + 2)] = c(random), v[static_cast<std::size_t>(k * 5 + 3)] = c(random), v[static_cast<std::size_t>(k * 5 + 4)] = z(random);
+        for (int k = 0; k < 3; ++k)
+            v[static_cast<std::size_t>(k * 5)] = x(random), v[static_cast<std::size_t>(k * 5 + 1)] = y(random),
+                                           v[static_cast<std::size_t>(k * 5 + 2)] = c(random),
+                                           v[static_cast<std::size_t>(k * 5 + 3)] = c(random),
+                                           v[static_cast<std::size_t>(k * 5 + 4)] = z(random);
         const bool flat = i % 4 == 0;
         out.push_back({"random", "random_" + std::to_string(i), flat, [v, flat](int w, int h) {
                            resetState(w, h);
@@ -185,7 +191,8 @@ void addSpecialTriangles(std::vector<Case>& out) {
                            for (int k = 0; k < 3; ++k) {
                                color(k + i);
                                const float angle = a + static_cast<float>(k) * 2.0944f;
-                               glVertex3f(scale * std::cos(angle), scale * std::sin(angle), 0.2f * static_cast<float>(k) - 0.2f);
+                               glVertex3f(scale * std::cos(angle), scale * std::sin(angle),
+                                          0.2f * static_cast<float>(k) - 0.2f);
                            }
                            glEnd();
                        }});
@@ -206,8 +213,10 @@ void addSharedEdgeMeshes(std::vector<Case>& out) {
                            float px[kGrid + 1][kGrid + 1], py[kGrid + 1][kGrid + 1];
                            for (int j = 0; j <= kGrid; ++j)
                                for (int i = 0; i <= kGrid; ++i) {
-                                   px[j][i] = 2.0f + static_cast<float>(i) * (static_cast<float>(w) - 4.0f) / kGrid + jitter(random);
-                                   py[j][i] = 2.0f + static_cast<float>(j) * (static_cast<float>(h) - 4.0f) / kGrid + jitter(random);
+                                   px[j][i] = 2.0f + static_cast<float>(i) * (static_cast<float>(w) - 4.0f) / kGrid +
+                                              jitter(random);
+                                   py[j][i] = 2.0f + static_cast<float>(j) * (static_cast<float>(h) - 4.0f) / kGrid +
+                                              jitter(random);
                                }
                            glBegin(GL_TRIANGLES);
                            for (int j = 0; j < kGrid; ++j)
@@ -232,7 +241,8 @@ void addSharedEdgeMeshes(std::vector<Case>& out) {
 void addMergedBlocks(std::vector<Case>& out) {
     for (GLenum mode : {GL_QUADS, GL_TRIANGLES, GL_POLYGON, GL_QUAD_STRIP})
         for (bool secondCrosses : {false, true}) {
-            const std::string name = std::string("merged_") + modeName(mode) + (secondCrosses ? "_crossing" : "_inside");
+            const std::string name =
+                std::string("merged_") + modeName(mode) + (secondCrosses ? "_crossing" : "_inside");
             out.push_back({"merged-blocks", name, false, [mode, secondCrosses](int w, int h) {
                                resetState(w, h);
                                const float shift = secondCrosses ? 1.5f : 0.3f;
@@ -245,7 +255,9 @@ void addMergedBlocks(std::vector<Case>& out) {
                                    for (int i = 0; i < 8; ++i) {
                                        color(i + 3 * block);
                                        const float x = (ring ? ringX[i] : 0.2f * static_cast<float>(i / 2)) - 0.8f;
-                                       const float y = ring ? ringY[i] : (i % 2 ? 0.5f : -0.55f) + 0.13f * static_cast<float>(i % 3);
+                                       const float y =
+                                           ring ? ringY[i]
+                                                : (i % 2 ? 0.5f : -0.55f) + 0.13f * static_cast<float>(i % 3);
                                        glVertex2f(x + (block ? shift : 0.0f), y);
                                    }
                                    glEnd();
@@ -262,8 +274,8 @@ void addMergeBreakers(std::vector<Case>& out) {
     struct Between {
         const char* name;
         GLenum mode;
-        int vertices;       // of the middle block; a whole quad first if 4 or more
-        bool middleCrosses; // the middle block's quad crosses the edge (else the last block's does)
+        int vertices;        // of the middle block; a whole quad first if 4 or more
+        bool middleCrosses;  // the middle block's quad crosses the edge (else the last block's does)
     };
     static const Between kBetween[] = {{"empty_quads", GL_QUADS, 2, false},
                                        {"empty_triangles", GL_TRIANGLES, 2, false},
@@ -278,20 +290,21 @@ void addMergeBreakers(std::vector<Case>& out) {
         }
     };
     for (const Between& between : kBetween) {
-        out.push_back({"merged-blocks", std::string("merge_break_") + between.name, false, [between, quad](int w, int h) {
-                           resetState(w, h);
-                           glBegin(GL_QUADS);
-                           quad(0, -0.95f, -0.9f, -0.4f, 0.7f);
-                           glEnd();
-                           glBegin(between.mode);
-                           if (between.vertices >= 4) quad(4, -0.3f, -0.6f, 0.3f, between.middleCrosses ? 1.4f : 0.6f);
-                           for (int i = between.vertices >= 4 ? 4 : 0; i < between.vertices; ++i)
-                               glVertex2f(0.05f * static_cast<float>(i), 0.0f);
-                           glEnd();
-                           glBegin(GL_QUADS);
-                           quad(8, 0.4f, -0.5f, between.middleCrosses ? 0.95f : 1.3f, 0.5f);
-                           glEnd();
-                       }});
+        out.push_back(
+            {"merged-blocks", std::string("merge_break_") + between.name, false, [between, quad](int w, int h) {
+                 resetState(w, h);
+                 glBegin(GL_QUADS);
+                 quad(0, -0.95f, -0.9f, -0.4f, 0.7f);
+                 glEnd();
+                 glBegin(between.mode);
+                 if (between.vertices >= 4) quad(4, -0.3f, -0.6f, 0.3f, between.middleCrosses ? 1.4f : 0.6f);
+                 for (int i = between.vertices >= 4 ? 4 : 0; i < between.vertices; ++i)
+                     glVertex2f(0.05f * static_cast<float>(i), 0.0f);
+                 glEnd();
+                 glBegin(GL_QUADS);
+                 quad(8, 0.4f, -0.5f, between.middleCrosses ? 0.95f : 1.3f, 0.5f);
+                 glEnd();
+             }});
     }
 }
 
@@ -395,10 +408,19 @@ void addFragmentOpsCases(std::vector<Case>& out) {
                            glPopAttrib();
                        }});
     };
-    static const GLenum kFuncs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
-    static const GLenum kFactors[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
-                                      GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA,
-                                      GL_ONE_MINUS_DST_ALPHA, GL_SRC_ALPHA_SATURATE};
+    static const GLenum kFuncs[] = {GL_NEVER,   GL_LESS,     GL_EQUAL,  GL_LEQUAL,
+                                    GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+    static const GLenum kFactors[] = {GL_ZERO,
+                                      GL_ONE,
+                                      GL_SRC_COLOR,
+                                      GL_ONE_MINUS_SRC_COLOR,
+                                      GL_DST_COLOR,
+                                      GL_ONE_MINUS_DST_COLOR,
+                                      GL_SRC_ALPHA,
+                                      GL_ONE_MINUS_SRC_ALPHA,
+                                      GL_DST_ALPHA,
+                                      GL_ONE_MINUS_DST_ALPHA,
+                                      GL_SRC_ALPHA_SATURATE};
     for (GLenum func : kFuncs) {
         add("alpha_" + std::to_string(func), [func] { glEnable(GL_ALPHA_TEST), glAlphaFunc(func, 0.45f); });
         add("stencil_" + std::to_string(func), [func] {
@@ -406,7 +428,8 @@ void addFragmentOpsCases(std::vector<Case>& out) {
         });
     }
     for (GLenum factor : kFactors) {
-        add("blend_src_" + std::to_string(factor), [factor] { glEnable(GL_BLEND), glBlendFunc(factor, GL_ONE_MINUS_SRC_ALPHA); });
+        add("blend_src_" + std::to_string(factor),
+            [factor] { glEnable(GL_BLEND), glBlendFunc(factor, GL_ONE_MINUS_SRC_ALPHA); });
         add("blend_dst_" + std::to_string(factor), [factor] { glEnable(GL_BLEND), glBlendFunc(GL_SRC_ALPHA, factor); });
     }
     for (GLenum op = GL_CLEAR; op <= GL_SET; ++op) {
@@ -445,8 +468,8 @@ void addTextureCases(std::vector<Case>& out) {
         const char* name;
         GLenum env;
     };
-    static const Env kEnvs[] = {{"modulate", GL_MODULATE}, {"replace", GL_REPLACE}, {"decal", GL_DECAL},
-                                {"blend", GL_BLEND}, {"add", GL_ADD}};
+    static const Env kEnvs[] = {
+        {"modulate", GL_MODULATE}, {"replace", GL_REPLACE}, {"decal", GL_DECAL}, {"blend", GL_BLEND}, {"add", GL_ADD}};
     auto draw = [](GLenum min, GLenum mag, GLenum wrap, GLenum env, bool constantColor, bool clipped) {
         glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -456,8 +479,8 @@ void addTextureCases(std::vector<Case>& out) {
             for (int y = 0; y < side; ++y) {
                 for (int x = 0; x < side; ++x) {
                     const bool check = (x + y) % 2 == 0;
-                    texels.insert(texels.end(), {GLubyte(check ? 230 : 30 * x), GLubyte(255 * y / 8), GLubyte(40 * level),
-                                                 GLubyte(check ? 255 : 90 + 20 * y)});
+                    texels.insert(texels.end(), {GLubyte(check ? 230 : 30 * x), GLubyte(255 * y / 8),
+                                                 GLubyte(40 * level), GLubyte(check ? 255 : 90 + 20 * y)});
                 }
             }
             glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA, side, side, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
@@ -479,8 +502,10 @@ void addTextureCases(std::vector<Case>& out) {
         glBegin(GL_QUADS);
         // Inside the view volume, or crossing it (clipped by the near edges).
         const float x = clipped ? 2.0f : 1.0f, y = clipped ? -1.0f : -0.8f;
-        const float corners[4][5] = {{-x, y, -1.5f, -0.4f, -0.3f}, {x, y, -1.5f, 1.6f, -0.3f},
-                                     {x, y, -30.0f, 1.6f, 6.0f}, {-x, y, -30.0f, -0.4f, 6.0f}};
+        const float corners[4][5] = {{-x, y, -1.5f, -0.4f, -0.3f},
+                                     {x, y, -1.5f, 1.6f, -0.3f},
+                                     {x, y, -30.0f, 1.6f, 6.0f},
+                                     {-x, y, -30.0f, -0.4f, 6.0f}};
         for (int i = 0; i < 4; ++i) {
             if (!constantColor) glColor3f(0.5f + 0.15f * float(i), 1.0f - 0.2f * float(i), 0.6f);
             glTexCoord2f(corners[i][3], corners[i][4]);
@@ -504,7 +529,8 @@ void addTextureCases(std::vector<Case>& out) {
         for (const Wrap& w : kWraps) {
             for (const Env& e : kEnvs) {
                 const std::string name = std::string("texture_") + f.name + "_" + w.name + "_" + e.name;
-                out.push_back({"textures", name, false, [=](int, int) { draw(f.min, f.mag, w.wrap, e.env, false, false); }});
+                out.push_back(
+                    {"textures", name, false, [=](int, int) { draw(f.min, f.mag, w.wrap, e.env, false, false); }});
             }
         }
     }
@@ -532,20 +558,21 @@ void addPixelRectangleCases(std::vector<Case>& out) {
         GLenum copy;  // glCopyPixels' type, or 0 to draw
         bool fog;
     };
-    static const Zoom kZooms[] = {{"drawpixels_zoom_1", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, 0, false},
-                                  {"drawpixels_zoom_half", 0.5f, 0.5f, GL_RGBA, GL_UNSIGNED_BYTE, 0, false},
-                                  {"drawpixels_zoom_mirrored", -1.5f, 2.25f, GL_RGBA, GL_UNSIGNED_SHORT, 0, false},
-                                  {"drawpixels_rgba_float_fog", 1.25f, 1.0f, GL_RGBA, GL_FLOAT, 0, true},
-                                  {"copypixels_overlapping", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR, false},
-                                  {"copypixels_zoomed", 0.75f, -1.5f, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR, false},
-                                  {"drawpixels_float_fog_no_depth_test", 1.25f, 1.0f, GL_RGB, GL_FLOAT, 0, true},
-                                  {"drawpixels_depth_float", 1.0f, 1.0f, GL_DEPTH_COMPONENT, GL_FLOAT, 0, false},
-                                  {"drawpixels_depth_ushort_zoomed", 1.5f, -2.0f, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, 0, true},
-                                  {"drawpixels_stencil_index", 1.0f, 1.0f, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, 0, false},
-                                  {"drawpixels_color_index_zoomed", 2.0f, 1.5f, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, 0, false},
-                                  {"copypixels_depth_overlapping", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_DEPTH, false},
-                                  {"copypixels_depth_zoomed", 2.0f, 1.5f, GL_RGBA, GL_UNSIGNED_BYTE, GL_DEPTH, false},
-                                  {"copypixels_stencil_zoomed", -1.0f, 2.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_STENCIL, false}};
+    static const Zoom kZooms[] = {
+        {"drawpixels_zoom_1", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, 0, false},
+        {"drawpixels_zoom_half", 0.5f, 0.5f, GL_RGBA, GL_UNSIGNED_BYTE, 0, false},
+        {"drawpixels_zoom_mirrored", -1.5f, 2.25f, GL_RGBA, GL_UNSIGNED_SHORT, 0, false},
+        {"drawpixels_rgba_float_fog", 1.25f, 1.0f, GL_RGBA, GL_FLOAT, 0, true},
+        {"copypixels_overlapping", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR, false},
+        {"copypixels_zoomed", 0.75f, -1.5f, GL_RGBA, GL_UNSIGNED_BYTE, GL_COLOR, false},
+        {"drawpixels_float_fog_no_depth_test", 1.25f, 1.0f, GL_RGB, GL_FLOAT, 0, true},
+        {"drawpixels_depth_float", 1.0f, 1.0f, GL_DEPTH_COMPONENT, GL_FLOAT, 0, false},
+        {"drawpixels_depth_ushort_zoomed", 1.5f, -2.0f, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, 0, true},
+        {"drawpixels_stencil_index", 1.0f, 1.0f, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, 0, false},
+        {"drawpixels_color_index_zoomed", 2.0f, 1.5f, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, 0, false},
+        {"copypixels_depth_overlapping", 1.0f, 1.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_DEPTH, false},
+        {"copypixels_depth_zoomed", 2.0f, 1.5f, GL_RGBA, GL_UNSIGNED_BYTE, GL_DEPTH, false},
+        {"copypixels_stencil_zoomed", -1.0f, 2.0f, GL_RGBA, GL_UNSIGNED_BYTE, GL_STENCIL, false}};
     for (const Zoom& z : kZooms) {
         out.push_back({"pixel-rectangles", z.name, false, [z](int w, int h) {
                            resetState(w, h);
@@ -582,19 +609,21 @@ void addPixelRectangleCases(std::vector<Case>& out) {
                            // Index images through maps of a few entries (reset after: maps are no attribute).
                            const GLfloat ramp[4] = {0.1f, 0.9f, 0.4f, 0.7f}, none = 0.0f;
                            if (z.format == GL_COLOR_INDEX) {
-                               for (GLenum map = GL_PIXEL_MAP_I_TO_R; map <= GL_PIXEL_MAP_I_TO_A; ++map) glPixelMapfv(map, 4, ramp);
+                               for (GLenum map = GL_PIXEL_MAP_I_TO_R; map <= GL_PIXEL_MAP_I_TO_A; ++map)
+                                   glPixelMapfv(map, 4, ramp);
                            }
                            if (z.copy) {
                                glCopyPixels(4, 3, 30, 24, z.copy);
                            } else {
-                               const void* data = z.type == GL_FLOAT ? static_cast<const void*>(pixels)
+                               const void* data = z.type == GL_FLOAT            ? static_cast<const void*>(pixels)
                                                   : z.type == GL_UNSIGNED_SHORT ? static_cast<const void*>(shorts)
                                                                                 : static_cast<const void*>(bytes);
                                glDrawPixels(kImage, kImage, z.format, z.type, data);
                            }
                            glPixelZoom(1.0f, 1.0f);
                            glDisable(GL_FOG);
-                           for (GLenum map = GL_PIXEL_MAP_I_TO_R; map <= GL_PIXEL_MAP_I_TO_A; ++map) glPixelMapfv(map, 1, &none);
+                           for (GLenum map = GL_PIXEL_MAP_I_TO_R; map <= GL_PIXEL_MAP_I_TO_A; ++map)
+                               glPixelMapfv(map, 1, &none);
                        }});
     }
 }

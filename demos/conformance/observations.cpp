@@ -64,7 +64,8 @@ void Observations::uints(const std::string& what, const GLuint* values, std::siz
 }
 
 void Observations::bytes(const std::string& what, const GLubyte* values, std::size_t count) {
-    lines_.push_back(line(what, values, count, GLubyte{0xA5}, [](char* b, std::size_t n, GLubyte v) { std::snprintf(b, n, "%u", v); }));
+    lines_.push_back(line(what, values, count, GLubyte{0xA5},
+                          [](char* b, std::size_t n, GLubyte v) { std::snprintf(b, n, "%u", v); }));
 }
 
 void Observations::value(const std::string& what, long long v) { lines_.push_back(what + ": " + std::to_string(v)); }

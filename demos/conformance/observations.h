@@ -27,7 +27,8 @@ public:
     void value(const std::string& what, long long v);
 
     // A query's float and integer forms (`name` + "fv", "iv"), each into 4 unwritten values.
-    void floatsAndInts(const std::string& name, const std::function<void(GLfloat*)>& fv, const std::function<void(GLint*)>& iv);
+    void floatsAndInts(const std::string& name, const std::function<void(GLfloat*)>& fv,
+                       const std::function<void(GLint*)>& iv);
 
     // glGetFloatv of each pname into a fresh array.
     void get(std::initializer_list<GLenum> pnames);

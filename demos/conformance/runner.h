@@ -18,7 +18,8 @@ struct Result {
     // The case's observations (Case::observe): how many lines differ, and the first that does.
     std::size_t observations = 0, observationsDiffering = 0;
     std::string firstObservationDifference;
-    bool passed = false;  // pixels: flat identical but for depth ties, smooth within 1 but for ties; and every observation equal
+    bool passed =
+        false;  // pixels: flat identical but for depth ties, smooth within 1 but for ties; and every observation equal
     reference::Image ours, theirs;
 };
 

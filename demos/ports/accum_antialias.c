@@ -9,16 +9,15 @@
 #define ACSIZE 8
 
 /* The red book's jitter table for eight samples (jitter.h), in pixels. */
-static const GLfloat jitter8[ACSIZE][2] = {
-    {-0.334818f, 0.435331f}, {0.286438f, -0.393495f}, {0.459462f, 0.141540f}, {-0.414498f, -0.192829f},
-    {-0.183790f, 0.082102f}, {-0.079263f, -0.317383f}, {0.102254f, 0.299133f}, {0.164216f, -0.054399f}};
+static const GLfloat jitter8[ACSIZE][2] = {{-0.334818f, 0.435331f},  {0.286438f, -0.393495f}, {0.459462f, 0.141540f},
+                                           {-0.414498f, -0.192829f}, {-0.183790f, 0.082102f}, {-0.079263f, -0.317383f},
+                                           {0.102254f, 0.299133f},   {0.164216f, -0.054399f}};
 
 static float angle = 0.0f;
 
 /* A perspective frustum moved by (pixdx, pixdy) pixels: accFrustum/accPerspective of the book. */
 static void accPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar, GLdouble pixdx,
-                           GLdouble pixdy)
-{
+                           GLdouble pixdy) {
     GLint viewport[4];
     GLdouble fov2 = ((fovy * 3.14159265358979323846) / 180.0) / 2.0;
     GLdouble top = zNear / (cos(fov2) / sin(fov2));
@@ -37,8 +36,7 @@ static void accPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdou
     glLoadIdentity();
 }
 
-static void material(GLfloat r, GLfloat g, GLfloat b)
-{
+static void material(GLfloat r, GLfloat g, GLfloat b) {
     GLfloat diffuse[4];
     diffuse[0] = r;
     diffuse[1] = g;
@@ -47,8 +45,7 @@ static void material(GLfloat r, GLfloat g, GLfloat b)
     glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, diffuse);
 }
 
-static void displayObjects(void)
-{
+static void displayObjects(void) {
     glPushMatrix();
     glTranslatef(0.0f, 0.0f, -5.0f);
     glRotatef(30.0f + angle, 1.0f, 0.0f, 0.0f);
@@ -84,8 +81,7 @@ static void displayObjects(void)
     glPopMatrix();
 }
 
-static void display(void)
-{
+static void display(void) {
     GLint viewport[4];
     int jitter;
     glGetIntegerv(GL_VIEWPORT, viewport);
@@ -101,19 +97,14 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
-    glViewport(0, 0, w, h);
-}
+static void reshape(int w, int h) { glViewport(0, 0, w, h); }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 7.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     static const GLfloat ambient[] = {0.0f, 0.0f, 0.0f, 1.0f};
     static const GLfloat diffuse[] = {1.0f, 1.0f, 1.0f, 1.0f};
     static const GLfloat specular[] = {1.0f, 1.0f, 1.0f, 1.0f};

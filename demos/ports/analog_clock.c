@@ -5,8 +5,7 @@
 #include <stdio.h>
 #include <mygl/glut.h>
 
-static void hand(float turns, float length, float width)
-{
+static void hand(float turns, float length, float width) {
     float a = 3.14159265f / 2.0f - 2.0f * 3.14159265f * turns;
     glLineWidth(width);
     glBegin(GL_LINES);
@@ -15,8 +14,7 @@ static void hand(float turns, float length, float width)
     glEnd();
 }
 
-static void display(void)
-{
+static void display(void) {
     int i;
     long ms = (long)glutGet(GLUT_ELAPSED_TIME) * 1000L + 10L * 3600L * 1000L + 8L * 60L * 1000L;
     float seconds = (float)(ms % 60000) / 1000.0f;
@@ -28,8 +26,7 @@ static void display(void)
     glColor3f(1.0f, 1.0f, 1.0f);
     glPointSize(3.0f);
     glBegin(GL_POINTS);
-    for (i = 0; i < 12; i++)
-        glVertex2f(0.85f * cosf(0.5236f * (float)i), 0.85f * sinf(0.5236f * (float)i));
+    for (i = 0; i < 12; i++) glVertex2f(0.85f * cosf(0.5236f * (float)i), 0.85f * sinf(0.5236f * (float)i));
     glEnd();
     glColor3f(0.8f, 0.8f, 1.0f);
     hand(hours / 12.0f, 0.45f, 5.0f);
@@ -47,8 +44,7 @@ static void display(void)
 
 static void idle(void) { glutPostRedisplay(); }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(260, 260);

@@ -12,8 +12,7 @@ static GLfloat ctrlpoints[4][4][3] = {
 static GLfloat curve[4][3] = {{-4.0f, -3.0f, 0.0f}, {-2.0f, 3.0f, 0.0f}, {2.0f, -3.0f, 0.0f}, {4.0f, 3.0f, 0.0f}};
 static float angle = 85.0f;
 
-static void display(void)
-{
+static void display(void) {
     int i, j;
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
@@ -42,8 +41,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void init(void)
-{
+static void init(void) {
     static const GLfloat ambient[] = {0.2f, 0.2f, 0.2f, 1.0f}, position[] = {0.0f, 0.0f, 2.0f, 1.0f};
     static const GLfloat diffuse[] = {0.6f, 0.6f, 0.6f, 1.0f}, specular[] = {1.0f, 1.0f, 1.0f, 1.0f};
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
@@ -62,8 +60,7 @@ static void init(void)
     glMaterialf(GL_FRONT, GL_SHININESS, 50.0f);
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -72,14 +69,12 @@ static void reshape(int w, int h)
     glLoadIdentity();
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 11.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(320, 320);

@@ -9,15 +9,12 @@ static int width = 400, height = 300;
 static float angle = 0.0f;
 static int frame = 0;
 
-static void drawString(void* font, float x, float y, const char* text)
-{
+static void drawString(void* font, float x, float y, const char* text) {
     glRasterPos2f(x, y);
-    while (*text)
-        glutBitmapCharacter(font, *text++);
+    while (*text) glutBitmapCharacter(font, *text++);
 }
 
-static void display(void)
-{
+static void display(void) {
     char line[64];
     const unsigned char* title = (const unsigned char*)"Centred with glutBitmapLength";
     int length;
@@ -67,22 +64,19 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     width = w;
     height = h;
     glViewport(0, 0, w, h);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 2.0f;
     frame++;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(width, height);

@@ -21,22 +21,19 @@ struct Pane {
     float depth; /* eye-space z of its centre */
 };
 
-static int fartherFirst(const void* a, const void* b)
-{
+static int fartherFirst(const void* a, const void* b) {
     const struct Pane* p = a;
     const struct Pane* q = b;
     return p->depth < q->depth ? -1 : p->depth > q->depth ? 1 : 0;
 }
 
-static void paneCentre(int i, float* x, float* z)
-{
+static void paneCentre(int i, float* x, float* z) {
     const float a = (angle + 90.0f * (float)i) * 3.14159265f / 180.0f;
     *x = 1.6f * cosf(a);
     *z = 1.6f * sinf(a);
 }
 
-static void solids(void)
-{
+static void solids(void) {
     const GLfloat red[] = {0.8f, 0.2f, 0.15f, 1.0f}, grey[] = {0.35f, 0.35f, 0.4f, 1.0f};
     glEnable(GL_LIGHTING);
     glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, red);
@@ -50,8 +47,7 @@ static void solids(void)
     glDisable(GL_LIGHTING);
 }
 
-static void display(void)
-{
+static void display(void) {
     struct Pane panes[PANES];
     int i;
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -93,8 +89,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -102,14 +97,12 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 11.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     const GLfloat position[] = {2.0f, 4.0f, 3.0f, 0.0f};
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH);

@@ -8,8 +8,7 @@ static GLfloat x = 60.0f, y = 150.0f, dx = 7.0f, dy = -5.0f;
 static const GLfloat radius = 20.0f;
 static int width = 320, height = 240;
 
-static void display(void)
-{
+static void display(void) {
     int i;
     glClear(GL_COLOR_BUFFER_BIT);
     glColor3f(0.6f, 0.6f, 0.6f);
@@ -29,8 +28,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void timer(int value)
-{
+static void timer(int value) {
     x += dx;
     y += dy;
     if (x - radius < 5.0f || x + radius > (GLfloat)width - 5.0f) dx = -dx;
@@ -39,8 +37,7 @@ static void timer(int value)
     glutTimerFunc(16, timer, value);
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     width = w;
     height = h;
     glViewport(0, 0, w, h);
@@ -50,8 +47,7 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(width, height);

@@ -5,8 +5,7 @@
 
 static float angle = 30.0f;
 
-static void display(void)
-{
+static void display(void) {
     static const GLdouble belowY[] = {0.0, -1.0, 0.0, 0.0}, rightOfX[] = {1.0, 0.0, 0.0, 0.0};
     static const GLdouble slice[] = {0.3, 0.2, -1.0, 0.1};
 
@@ -41,8 +40,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -50,14 +48,12 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 9.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     static const GLfloat lightPosition[] = {1.0f, 2.0f, 3.0f, 0.0f};
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);

@@ -10,8 +10,7 @@
 static float angle = 30.0f;
 static int offsetLines = 0;
 
-static void grid(void)
-{
+static void grid(void) {
     int i, j;
     for (i = 0; i < 12; ++i) {
         glBegin(GL_QUAD_STRIP);
@@ -24,8 +23,7 @@ static void grid(void)
     }
 }
 
-static void scene(void)
-{
+static void scene(void) {
     glPushMatrix();
     glTranslatef(0.0f, -1.2f, 0.0f);
     grid();
@@ -36,8 +34,7 @@ static void scene(void)
     glPopMatrix();
 }
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
     gluLookAt(0.0, 2.0, 5.5, 0.0, -0.3, 0.0, 0.0, 1.0, 0.0);
@@ -62,8 +59,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -71,15 +67,13 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 9.0f;
     offsetLines = !offsetLines;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(480, 320);

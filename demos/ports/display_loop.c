@@ -3,8 +3,7 @@
  * capture still ends. Ported by changing only the include (was <GL/glut.h>). */
 #include <mygl/glut.h>
 
-static void display(void)
-{
+static void display(void) {
     float t = 0.0f;
     for (;;) {
         glClear(GL_COLOR_BUFFER_BIT);
@@ -25,8 +24,7 @@ static void display(void)
     }
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(240, 240);

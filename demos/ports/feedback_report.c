@@ -14,8 +14,7 @@ static GLfloat feedbackBuffer[BUFFER_SIZE];
 static float angle = 0.0f;
 static int width = 320, height = 240;
 
-static void drawScene(void)
-{
+static void drawScene(void) {
     int i;
     glPushMatrix();
     glRotatef(angle, 0.0f, 0.0f, 1.0f);
@@ -43,8 +42,7 @@ static void drawScene(void)
     glPopMatrix();
 }
 
-static void setView(void)
-{
+static void setView(void) {
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glOrtho(-2.0, 2.0, -1.5, 1.5, -1.0, 1.0);
@@ -53,14 +51,10 @@ static void setView(void)
 }
 
 /* A small square at a window position, in window coordinates. */
-static void mark(GLfloat x, GLfloat y)
-{
-    glRectf(x - 2.0f, y - 2.0f, x + 2.0f, y + 2.0f);
-}
+static void mark(GLfloat x, GLfloat y) { glRectf(x - 2.0f, y - 2.0f, x + 2.0f, y + 2.0f); }
 
 /* Walks the GL_3D_COLOR tokens: marks every vertex, outlines polygons and lines. */
-static void drawReport(GLint count, int print)
-{
+static void drawReport(GLint count, int print) {
     GLint i = 0, polygons = 0, lines = 0, points = 0, passes = 0;
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -101,12 +95,12 @@ static void drawReport(GLint count, int print)
         for (k = 0; k < n; k++) mark(feedbackBuffer[i + 7 * k], feedbackBuffer[i + 7 * k + 1]);
         i += 7 * n;
     }
-    if (print) printf("feedback: %d values, %d polygons, %d lines, %d points, %d pass-throughs\n", (int)count,
-                      (int)polygons, (int)lines, (int)points, (int)passes);
+    if (print)
+        printf("feedback: %d values, %d polygons, %d lines, %d points, %d pass-throughs\n", (int)count, (int)polygons,
+               (int)lines, (int)points, (int)passes);
 }
 
-static void display(void)
-{
+static void display(void) {
     static int frame = 0;
     GLint count;
     setView();
@@ -122,21 +116,18 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     width = w;
     height = h;
     glViewport(0, 0, w, h);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 9.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(320, 240);

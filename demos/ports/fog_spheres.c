@@ -8,8 +8,7 @@ static const GLint fogModes[] = {GL_EXP, GL_EXP2, GL_LINEAR};
 static int fogIndex = 0;
 static float angle = 0.0f;
 
-static void sphereAt(float x, float z, const GLfloat* diffuse)
-{
+static void sphereAt(float x, float z, const GLfloat* diffuse) {
     glPushMatrix();
     glTranslatef(x, -0.2f, z);
     glRotatef(angle, 0.0f, 1.0f, 0.0f);
@@ -18,10 +17,12 @@ static void sphereAt(float x, float z, const GLfloat* diffuse)
     glPopMatrix();
 }
 
-static void display(void)
-{
-    static const GLfloat colors[5][4] = {{0.9f, 0.3f, 0.2f, 1.0f}, {0.9f, 0.7f, 0.2f, 1.0f}, {0.3f, 0.8f, 0.3f, 1.0f},
-                                         {0.2f, 0.5f, 0.9f, 1.0f}, {0.7f, 0.3f, 0.8f, 1.0f}};
+static void display(void) {
+    static const GLfloat colors[5][4] = {{0.9f, 0.3f, 0.2f, 1.0f},
+                                         {0.9f, 0.7f, 0.2f, 1.0f},
+                                         {0.3f, 0.8f, 0.3f, 1.0f},
+                                         {0.2f, 0.5f, 0.9f, 1.0f},
+                                         {0.7f, 0.3f, 0.8f, 1.0f}};
     int i;
     glFogi(GL_FOG_MODE, fogModes[fogIndex]);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -43,8 +44,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -53,15 +53,13 @@ static void reshape(int w, int h)
     glLoadIdentity();
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 11.0f;
     fogIndex = (fogIndex + 1) % 3;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     static const GLfloat fogColor[] = {0.5f, 0.55f, 0.6f, 1.0f};
     static const GLfloat lightPosition[] = {1.0f, 3.0f, 2.0f, 0.0f};
     glutInit(&argc, argv);

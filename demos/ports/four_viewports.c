@@ -6,8 +6,7 @@
 static int width = 400, height = 400;
 static float angle = 0.0f;
 
-static void scene(void)
-{
+static void scene(void) {
     glRotatef(angle, 0.0f, 1.0f, 0.0f);
     glColor3f(0.9f, 0.9f, 0.5f);
     glutWireTeapot(0.8);
@@ -17,8 +16,7 @@ static void scene(void)
     glutWireTorus(0.05, 1.3, 4, 24);
 }
 
-static void label(const char* text)
-{
+static void label(const char* text) {
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     gluOrtho2D(0.0, 1.0, 0.0, 1.0);
@@ -29,14 +27,15 @@ static void label(const char* text)
     glutBitmapString(GLUT_BITMAP_HELVETICA_12, (const unsigned char*)text);
 }
 
-static void view(int column, int row, int perspective, float rx, float ry, const char* name)
-{
+static void view(int column, int row, int perspective, float rx, float ry, const char* name) {
     int w = width / 2, h = height / 2;
     glViewport(column * w, row * h, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
-    if (perspective) gluPerspective(40.0, (double)w / h, 1.0, 20.0);
-    else glOrtho(-2.0, 2.0, -2.0, 2.0, -10.0, 10.0);
+    if (perspective)
+        gluPerspective(40.0, (double)w / h, 1.0, 20.0);
+    else
+        glOrtho(-2.0, 2.0, -2.0, 2.0, -10.0, 10.0);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     if (perspective) gluLookAt(3.0, 2.5, 4.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
@@ -46,8 +45,7 @@ static void view(int column, int row, int perspective, float rx, float ry, const
     label(name);
 }
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT);
     view(0, 1, 0, 90.0f, 0.0f, "Top");
     view(1, 1, 0, 0.0f, 0.0f, "Front");
@@ -57,20 +55,17 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     width = w;
     height = h;
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 3.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(width, height);

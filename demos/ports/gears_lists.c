@@ -9,8 +9,7 @@ static GLfloat viewX = 20.0f, viewY = 30.0f, angle = 0.0f;
 
 /* One gear: front and back faces as quad strips, the outward faces of the teeth and the inner
  * cylinder. */
-static void gear(GLfloat inner, GLfloat outer, GLfloat width, GLint teeth, GLfloat toothDepth)
-{
+static void gear(GLfloat inner, GLfloat outer, GLfloat width, GLint teeth, GLfloat toothDepth) {
     const GLfloat r0 = inner, r1 = outer - toothDepth / 2.0f, r2 = outer + toothDepth / 2.0f;
     const GLfloat da = 2.0f * (GLfloat)M_PI / (GLfloat)teeth / 4.0f;
     GLint i;
@@ -57,8 +56,7 @@ static void gear(GLfloat inner, GLfloat outer, GLfloat width, GLint teeth, GLflo
     glEnd();
 }
 
-static GLuint compileGear(GLfloat r, GLfloat g, GLfloat b, GLfloat inner, GLfloat outer, GLfloat width, GLint teeth)
-{
+static GLuint compileGear(GLfloat r, GLfloat g, GLfloat b, GLfloat inner, GLfloat outer, GLfloat width, GLint teeth) {
     GLuint list = glGenLists(1);
     glNewList(list, GL_COMPILE);
     glColor3f(r, g, b);
@@ -67,8 +65,7 @@ static GLuint compileGear(GLfloat r, GLfloat g, GLfloat b, GLfloat inner, GLfloa
     return list;
 }
 
-static void drawGear(GLuint list, GLfloat x, GLfloat y, GLfloat rotation)
-{
+static void drawGear(GLuint list, GLfloat x, GLfloat y, GLfloat rotation) {
     glPushMatrix();
     glTranslatef(x, y, 0.0f);
     glRotatef(rotation, 0.0f, 0.0f, 1.0f);
@@ -76,8 +73,7 @@ static void drawGear(GLuint list, GLfloat x, GLfloat y, GLfloat rotation)
     glPopMatrix();
 }
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glPushMatrix();
     glRotatef(viewX, 1.0f, 0.0f, 0.0f);
@@ -89,14 +85,12 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 2.0f;
     glutPostRedisplay();
 }
 
-static void special(int key, int x, int y)
-{
+static void special(int key, int x, int y) {
     (void)x, (void)y;
     if (key == GLUT_KEY_UP) viewX += 5.0f;
     if (key == GLUT_KEY_DOWN) viewX -= 5.0f;
@@ -105,8 +99,7 @@ static void special(int key, int x, int y)
     glutPostRedisplay();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     GLfloat aspect = (GLfloat)h / (GLfloat)w;
     glViewport(0, 0, (GLsizei)w, (GLsizei)h);
     glMatrixMode(GL_PROJECTION);
@@ -117,8 +110,7 @@ static void reshape(int w, int h)
     glTranslatef(0.0f, 0.0f, -40.0f);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(300, 300);

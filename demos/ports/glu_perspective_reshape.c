@@ -8,8 +8,9 @@ static double fovy = 60.0;
 static int windowWidth = 480, windowHeight = 300;
 
 static void cube(void) {
-    static const GLfloat v[8][3] = {{-0.5f, -0.5f, -0.5f}, {0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, -0.5f}, {-0.5f, 0.5f, -0.5f},
-                                    {-0.5f, -0.5f, 0.5f},  {0.5f, -0.5f, 0.5f},  {0.5f, 0.5f, 0.5f},  {-0.5f, 0.5f, 0.5f}};
+    static const GLfloat v[8][3] = {{-0.5f, -0.5f, -0.5f}, {0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, -0.5f},
+                                    {-0.5f, 0.5f, -0.5f},  {-0.5f, -0.5f, 0.5f}, {0.5f, -0.5f, 0.5f},
+                                    {0.5f, 0.5f, 0.5f},    {-0.5f, 0.5f, 0.5f}};
     static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
     static const GLfloat shade[6] = {1.0f, 0.5f, 0.8f, 0.7f, 0.9f, 0.4f};
     int f, i;

@@ -27,8 +27,10 @@ static void drawObjects(GLenum mode) {
         if (mode == GL_SELECT) glLoadName((GLuint)i);
         glPushMatrix();
         glTranslatef(-2.4f + 1.6f * (float)i, 0.0f, 0.0f);
-        if (i == selected) glColor3f(1.0f, 0.9f, 0.2f);
-        else glColor3f(0.3f + 0.15f * (float)i, 0.4f, 0.8f - 0.15f * (float)i);
+        if (i == selected)
+            glColor3f(1.0f, 0.9f, 0.2f);
+        else
+            glColor3f(0.3f + 0.15f * (float)i, 0.4f, 0.8f - 0.15f * (float)i);
         gluSphere(quadric, 0.6, 16, 12);
         glPopMatrix();
     }

@@ -41,8 +41,14 @@ static void keyboard(unsigned char key, int x, int y) {
     (void)x;
     (void)y;
     if (key == 'o') orientation = orientation == GLU_OUTSIDE ? GLU_INSIDE : GLU_OUTSIDE;
-    if (key == '+' && slices < 64) { slices += 2; stacks += 1; }
-    if (key == '-' && stacks > 3) { slices -= 2; stacks -= 1; }
+    if (key == '+' && slices < 64) {
+        slices += 2;
+        stacks += 1;
+    }
+    if (key == '-' && stacks > 3) {
+        slices -= 2;
+        stacks -= 1;
+    }
     glutPostRedisplay();
 }
 

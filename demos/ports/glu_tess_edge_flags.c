@@ -8,8 +8,9 @@
 #include <mygl/glu.h>
 
 static GLUtesselator* tess;
-static GLdouble letter[12][3] = {{-1, -1, 0}, {1, -1, 0}, {1, -0.6, 0}, {-0.5, -0.6, 0}, {-0.5, -0.2, 0}, {0.6, -0.2, 0},
-                                 {0.6, 0.2, 0}, {-0.5, 0.2, 0}, {-0.5, 0.6, 0}, {1, 0.6, 0}, {1, 1, 0}, {-1, 1, 0}};
+static GLdouble letter[12][3] = {{-1, -1, 0},     {1, -1, 0},     {1, -0.6, 0},  {-0.5, -0.6, 0},
+                                 {-0.5, -0.2, 0}, {0.6, -0.2, 0}, {0.6, 0.2, 0}, {-0.5, 0.2, 0},
+                                 {-0.5, 0.6, 0},  {1, 0.6, 0},    {1, 1, 0},     {-1, 1, 0}};
 static GLdouble hole[4][3] = {{-0.85, -0.15, 0}, {-0.85, 0.15, 0}, {-0.65, 0.15, 0}, {-0.65, -0.15, 0}};
 static int useFlags;
 
@@ -36,7 +37,8 @@ static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT);
     for (side = 0; side < 2; ++side) {
         useFlags = side;
-        gluTessCallback(tess, GLU_TESS_EDGE_FLAG, useFlags ? (_GLUfuncptr)edgeFlagCallback : (_GLUfuncptr)ignoreEdgeFlag);
+        gluTessCallback(tess, GLU_TESS_EDGE_FLAG,
+                        useFlags ? (_GLUfuncptr)edgeFlagCallback : (_GLUfuncptr)ignoreEdgeFlag);
         glLoadIdentity();
         glTranslatef(side ? 1.2f : -1.2f, 0.0f, 0.0f);
         glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);

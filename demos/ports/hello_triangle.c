@@ -2,8 +2,7 @@
  * Ported to MyGL by changing only the include below (was <GL/glut.h>). */
 #include <mygl/glut.h>
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT);
     glBegin(GL_TRIANGLES);
     glColor3f(1.0f, 0.0f, 0.0f);
@@ -16,8 +15,7 @@ static void display(void)
     glFlush();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_SINGLE | GLUT_RGB);
     glutInitWindowSize(320, 240);

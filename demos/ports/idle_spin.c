@@ -4,8 +4,7 @@
 
 static GLfloat spin = 0.0f;
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT);
     glPushMatrix();
     glRotatef(spin, 0.0f, 0.0f, 1.0f);
@@ -15,22 +14,18 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void spinDisplay(void)
-{
+static void spinDisplay(void) {
     spin = spin + 2.0f;
-    if (spin > 360.0f)
-        spin = spin - 360.0f;
+    if (spin > 360.0f) spin = spin - 360.0f;
     glutPostRedisplay();
 }
 
-static void init(void)
-{
+static void init(void) {
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glShadeModel(GL_FLAT);
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, (GLsizei)w, (GLsizei)h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -39,17 +34,13 @@ static void reshape(int w, int h)
     glLoadIdentity();
 }
 
-static void mouse(int button, int state, int x, int y)
-{
+static void mouse(int button, int state, int x, int y) {
     (void)x, (void)y;
-    if (button == GLUT_LEFT_BUTTON && state == GLUT_DOWN)
-        glutIdleFunc(spinDisplay);
-    if (button == GLUT_RIGHT_BUTTON && state == GLUT_DOWN)
-        glutIdleFunc(NULL);
+    if (button == GLUT_LEFT_BUTTON && state == GLUT_DOWN) glutIdleFunc(spinDisplay);
+    if (button == GLUT_RIGHT_BUTTON && state == GLUT_DOWN) glutIdleFunc(NULL);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(250, 250);

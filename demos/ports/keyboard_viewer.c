@@ -7,15 +7,17 @@ static double yaw = 30.0, pitch = 20.0, distance = 7.0;
 static int wireframe = 0, culling = 1;
 static int keysDown = 0;
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
     glTranslated(0.0, 0.0, -distance);
     glRotated(pitch, 1.0, 0.0, 0.0);
     glRotated(yaw, 0.0, 1.0, 0.0);
 
-    if (culling) glEnable(GL_CULL_FACE); else glDisable(GL_CULL_FACE);
+    if (culling)
+        glEnable(GL_CULL_FACE);
+    else
+        glDisable(GL_CULL_FACE);
     glPolygonMode(GL_FRONT_AND_BACK, wireframe ? GL_LINE : GL_FILL);
 
     glColor3f(0.9f, 0.3f, 0.3f);
@@ -40,8 +42,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -49,8 +50,7 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void keyboard(unsigned char key, int x, int y)
-{
+static void keyboard(unsigned char key, int x, int y) {
     (void)x, (void)y;
     keysDown++;
     switch (key) {
@@ -63,14 +63,12 @@ static void keyboard(unsigned char key, int x, int y)
     glutPostRedisplay();
 }
 
-static void keyboardUp(unsigned char key, int x, int y)
-{
+static void keyboardUp(unsigned char key, int x, int y) {
     (void)key, (void)x, (void)y;
     keysDown--;
 }
 
-static void special(int key, int x, int y)
-{
+static void special(int key, int x, int y) {
     (void)x, (void)y;
     if (key == GLUT_KEY_LEFT) yaw -= 5.0;
     if (key == GLUT_KEY_RIGHT) yaw += 5.0;
@@ -81,13 +79,9 @@ static void special(int key, int x, int y)
     glutPostRedisplay();
 }
 
-static void specialUp(int key, int x, int y)
-{
-    (void)key, (void)x, (void)y;
-}
+static void specialUp(int key, int x, int y) { (void)key, (void)x, (void)y; }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH | GLUT_ALPHA);
     glutInitWindowSize(360, 270);

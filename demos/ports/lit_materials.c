@@ -7,8 +7,7 @@
 static float angle = 20.0f;
 
 static void materialSphere(float x, float y, const GLfloat* diffuse, const GLfloat* specular, float shininess,
-                           const GLfloat* emission)
-{
+                           const GLfloat* emission) {
     glPushMatrix();
     glTranslatef(x, y, 0.0f);
     glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
@@ -19,8 +18,7 @@ static void materialSphere(float x, float y, const GLfloat* diffuse, const GLflo
     glPopMatrix();
 }
 
-static void display(void)
-{
+static void display(void) {
     static const GLfloat noMat[] = {0.0f, 0.0f, 0.0f, 1.0f};
     static const GLfloat red[] = {0.8f, 0.2f, 0.2f, 1.0f}, green[] = {0.2f, 0.7f, 0.3f, 1.0f};
     static const GLfloat white[] = {1.0f, 1.0f, 1.0f, 1.0f}, glow[] = {0.3f, 0.2f, 0.0f, 1.0f};
@@ -54,8 +52,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -63,14 +60,12 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 7.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     static const GLfloat white[] = {1.0f, 1.0f, 1.0f, 1.0f}, blue[] = {0.2f, 0.3f, 0.9f, 1.0f};
     static const GLfloat ambient[] = {0.15f, 0.15f, 0.15f, 1.0f};
     glutInit(&argc, argv);

@@ -7,8 +7,7 @@
 
 static int running = 1, frames = 0;
 
-static void display(void)
-{
+static void display(void) {
     float shade = (float)(frames % 10) / 10.0f;
     glClearColor(0.1f, 0.1f + 0.5f * shade, 0.3f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -25,8 +24,7 @@ static void display(void)
 
 static void onClose(void) { running = 0; }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);

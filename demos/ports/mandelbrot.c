@@ -6,8 +6,7 @@
 
 static double centreX = -0.745, centreY = 0.11, scale = 3.0;
 
-static void display(void)
-{
+static void display(void) {
     int px, py, i;
     glClear(GL_COLOR_BUFFER_BIT);
     glBegin(GL_POINTS);
@@ -21,22 +20,22 @@ static void display(void)
                 zy = 2.0 * zx * zy + cy;
                 zx = t;
             }
-            if (i == 64) glColor3f(0.0f, 0.0f, 0.0f);
-            else glColor3f((float)i / 64.0f, (float)(i % 8) / 8.0f, 1.0f - (float)i / 64.0f);
+            if (i == 64)
+                glColor3f(0.0f, 0.0f, 0.0f);
+            else
+                glColor3f((float)i / 64.0f, (float)(i % 8) / 8.0f, 1.0f - (float)i / 64.0f);
             glVertex2i(px, py);
         }
     glEnd();
     glutSwapBuffers();
 }
 
-static void idle(void)
-{
+static void idle(void) {
     scale *= 0.85;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(SIZE, SIZE);

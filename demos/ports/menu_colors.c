@@ -11,8 +11,7 @@ static int shape = SHAPE_STAR;
 static int menuOpen = 0;
 static float angle = 0.0f;
 
-static void display(void)
-{
+static void display(void) {
     int i;
     glClear(GL_COLOR_BUFFER_BIT);
     glLoadIdentity();
@@ -39,40 +38,46 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void colorMenu(int value)
-{
+static void colorMenu(int value) {
     switch (value) {
-    case 1: red = 1.0f; green = 0.3f; blue = 0.3f; break;
-    case 2: red = 0.3f; green = 1.0f; blue = 0.3f; break;
-    case 3: red = 0.3f; green = 0.3f; blue = 1.0f; break;
+    case 1:
+        red = 1.0f;
+        green = 0.3f;
+        blue = 0.3f;
+        break;
+    case 2:
+        red = 0.3f;
+        green = 1.0f;
+        blue = 0.3f;
+        break;
+    case 3:
+        red = 0.3f;
+        green = 0.3f;
+        blue = 1.0f;
+        break;
     }
     glutPostRedisplay();
 }
 
-static void mainMenu(int value)
-{
-    if (value == QUIT)
-        exit(0);
+static void mainMenu(int value) {
+    if (value == QUIT) exit(0);
     shape = value;
     glutPostRedisplay();
 }
 
-static void menuStatus(int status, int x, int y)
-{
+static void menuStatus(int status, int x, int y) {
     (void)x, (void)y;
     menuOpen = status == GLUT_MENU_IN_USE;
 }
 
-static void idle(void)
-{
+static void idle(void) {
     if (!menuOpen) {
         angle += 4.0f;
         glutPostRedisplay();
     }
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     int colors;
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);

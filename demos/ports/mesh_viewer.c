@@ -13,8 +13,7 @@ static GLushort indices[GRID * GRID * 6];
 static GLfloat angle = 0.0f;
 static int wireframe = 0;
 
-static void buildMesh(void)
-{
+static void buildMesh(void) {
     int i, j, k = 0;
     for (j = 0; j <= GRID; ++j) {
         for (i = 0; i <= GRID; ++i) {
@@ -42,8 +41,7 @@ static void buildMesh(void)
     }
 }
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glPushMatrix();
     glRotatef(-60.0f, 1.0f, 0.0f, 0.0f);
@@ -55,15 +53,13 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 7.0f;
     if (angle > 360.0f) angle -= 360.0f;
     glutPostRedisplay();
 }
 
-static void keyboard(unsigned char key, int x, int y)
-{
+static void keyboard(unsigned char key, int x, int y) {
     (void)x, (void)y;
     if (key == 'w') {
         wireframe = !wireframe;
@@ -71,8 +67,7 @@ static void keyboard(unsigned char key, int x, int y)
     }
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, (GLsizei)w, (GLsizei)h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -82,8 +77,7 @@ static void reshape(int w, int h)
     glTranslatef(0.0f, 0.0f, -3.2f);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(320, 240);

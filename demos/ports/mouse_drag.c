@@ -8,8 +8,7 @@ static int dragging = 0, zooming = 0, lastX, lastY;
 static float rotX = 25.0f, rotY = -30.0f, zoom = 6.0f;
 static int cursorX, cursorY, inside = 1;
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
     glTranslatef(0.0f, 0.0f, -zoom);
@@ -20,8 +19,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -29,16 +27,14 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void mouse(int button, int state, int x, int y)
-{
+static void mouse(int button, int state, int x, int y) {
     if (button == GLUT_LEFT_BUTTON) dragging = state == GLUT_DOWN;
     if (button == GLUT_MIDDLE_BUTTON) zooming = state == GLUT_DOWN;
     lastX = x;
     lastY = y;
 }
 
-static void motion(int x, int y)
-{
+static void motion(int x, int y) {
     if (dragging) {
         rotY += (float)(x - lastX);
         rotX += (float)(y - lastY);
@@ -49,20 +45,17 @@ static void motion(int x, int y)
     glutPostRedisplay();
 }
 
-static void passive(int x, int y)
-{
+static void passive(int x, int y) {
     cursorX = x;
     cursorY = y;
 }
 
-static void entry(int state)
-{
+static void entry(int state) {
     inside = state == GLUT_ENTERED;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(360, 270);

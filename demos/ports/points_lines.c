@@ -5,8 +5,7 @@
 
 static int frame = 0;
 
-static void display(void)
-{
+static void display(void) {
     int i;
     glClear(GL_COLOR_BUFFER_BIT);
     for (i = 1; i <= 6; i++) {
@@ -29,8 +28,7 @@ static void display(void)
     glLineWidth(1.0f);
     glColor3f(0.2f, 1.0f, 0.4f);
     glBegin(GL_LINE_STRIP);
-    for (i = 0; i <= 40; i++)
-        glVertex2f(200.0f + 4.0f * (float)i, 250.0f + 30.0f * sinf(0.3f * (float)(i + frame)));
+    for (i = 0; i <= 40; i++) glVertex2f(200.0f + 4.0f * (float)i, 250.0f + 30.0f * sinf(0.3f * (float)(i + frame)));
     glEnd();
     glColor3f(1.0f, 0.8f, 0.2f);
     glBegin(GL_LINE_LOOP);
@@ -51,8 +49,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -61,15 +58,13 @@ static void reshape(int w, int h)
     glLoadIdentity();
 }
 
-static void timer(int value)
-{
+static void timer(int value) {
     frame = value;
     glutPostRedisplay();
     glutTimerFunc(16, timer, value + 1);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(400, 300);

@@ -5,8 +5,7 @@
 static float angle = 0.0f;
 static float pointSize = 2.0f;
 
-static void torusAt(float x, GLenum front, GLenum back)
-{
+static void torusAt(float x, GLenum front, GLenum back) {
     glPushMatrix();
     glTranslatef(x, 0.0f, 0.0f);
     glRotatef(angle, 1.0f, 0.5f, 0.0f);
@@ -16,8 +15,7 @@ static void torusAt(float x, GLenum front, GLenum back)
     glPopMatrix();
 }
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
     glTranslatef(0.0f, 0.0f, -7.0f);
@@ -32,8 +30,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -41,22 +38,19 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void keyboard(unsigned char key, int x, int y)
-{
+static void keyboard(unsigned char key, int x, int y) {
     (void)x, (void)y;
     if (key == 'p') pointSize = pointSize >= 4.0f ? 1.0f : pointSize + 1.0f;
     glutPostRedisplay();
 }
 
-static void timer(int value)
-{
+static void timer(int value) {
     angle += 7.0f;
     glutPostRedisplay();
     glutTimerFunc(16, timer, value);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(480, 240);

@@ -5,8 +5,7 @@
 
 static int frames = 0;
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT);
     glColor3f(0.2f, 0.6f, 1.0f);
     glRectf(-1.0f, -1.0f, 1.0f, 1.0f);
@@ -24,12 +23,10 @@ static void display(void)
     glVertex2f(-1.2f, 1.2f);
     glEnd();
     glutSwapBuffers();
-    if (++frames == 1)
-        glutReshapeWindow(200, 300);
+    if (++frames == 1) glutReshapeWindow(200, 300);
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -41,8 +38,7 @@ static void reshape(int w, int h)
     glLoadIdentity();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(400, 240);

@@ -5,8 +5,7 @@
 
 static int shoulder = 0, elbow = 0, step = 0;
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT);
     glPushMatrix();
     glTranslatef(-1.0f, 0.0f, 0.0f);
@@ -31,8 +30,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, (GLsizei)w, (GLsizei)h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -42,8 +40,7 @@ static void reshape(int w, int h)
     glTranslatef(0.0f, 0.0f, -5.0f);
 }
 
-static void keyboard(unsigned char key, int x, int y)
-{
+static void keyboard(unsigned char key, int x, int y) {
     (void)x, (void)y;
     switch (key) {
     case 's': shoulder = (shoulder + 5) % 360; break;
@@ -55,8 +52,7 @@ static void keyboard(unsigned char key, int x, int y)
     glutPostRedisplay();
 }
 
-static void wave(int value)
-{
+static void wave(int value) {
     step++;
     shoulder = (step * 7) % 90 - 45;
     elbow = (step * 11) % 120;
@@ -64,8 +60,7 @@ static void wave(int value)
     glutTimerFunc(30, wave, value);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(400, 300);

@@ -7,8 +7,7 @@ static const GLfloat corners[3][2] = {{0.0f, 0.0f}, {250.0f, 500.0f}, {500.0f, 0
 static GLfloat p[2] = {75.0f, 50.0f};
 static int points = 0;
 
-static void display(void)
-{
+static void display(void) {
     int i;
     glClear(GL_COLOR_BUFFER_BIT);
     srand(1);
@@ -29,8 +28,7 @@ static void display(void)
 
 static void idle(void) { glutPostRedisplay(); }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_SINGLE | GLUT_RGB);
     glutInitWindowSize(300, 300);

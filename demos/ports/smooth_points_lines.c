@@ -7,8 +7,7 @@
 
 static float rotAngle = 0.0f;
 
-static void init(void)
-{
+static void init(void) {
     GLfloat values[2];
     glGetFloatv(GL_LINE_WIDTH_GRANULARITY, values);
     glGetFloatv(GL_LINE_WIDTH_RANGE, values);
@@ -22,8 +21,7 @@ static void init(void)
     glClearColor(0.05f, 0.05f, 0.12f, 1.0f);
 }
 
-static void display(void)
-{
+static void display(void) {
     int i;
     glClear(GL_COLOR_BUFFER_BIT);
 
@@ -82,8 +80,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -92,8 +89,7 @@ static void reshape(int w, int h)
     glLoadIdentity();
 }
 
-static void keyboard(unsigned char key, int x, int y)
-{
+static void keyboard(unsigned char key, int x, int y) {
     (void)x;
     (void)y;
     if (key == 'r' || key == 'R') {
@@ -103,15 +99,13 @@ static void keyboard(unsigned char key, int x, int y)
     }
 }
 
-static void timer(int value)
-{
+static void timer(int value) {
     rotAngle += 7.0f;
     glutPostRedisplay();
     glutTimerFunc(16, timer, value + 1);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(400, 300);

@@ -5,8 +5,7 @@
 
 static int year = 0, day = 0;
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glColor3f(1.0f, 0.9f, 0.2f);
     glPushMatrix();
@@ -24,8 +23,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, (GLsizei)w, (GLsizei)h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -35,8 +33,7 @@ static void reshape(int w, int h)
     gluLookAt(0.0, 2.0, 5.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
 }
 
-static void keyboard(unsigned char key, int x, int y)
-{
+static void keyboard(unsigned char key, int x, int y) {
     (void)x, (void)y;
     switch (key) {
     case 'd': day = (day + 10) % 360; break;
@@ -48,16 +45,14 @@ static void keyboard(unsigned char key, int x, int y)
     glutPostRedisplay();
 }
 
-static void timer(int value)
-{
+static void timer(int value) {
     day = (day + 10) % 360;
     year = (year + 2) % 360;
     glutPostRedisplay();
     glutTimerFunc(20, timer, value + 1);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(400, 300);

@@ -5,8 +5,7 @@
 
 static float angle = 30.0f;
 
-static void solid(float x, float y, float r, float g, float b, void (*draw)(void))
-{
+static void solid(float x, float y, float r, float g, float b, void (*draw)(void)) {
     glPushMatrix();
     glTranslatef(x, y, 0.0f);
     glRotatef(angle, 0.2f, 1.0f, 0.3f);
@@ -27,8 +26,7 @@ static void torus(void) { glutSolidTorus(0.25, 0.65, 10, 20); }
 static void cylinder(void) { glutSolidCylinder(0.6, 1.1, 14, 2); }
 static void rhombic(void) { glutSolidRhombicDodecahedron(); }
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
     glTranslatef(0.0f, 0.0f, -8.0f);
@@ -41,8 +39,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -50,14 +47,12 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 5.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(480, 320);

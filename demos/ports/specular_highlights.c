@@ -10,8 +10,7 @@
 static float angle = 10.0f;
 static GLubyte checker[CHECKER][CHECKER][3];
 
-static void makeChecker(void)
-{
+static void makeChecker(void) {
     int i, j;
     for (i = 0; i < CHECKER; i++) {
         for (j = 0; j < CHECKER; j++) {
@@ -23,8 +22,7 @@ static void makeChecker(void)
     }
 }
 
-static void drawPair(float x, GLint colorControl)
-{
+static void drawPair(float x, GLint colorControl) {
     glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, colorControl);
     glPushMatrix();
     glTranslatef(x, 0.6f, 0.0f);
@@ -44,8 +42,7 @@ static void drawPair(float x, GLint colorControl)
     glPopMatrix();
 }
 
-static void display(void)
-{
+static void display(void) {
     static const GLfloat lightPosition[] = {1.0f, 2.0f, 4.0f, 1.0f};
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
@@ -56,8 +53,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -65,14 +61,12 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 9.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     static const GLfloat white[] = {1.0f, 1.0f, 1.0f, 1.0f};
     static const GLfloat shininess[] = {40.0f};
     glutInit(&argc, argv);

@@ -8,8 +8,7 @@
 
 static float angle = 20.0f;
 
-static void floorQuad(void)
-{
+static void floorQuad(void) {
     glBegin(GL_QUADS);
     glVertex3f(-2.0f, 0.0f, 3.2f);
     glVertex3f(2.0f, 0.0f, 3.2f);
@@ -18,8 +17,7 @@ static void floorQuad(void)
     glEnd();
 }
 
-static void object(void)
-{
+static void object(void) {
     const GLfloat gold[] = {0.85f, 0.65f, 0.2f, 1.0f}, blue[] = {0.2f, 0.35f, 0.9f, 1.0f};
     glPushMatrix();
     glTranslatef(0.0f, 0.9f, 0.0f);
@@ -31,8 +29,7 @@ static void object(void)
     glPopMatrix();
 }
 
-static void display(void)
-{
+static void display(void) {
     const GLfloat light[] = {1.0f, 3.0f, 2.0f, 0.0f};
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glLoadIdentity();
@@ -96,8 +93,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -105,14 +101,12 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void idle(void)
-{
+static void idle(void) {
     angle += 13.0f;
     glutPostRedisplay();
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH | GLUT_STENCIL);
     glutInitWindowSize(480, 360);

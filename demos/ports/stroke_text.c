@@ -5,14 +5,11 @@
 
 static float spin = 0.0f;
 
-static void strokeText(void* font, const char* text)
-{
-    while (*text)
-        glutStrokeCharacter(font, *text++);
+static void strokeText(void* font, const char* text) {
+    while (*text) glutStrokeCharacter(font, *text++);
 }
 
-static void display(void)
-{
+static void display(void) {
     const unsigned char* banner = (const unsigned char*)"GLUT";
     float length = (float)glutStrokeLength(GLUT_STROKE_ROMAN, banner);
 
@@ -48,23 +45,20 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     gluOrtho2D(0.0, 400.0, 0.0, 300.0);
 }
 
-static void timer(int value)
-{
+static void timer(int value) {
     spin += 5.0f;
     glutPostRedisplay();
     glutTimerFunc(16, timer, value);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB);
     glutInitWindowSize(400, 300);

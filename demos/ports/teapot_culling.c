@@ -5,8 +5,7 @@
 
 static float angle = 20.0f;
 
-static void teapot(float x, GLenum culled, float r, float g, float b)
-{
+static void teapot(float x, GLenum culled, float r, float g, float b) {
     glPushMatrix();
     glTranslatef(x, 0.0f, 0.0f);
     glRotatef(angle, 0.0f, 1.0f, 0.0f);
@@ -17,8 +16,7 @@ static void teapot(float x, GLenum culled, float r, float g, float b)
     glPopMatrix();
 }
 
-static void display(void)
-{
+static void display(void) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
     gluLookAt(0.0, 1.0, 7.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
@@ -27,8 +25,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -36,15 +33,13 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-static void timer(int value)
-{
+static void timer(int value) {
     angle += 8.0f;
     glutPostRedisplay();
     glutTimerFunc(16, timer, value);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
     glutInitWindowSize(400, 240);

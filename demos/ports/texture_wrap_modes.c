@@ -47,13 +47,17 @@ static void square(GLenum wrap, float x) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wrap);
     glBegin(GL_QUADS);
     glColor3f(0.9f, 0.2f, 0.2f);
-    glTexCoord2f(-0.5f, -0.5f); glVertex3f(x - 0.9f, -0.9f, 0.0f);
+    glTexCoord2f(-0.5f, -0.5f);
+    glVertex3f(x - 0.9f, -0.9f, 0.0f);
     glColor3f(0.2f, 0.9f, 0.2f);
-    glTexCoord2f(1.5f, -0.5f); glVertex3f(x + 0.9f, -0.9f, 0.0f);
+    glTexCoord2f(1.5f, -0.5f);
+    glVertex3f(x + 0.9f, -0.9f, 0.0f);
     glColor3f(0.9f, 0.9f, 0.9f);
-    glTexCoord2f(1.5f, 1.5f); glVertex3f(x + 0.9f, 0.9f, 0.0f);
+    glTexCoord2f(1.5f, 1.5f);
+    glVertex3f(x + 0.9f, 0.9f, 0.0f);
     glColor3f(0.2f, 0.2f, 0.9f);
-    glTexCoord2f(-0.5f, 1.5f); glVertex3f(x - 0.9f, 0.9f, 0.0f);
+    glTexCoord2f(-0.5f, 1.5f);
+    glVertex3f(x - 0.9f, 0.9f, 0.0f);
     glEnd();
 }
 

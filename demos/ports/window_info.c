@@ -3,16 +3,14 @@
 #include <stdio.h>
 #include <mygl/glut.h>
 
-static void line(int row, const char* name, int value)
-{
+static void line(int row, const char* name, int value) {
     char text[64];
     sprintf(text, "%-24s %d", name, value);
     glRasterPos2i(10, glutGet(GLUT_WINDOW_HEIGHT) - 20 - 16 * row);
     glutBitmapString(GLUT_BITMAP_9_BY_15, (const unsigned char*)text);
 }
 
-static void display(void)
-{
+static void display(void) {
     int row = 0;
     glClear(GL_COLOR_BUFFER_BIT);
     glColor3f(0.6f, 1.0f, 0.6f);
@@ -33,8 +31,7 @@ static void display(void)
     glutSwapBuffers();
 }
 
-static void reshape(int w, int h)
-{
+static void reshape(int w, int h) {
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
@@ -42,8 +39,7 @@ static void reshape(int w, int h)
     glMatrixMode(GL_MODELVIEW);
 }
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     glutInit(&argc, argv);
     glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGBA | GLUT_DEPTH | GLUT_STENCIL | GLUT_ACCUM | GLUT_MULTISAMPLE);
     glutInitWindowSize(340, 240);

@@ -31,8 +31,10 @@ void torus(float major, float minor, int rings, int sides, bool lit = false) {
                 const float u = static_cast<float>(r + k) * kTwoPi / static_cast<float>(rings);
                 const float v = static_cast<float>(s) * kTwoPi / static_cast<float>(sides);
                 const float nx = std::cos(u) * std::cos(v), ny = std::sin(u) * std::cos(v), nz = std::sin(v);
-                if (lit) glNormal3f(nx, ny, nz);
-                else glColor3f(0.5f + 0.5f * nx, 0.5f + 0.5f * ny, 0.5f + 0.5f * nz);
+                if (lit)
+                    glNormal3f(nx, ny, nz);
+                else
+                    glColor3f(0.5f + 0.5f * nx, 0.5f + 0.5f * ny, 0.5f + 0.5f * nz);
                 glVertex3f((major + minor * std::cos(v)) * std::cos(u), (major + minor * std::cos(v)) * std::sin(u),
                            minor * nz);
             }
@@ -146,7 +148,7 @@ void drawBenchFill(int width, int height, int) {
 }
 
 void drawBenchCubes(int width, int height, int frame) {
-    static const float colors[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.25f, 0.35f, 0.95f},
+    static const float colors[6][3] = {{0.9f, 0.2f, 0.2f},   {0.2f, 0.8f, 0.3f},   {0.25f, 0.35f, 0.95f},
                                        {0.95f, 0.85f, 0.2f}, {0.85f, 0.3f, 0.85f}, {0.2f, 0.85f, 0.85f}};
     beginFrame(width, height, true, true);
     drawCubeField(width, height, frame, [] { drawCube(colors); });
@@ -168,8 +170,8 @@ void bindBenchTexture() {
                 for (int x = 0; x < side; ++x) {
                     const int s = x * 64 / side, t = y * 64 / side;
                     const bool mortar = t % 16 < 2 || (s + (t / 16 % 2) * 16) % 32 < 2;
-                    texels.insert(texels.end(), {GLubyte(mortar ? 200 : 150 + (s * 7 + t * 3) % 60), GLubyte(mortar ? 200 : 70),
-                                                 GLubyte(mortar ? 190 : 50 + level * 20)});
+                    texels.insert(texels.end(), {GLubyte(mortar ? 200 : 150 + (s * 7 + t * 3) % 60),
+                                                 GLubyte(mortar ? 200 : 70), GLubyte(mortar ? 190 : 50 + level * 20)});
                 }
             }
             glTexImage2D(GL_TEXTURE_2D, level, GL_RGB, side, side, 0, GL_RGB, GL_UNSIGNED_BYTE, texels.data());
@@ -290,8 +292,10 @@ void gears(int width, int height, int frame, bool fromLists) {
         glPushMatrix();
         glTranslatef(gears[i].x, gears[i].y, 0.0f);
         glRotatef(gears[i].rotation, 0.0f, 0.0f, 1.0f);
-        if (fromLists) glCallList(kFirstList + i);
-        else draw(gears[i]);
+        if (fromLists)
+            glCallList(kFirstList + i);
+        else
+            draw(gears[i]);
         glPopMatrix();
     }
 }
@@ -306,11 +310,13 @@ struct Terrain {
         constexpr int n = kQuads + 1;
         for (int j = 0; j < n; ++j) {
             for (int i = 0; i < n; ++i) {
-                const float x = static_cast<float>(i) / kQuads * 2.0f - 1.0f, y = static_cast<float>(j) / kQuads * 2.0f - 1.0f;
+                const float x = static_cast<float>(i) / kQuads * 2.0f - 1.0f,
+                            y = static_cast<float>(j) / kQuads * 2.0f - 1.0f;
                 const float h = 0.12f * std::sin(7.0f * x) * std::cos(5.0f * y) + 0.05f * std::sin(23.0f * x * y);
                 positions.insert(positions.end(), {x, y, h});
                 colors.insert(colors.end(), {0.3f + 2.0f * h, 0.6f - h, 0.4f + 3.0f * h});
-                texCoords.insert(texCoords.end(), {static_cast<float>(i) * 12.0f / kQuads, static_cast<float>(j) * 12.0f / kQuads});
+                texCoords.insert(texCoords.end(),
+                                 {static_cast<float>(i) * 12.0f / kQuads, static_cast<float>(j) * 12.0f / kQuads});
             }
         }
         for (int j = 0; j < kQuads; ++j) {
@@ -424,7 +430,8 @@ void drawBenchParticles(int width, int height, int frame) {
     glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
     glColor3f(0.25f, 0.3f, 0.35f);
     glBegin(GL_QUADS);
-    glVertex3f(-6.0f, -2.0f, 6.0f), glVertex3f(6.0f, -2.0f, 6.0f), glVertex3f(6.0f, -2.0f, -6.0f), glVertex3f(-6.0f, -2.0f, -6.0f);
+    glVertex3f(-6.0f, -2.0f, 6.0f), glVertex3f(6.0f, -2.0f, 6.0f), glVertex3f(6.0f, -2.0f, -6.0f),
+        glVertex3f(-6.0f, -2.0f, -6.0f);
     glEnd();
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

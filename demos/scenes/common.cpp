@@ -47,8 +47,7 @@ void drawCube(const float (*faceColors)[3], bool oneColor) {
     // Faces wound counter-clockwise seen from outside.
     static const float corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                         {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-    static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6},
-                                    {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
+    static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
     glBegin(GL_QUADS);
     for (int f = 0; f < 6; ++f) {
         const float* c = faceColors[oneColor ? 0 : f];

@@ -32,8 +32,8 @@ void allModes(int width, int height, bool smooth) {
         for (int i = 0; i < 8; ++i) {
             hue(i + cell);
             const float angle = static_cast<float>(i) * 0.785398f + 0.13f * static_cast<float>(cell);
-            const float radius = (modes[cell] == GL_TRIANGLE_STRIP || modes[cell] == GL_QUAD_STRIP)
-                                     ? 1.0f : (i % 2 ? 0.62f : 1.0f);
+            const float radius =
+                (modes[cell] == GL_TRIANGLE_STRIP || modes[cell] == GL_QUAD_STRIP) ? 1.0f : (i % 2 ? 0.62f : 1.0f);
             if (modes[cell] == GL_TRIANGLE_STRIP || modes[cell] == GL_QUAD_STRIP) {
                 glVertex2f(-1.0f + 0.29f * static_cast<float>(i), i % 2 ? 0.8f : -0.7f + 0.05f * static_cast<float>(i));
             } else {
@@ -129,7 +129,8 @@ void drawLinesAndPoints(int width, int height, int) {
         glBegin(GL_POINTS);
         for (int i = 0; i < 8; ++i) {
             hue(i * size);
-            glVertex2f(0.55f * w + 0.05f * w * static_cast<float>(i) + 0.3f, 0.8f * h + 0.04f * h * static_cast<float>(size) + 0.2f);
+            glVertex2f(0.55f * w + 0.05f * w * static_cast<float>(i) + 0.3f,
+                       0.8f * h + 0.04f * h * static_cast<float>(size) + 0.2f);
         }
         glEnd();
     }
@@ -137,7 +138,7 @@ void drawLinesAndPoints(int width, int height, int) {
 }
 
 void drawWireframeCube(int width, int height, int frame) {
-    static const float colors[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.25f, 0.35f, 0.95f},
+    static const float colors[6][3] = {{0.9f, 0.2f, 0.2f},   {0.2f, 0.8f, 0.3f},   {0.25f, 0.35f, 0.95f},
                                        {0.95f, 0.85f, 0.2f}, {0.85f, 0.3f, 0.85f}, {0.2f, 0.85f, 0.85f}};
     beginFrame(width, height, true, true);
     glShadeModel(GL_FLAT);

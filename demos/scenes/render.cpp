@@ -37,14 +37,17 @@ void GLAD_API_PTR trackMatrixMode(GLenum mode) {
 // orthographic one of about the same extent at the scenes' viewing distance.
 void orthographicInstead() { glOrtho(-3.2, 3.2, -2.4, 2.4, -100.0, 100.0); }
 void GLAD_API_PTR frustumOrOrtho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-    if (active.orthographic) orthographicInstead();
-    else sceneFrustum(l, r, b, t, n, f);
+    if (active.orthographic)
+        orthographicInstead();
+    else
+        sceneFrustum(l, r, b, t, n, f);
 }
 void GLAD_API_PTR multMatrixOrOrtho(const GLdouble* m) {
-    if (active.orthographic && matrixMode == GL_PROJECTION && m && m[11] == -1.0) orthographicInstead();
-    else sceneMultMatrixd(m);
+    if (active.orthographic && matrixMode == GL_PROJECTION && m && m[11] == -1.0)
+        orthographicInstead();
+    else
+        sceneMultMatrixd(m);
 }
-
 
 }  // namespace
 

@@ -18,7 +18,7 @@ std::optional<Backend> parseBackend(std::string_view name);
 struct Frame {
     reference::Image image;
     std::vector<std::uint32_t> depth;  // glReadPixels(GL_DEPTH_COMPONENT, GL_UNSIGNED_INT), bottom row first
-    mygl::Stats stats;  // MyGL's counters; zero for OSMesa
+    mygl::Stats stats;                 // MyGL's counters; zero for OSMesa
 };
 
 // Overrides what a scene asks for, as the course's keys did (B toggles culling).
@@ -34,7 +34,7 @@ void applyOverrides(const Overrides& overrides);
 
 // Creates a context of the backend, makes it current (loading the GL table), draws, reads back.
 // `methods` choose how MyGL rasterizes (OSMesa ignores them).
-Frame render(Backend backend, const Scene& scene, int width, int height, int frame,
-             const Overrides& overrides = {}, const glrenderer::Methods& methods = {});
+Frame render(Backend backend, const Scene& scene, int width, int height, int frame, const Overrides& overrides = {},
+             const glrenderer::Methods& methods = {});
 
 }  // namespace scenes

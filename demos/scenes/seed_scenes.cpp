@@ -12,7 +12,7 @@
 namespace scenes {
 namespace {
 
-constexpr float kFaceColors[6][3] = {{0.9f, 0.2f, 0.2f}, {0.2f, 0.8f, 0.3f}, {0.25f, 0.35f, 0.95f},
+constexpr float kFaceColors[6][3] = {{0.9f, 0.2f, 0.2f},   {0.2f, 0.8f, 0.3f},   {0.25f, 0.35f, 0.95f},
                                      {0.95f, 0.85f, 0.2f}, {0.85f, 0.3f, 0.85f}, {0.2f, 0.85f, 0.85f}};
 
 // The seed scenes color each face: flat shading, as the course drew them.
@@ -49,10 +49,9 @@ void concaveHexahedron(int width, int height, bool depth) {
     perspective(width, height);
     glRotatef(30.0f, 1.0f, 0.0f, 0.0f);
     glRotatef(-60.0f, 0.0f, 1.0f, 0.0f);
-    static const float corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+    static const float corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1},          {-1, 1, -1},
                                         {-1, -1, 1},  {1, -1, 1},  {0.3f, 0.4f, -0.7f}, {-1, 1, 1}};
-    static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6},
-                                    {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
+    static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
     glBegin(GL_TRIANGLES);  // each face as two triangles: the faces are not planar any more
     for (int f = 0; f < 6; ++f) {
         glColor3fv(kFaceColors[f]);

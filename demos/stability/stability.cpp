@@ -92,7 +92,8 @@ void tinyTriangles(int w, int h) {
     glBegin(GL_TRIANGLES);
     for (int i = 0; i < 400; ++i) {
         color(i);
-        const float x0 = u(random) * static_cast<float>(w), y0 = u(random) * static_cast<float>(h), s = 0.1f + 0.6f * u(random);
+        const float x0 = u(random) * static_cast<float>(w), y0 = u(random) * static_cast<float>(h),
+                    s = 0.1f + 0.6f * u(random);
         glVertex2f(x0, y0);
         glVertex2f(x0 + s, y0 + 0.2f * s);
         glVertex2f(x0 + 0.3f * s, y0 + s);
@@ -203,7 +204,7 @@ void concaveHexahedron(int w, int h) {
     glTranslatef(0, 0, -5.5f);
     glRotatef(30.0f, 1.0f, 0.0f, 0.0f);
     glRotatef(-60.0f, 0.0f, 1.0f, 0.0f);
-    static const float corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+    static const float corners[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1},          {-1, 1, -1},
                                         {-1, -1, 1},  {1, -1, 1},  {0.3f, 0.4f, -0.7f}, {-1, 1, 1}};
     static const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
     glBegin(GL_TRIANGLES);
@@ -234,7 +235,8 @@ void widePerspectiveCulling(int w, int h) {
             const float* n = faces[f];
             glNormal3fv(n);
             const float ux = n[2] != 0 ? 1.0f : 0.0f, uz = n[0];  // a tangent of the face
-            for (const auto& [s, t] : {std::pair{-0.5f, -0.5f}, std::pair{0.5f, -0.5f}, std::pair{0.5f, 0.5f}, std::pair{-0.5f, 0.5f}}) {
+            for (const auto& [s, t] :
+                 {std::pair{-0.5f, -0.5f}, std::pair{0.5f, -0.5f}, std::pair{0.5f, 0.5f}, std::pair{-0.5f, 0.5f}}) {
                 const float sx = n[0] != 0 ? 0.0f : s * ux * (n[2] > 0 ? 1.0f : -1.0f);
                 const float sz = n[0] != 0 ? -s * uz : 0.0f;
                 glVertex3f(0.5f * n[0] + sx, t, 0.5f * n[2] + sz);
@@ -244,7 +246,6 @@ void widePerspectiveCulling(int w, int h) {
         glPopMatrix();
     }
 }
-
 
 struct Frame {
     reference::Image image;
@@ -261,19 +262,24 @@ Frame currentFrame(std::vector<std::uint8_t> rgba) {
     return frame;
 }
 
-
 }  // namespace
 
 std::vector<Method> allMethods() {
     using M = glrenderer::Methods;
     return {
         {"exact", M{}},
-        {"scanline", M{RasterMethod::Scanline, Interpolation::PerspectiveCorrect, CullMethod::WindowArea, HiddenSurface::AsEnabled}},
-        {"bbox-float", M{RasterMethod::BoundingBoxFloat, Interpolation::PerspectiveCorrect, CullMethod::WindowArea, HiddenSurface::AsEnabled}},
-        {"screen-linear", M{RasterMethod::Exact, Interpolation::ScreenLinear, CullMethod::WindowArea, HiddenSurface::AsEnabled}},
-        {"view-space-cull", M{RasterMethod::Exact, Interpolation::PerspectiveCorrect, CullMethod::ViewSpaceNormal, HiddenSurface::AsEnabled}},
-        {"look-vector-cull", M{RasterMethod::Exact, Interpolation::PerspectiveCorrect, CullMethod::LookVector, HiddenSurface::AsEnabled}},
-        {"painters-sort", M{RasterMethod::Exact, Interpolation::PerspectiveCorrect, CullMethod::WindowArea, HiddenSurface::PaintersSort}},
+        {"scanline", M{RasterMethod::Scanline, Interpolation::PerspectiveCorrect, CullMethod::WindowArea,
+                       HiddenSurface::AsEnabled}},
+        {"bbox-float", M{RasterMethod::BoundingBoxFloat, Interpolation::PerspectiveCorrect, CullMethod::WindowArea,
+                         HiddenSurface::AsEnabled}},
+        {"screen-linear",
+         M{RasterMethod::Exact, Interpolation::ScreenLinear, CullMethod::WindowArea, HiddenSurface::AsEnabled}},
+        {"view-space-cull", M{RasterMethod::Exact, Interpolation::PerspectiveCorrect, CullMethod::ViewSpaceNormal,
+                              HiddenSurface::AsEnabled}},
+        {"look-vector-cull",
+         M{RasterMethod::Exact, Interpolation::PerspectiveCorrect, CullMethod::LookVector, HiddenSurface::AsEnabled}},
+        {"painters-sort", M{RasterMethod::Exact, Interpolation::PerspectiveCorrect, CullMethod::WindowArea,
+                            HiddenSurface::PaintersSort}},
     };
 }
 

@@ -1,6 +1,7 @@
 // mygl-viewer: the demo scenes in a window, as the course's framework showed them. F1..F9 pick
 // a scene, B culling, W wireframe, D depth test, P orthographic, Space MyGL/OSMesa, C the diff
-// view, arrows or a mouse drag animate; the title shows the backend, the culling state and the rasterized-triangle count.
+// view, arrows or a mouse drag animate; the title shows the backend, the culling state and the rasterized-triangle
+// count.
 #include <glad/gl.h>
 #include <mygl/context.h>
 #include <reference/compare.h>
@@ -39,8 +40,10 @@ int main(int argc, char** argv) {
     bool screenshotExact = false;  // --exact: no text overlay, so the window equals the frame
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--screenshot" && i + 1 < argc) screenshot = argv[++i];
-        else if (arg == "--exact") screenshotExact = true;
+        if (arg == "--screenshot" && i + 1 < argc)
+            screenshot = argv[++i];
+        else if (arg == "--exact")
+            screenshotExact = true;
         else if (arg == "--scene" && i + 1 < argc) {
             const std::string name = argv[++i];
             const auto& all = scenes::allScenes();
@@ -59,21 +62,29 @@ int main(int argc, char** argv) {
         if (!down) return;
         switch (key) {
         case 27: window.requestClose(); return;
-        case 'b': case 'B': v.culling = !v.culling.value_or(false); break;
-        case 'w': case 'W': v.wireframe = !v.wireframe; break;
-        case 'd': case 'D': v.depthTest = !v.depthTest.value_or(false); break;
+        case 'b':
+        case 'B': v.culling = !v.culling.value_or(false); break;
+        case 'w':
+        case 'W': v.wireframe = !v.wireframe; break;
+        case 'd':
+        case 'D': v.depthTest = !v.depthTest.value_or(false); break;
         case ' ': v.osmesa = !v.osmesa; break;
-        case 'c': case 'C': v.diff = !v.diff; break;
-        case 'p': case 'P': v.orthographic = !v.orthographic; break;
+        case 'c':
+        case 'C': v.diff = !v.diff; break;
+        case 'p':
+        case 'P': v.orthographic = !v.orthographic; break;
         default: return;
         }
         v.dirty = true;
     };
     callbacks.special = [&v](int key, int, int, bool down) {
         if (!down) return;
-        if (key >= 1 && key <= 9 && static_cast<std::size_t>(key - 1) < scenes::allScenes().size()) v.scene = static_cast<std::size_t>(key - 1);
-        else if (key == 100 || key == 103) --v.frame;  // left, down
-        else if (key == 101 || key == 102) ++v.frame;  // up, right
+        if (key >= 1 && key <= 9 && static_cast<std::size_t>(key - 1) < scenes::allScenes().size())
+            v.scene = static_cast<std::size_t>(key - 1);
+        else if (key == 100 || key == 103)
+            --v.frame;  // left, down
+        else if (key == 101 || key == 102)
+            ++v.frame;  // up, right
         v.dirty = true;
     };
     callbacks.motion = [&v, lastX = 0](int x, int, bool dragging) mutable {  // dragging animates, like the arrows
@@ -95,8 +106,10 @@ int main(int argc, char** argv) {
         const scenes::Scene& scene = scenes::allScenes()[v.scene];
         const scenes::Overrides overrides{v.culling, v.depthTest, v.wireframe, v.orthographic};
         auto draw = [&](bool onOsmesa) {
-            if (onOsmesa) theirs.makeCurrent();
-            else ours.makeCurrent();
+            if (onOsmesa)
+                theirs.makeCurrent();
+            else
+                ours.makeCurrent();
             scenes::applyOverrides(overrides);
             scene.draw(width, height, v.frame);
             return reference::Image{width, height, onOsmesa ? theirs.readPixels() : ours.readPixels()};

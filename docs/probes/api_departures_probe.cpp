@@ -20,14 +20,15 @@ int main() {
     glGetIntegerv(GL_VERTEX_ARRAY_SIZE, &size);
     glGetIntegerv(GL_VERTEX_ARRAY_TYPE, &type);
     glGetIntegerv(GL_VERTEX_ARRAY_STRIDE, &stride);
-    std::printf("glVertexPointer(2, GL_SHORT, -1): error 0x%x, size %d type 0x%x stride %d (spec: 3, GL_FLOAT, 0)\n", error, size,
-                type, stride);
+    std::printf("glVertexPointer(2, GL_SHORT, -1): error 0x%x, size %d type 0x%x stride %d (spec: 3, GL_FLOAT, 0)\n",
+                error, size, type, stride);
 
     static const GLuint map[3] = {3, 2, 1};
     glPixelMapuiv(GL_PIXEL_MAP_I_TO_I, 3, map);
     error = glGetError();
     glGetIntegerv(GL_PIXEL_MAP_I_TO_I_SIZE, &size);
-    std::printf("glPixelMapuiv(GL_PIXEL_MAP_I_TO_I, 3): error 0x%x, size %d (spec: GL_INVALID_VALUE, 1)\n", error, size);
+    std::printf("glPixelMapuiv(GL_PIXEL_MAP_I_TO_I, 3): error 0x%x, size %d (spec: GL_INVALID_VALUE, 1)\n", error,
+                size);
     glPixelMapuiv(GL_PIXEL_MAP_I_TO_G, 3, map);
     std::printf("glPixelMapuiv(GL_PIXEL_MAP_I_TO_G, 3): error 0x%x\n", glGetError());
 
@@ -52,8 +53,10 @@ int main() {
     glCallList(1);
     float index;
     glGetFloatv(GL_INDEX_CLEAR_VALUE, &index);
-    std::printf("list of glClearIndex(7.5), glPrioritizeTextures(-1): error 0x%x, GL_INDEX_CLEAR_VALUE %g (spec: "
-                "GL_INVALID_VALUE, 7)\n", glGetError(), index);
+    std::printf(
+        "list of glClearIndex(7.5), glPrioritizeTextures(-1): error 0x%x, GL_INDEX_CLEAR_VALUE %g (spec: "
+        "GL_INVALID_VALUE, 7)\n",
+        glGetError(), index);
     static const GLushort indices[3] = {0, 1, 2};
     glNewList(2, GL_COMPILE);
     glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, indices);
@@ -68,7 +71,8 @@ int main() {
     glCallList(3);
     GLint order;
     glGetMapiv(GL_MAP1_VERTEX_3, GL_ORDER, &order);
-    std::printf("list of glMap1f(stride 2 < 3): error 0x%x, order %d (spec: GL_INVALID_VALUE, 1)\n", glGetError(), order);
+    std::printf("list of glMap1f(stride 2 < 3): error 0x%x, order %d (spec: GL_INVALID_VALUE, 1)\n", glGetError(),
+                order);
     glNewList(4, GL_COMPILE);
     glNewList(0, GL_COMPILE);
     std::printf("glNewList(0) while compiling: error 0x%x\n", glGetError());

@@ -27,7 +27,12 @@ int main(void) {
     glRasterPos2f(-1, -1);
     glDrawPixels(256, 1, GL_RGBA, GL_UNSIGNED_BYTE, image);
 
-    signed char b[256]; short s[256]; int in[256]; unsigned ui[256]; unsigned short us[256]; float f[256];
+    signed char b[256];
+    short s[256];
+    int in[256];
+    unsigned ui[256];
+    unsigned short us[256];
+    float f[256];
     int broken[8] = {0};
     glReadPixels(0, 0, 256, 1, GL_RED, GL_BYTE, b);
     glReadPixels(0, 0, 256, 1, GL_RED, GL_SHORT, s);
@@ -47,7 +52,10 @@ int main(void) {
     report("colour bytes to unsigned short/int: x * 257, x * 16843009", broken[3] + broken[4]);
     report("colour bytes to float: x * (1 / 255.0f)", broken[5]);
 
-    float lum[256]; int lumInt[256]; unsigned lumUint[256]; unsigned char lumByte[256];
+    float lum[256];
+    int lumInt[256];
+    unsigned lumUint[256];
+    unsigned char lumByte[256];
     glReadPixels(0, 0, 256, 1, GL_LUMINANCE, GL_FLOAT, lum);
     glReadPixels(0, 0, 256, 1, GL_LUMINANCE, GL_INT, lumInt);
     glReadPixels(0, 0, 256, 1, GL_LUMINANCE, GL_UNSIGNED_INT, lumUint);
@@ -69,7 +77,13 @@ int main(void) {
     for (int k = 0; k <= 2000; k++) {
         glClearDepth(k / 2000.0);
         glClear(GL_DEPTH_BUFFER_BIT);
-        unsigned u, swapped; float z; unsigned char ub; signed char sb; short ss; unsigned short uss; int si;
+        unsigned u, swapped;
+        float z;
+        unsigned char ub;
+        signed char sb;
+        short ss;
+        unsigned short uss;
+        int si;
         glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &u);
         glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &z);
         glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, &ub);
@@ -97,7 +111,9 @@ int main(void) {
     glClear(GL_COLOR_BUFFER_BIT);
     glPixelTransferf(GL_RED_BIAS, -0.3f);
     glPixelTransferf(GL_GREEN_SCALE, 2.0f);
-    float rgba[4]; signed char rgbaByte[4]; float la[2];
+    float rgba[4];
+    signed char rgbaByte[4];
+    float la[2];
     glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, rgba);
     glReadPixels(0, 0, 1, 1, GL_RGBA, GL_BYTE, rgbaByte);
     glReadPixels(0, 0, 1, 1, GL_LUMINANCE_ALPHA, GL_FLOAT, la);

@@ -33,16 +33,25 @@ static unsigned depth24(float z) { return (unsigned)nearbyintf(clampUnit(z) * 16
 static unsigned resampled(unsigned z) { return depth24((float)z * (1.0f / 16777215.0f)); }
 /* A 32-bit unorm texel sampled: its top 23 bits over 2^23 - 1. */
 static float unorm32(uint32_t t) {
-    union { uint32_t u; float f; } v = {(t >> 9) | 0x3F800000u};
+    union {
+        uint32_t u;
+        float f;
+    } v = {(t >> 9) | 0x3F800000u};
     return (v.f - 1.0f) * (float)(8388608.0 / 8388607.0);
 }
 
 static float depthFloat(const void* image, int i, GLenum type) {
     switch (type) {
     case GL_UNSIGNED_BYTE: return ((const GLubyte*)image)[i] / 255.0f;
-    case GL_BYTE: { int b = ((const GLbyte*)image)[i]; return b == 0 ? 0.0f : (2.0f * b + 1.0f) * (1.0f / 255.0f); }
+    case GL_BYTE: {
+        int b = ((const GLbyte*)image)[i];
+        return b == 0 ? 0.0f : (2.0f * b + 1.0f) * (1.0f / 255.0f);
+    }
     case GL_UNSIGNED_SHORT: return ((const GLushort*)image)[i] * (1.0f / 65535.0f);
-    case GL_SHORT: { int s = ((const GLshort*)image)[i]; return s == 0 ? 0.0f : (2.0f * s + 1.0f) * (1.0f / 65535.0f); }
+    case GL_SHORT: {
+        int s = ((const GLshort*)image)[i];
+        return s == 0 ? 0.0f : (2.0f * s + 1.0f) * (1.0f / 65535.0f);
+    }
     case GL_UNSIGNED_INT: return (float)(((const GLuint*)image)[i] * (1.0 / 4294967295.0));
     case GL_INT: return (float)((2.0f * (float)((const GLint*)image)[i] + 1.0f) * (1.0 / 4294967294.0));
     default: return ((const GLfloat*)image)[i];
@@ -63,7 +72,10 @@ static unsigned expectedDepth(const void* image, int i, GLenum type, float scale
     }
     case GL_UNSIGNED_INT: {
         uint32_t t = ((const GLuint*)image)[i];
-        if (transfer) { double wide = (double)z * 4294967295.0; t = wide >= 4294967295.0 ? 0xFFFFFFFFu : (uint32_t)wide; }
+        if (transfer) {
+            double wide = (double)z * 4294967295.0;
+            t = wide >= 4294967295.0 ? 0xFFFFFFFFu : (uint32_t)wide;
+        }
         return depth24(unorm32(t));
     }
     case GL_FLOAT: return depth24(z);
@@ -75,14 +87,23 @@ static void fillImage(void* image, GLenum type) {
     for (int i = 0; i < W; i++) {
         uint32_t r = ((uint32_t)rand() << 16) ^ (uint32_t)rand() ^ ((uint32_t)rand() << 30);
         switch (type) {
-        case GL_UNSIGNED_BYTE: case GL_BYTE: ((GLubyte*)image)[i] = (GLubyte)(i < 256 ? i : r); break;
-        case GL_UNSIGNED_SHORT: case GL_SHORT:
-            ((GLushort*)image)[i] = (GLushort)(i < 64 ? i : i < 128 ? 0xFFFF - i : i < 192 ? 0x7FFF - i + 128 : r); break;
-        case GL_UNSIGNED_INT: case GL_INT:
-            ((GLuint*)image)[i] = i < 64 ? (uint32_t)i << 8 : i < 128 ? 0xFFFFFFFFu - ((uint32_t)i << 20) :
-                                  i < 160 ? 0x7FFFFFFFu - (uint32_t)i * 97 : r; break;
+        case GL_UNSIGNED_BYTE:
+        case GL_BYTE: ((GLubyte*)image)[i] = (GLubyte)(i < 256 ? i : r); break;
+        case GL_UNSIGNED_SHORT:
+        case GL_SHORT:
+            ((GLushort*)image)[i] = (GLushort)(i < 64 ? i : i < 128 ? 0xFFFF - i : i < 192 ? 0x7FFF - i + 128 : r);
+            break;
+        case GL_UNSIGNED_INT:
+        case GL_INT:
+            ((GLuint*)image)[i] = i < 64    ? (uint32_t)i << 8
+                                  : i < 128 ? 0xFFFFFFFFu - ((uint32_t)i << 20)
+                                  : i < 160 ? 0x7FFFFFFFu - (uint32_t)i * 97
+                                            : r;
+            break;
         default:
-            ((GLfloat*)image)[i] = i < 64 ? (i - 8) / 48.0f : i < 96 ? 1.0f / (float)(i - 63) : (float)r / 4294967295.0f;
+            ((GLfloat*)image)[i] = i < 64   ? (i - 8) / 48.0f
+                                   : i < 96 ? 1.0f / (float)(i - 63)
+                                            : (float)r / 4294967295.0f;
         }
     }
 }
@@ -95,7 +116,8 @@ int main(void) {
     glOrtho(0, W, 0, 4, -1, 1);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
-    static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT, GL_UNSIGNED_INT, GL_INT, GL_FLOAT};
+    static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                                   GL_UNSIGNED_INT,  GL_INT,  GL_FLOAT};
     static const char* names[] = {"ubyte", "byte", "ushort", "short", "uint", "int", "float"};
     static const float transfers[][2] = {{1, 0}, {0.5f, 0.25f}, {2, -0.5f}, {-1, 1}};
     static uint32_t image[W];
@@ -112,7 +134,8 @@ int main(void) {
             glRasterPos2i(0, 0);
             glDrawPixels(W, 1, GL_DEPTH_COMPONENT, types[t], image);
             int broken = 0;
-            for (int i = 0; i < W; i++) broken += depthAt(i) != expectedDepth(image, i, types[t], transfers[k][0], transfers[k][1]);
+            for (int i = 0; i < W; i++)
+                broken += depthAt(i) != expectedDepth(image, i, types[t], transfers[k][0], transfers[k][1]);
             snprintf(rule, sizeof rule, "depth image, %s, scale %g bias %g: texture of the type, sampled", names[t],
                      transfers[k][0], transfers[k][1]);
             report(rule, broken);
@@ -196,7 +219,8 @@ int main(void) {
         int broken = 0;
         for (int i = 0; i < W; i++) {
             broken += c[4 * i] != (GLubyte)lrintf(r[indices[i] & 3] * 255.0f) ||
-                      c[4 * i + 1] != (GLubyte)lrintf(g[indices[i] & 1] * 255.0f) || c[4 * i + 2] != 0 || c[4 * i + 3] != 0;
+                      c[4 * i + 1] != (GLubyte)lrintf(g[indices[i] & 1] * 255.0f) || c[4 * i + 2] != 0 ||
+                      c[4 * i + 3] != 0;
         }
         report("colour-index image: maps of size n at index & (n - 1), no offset", broken);
     }

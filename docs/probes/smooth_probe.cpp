@@ -16,8 +16,10 @@ static void printAlpha(const char* title) {
     for (int y = kHeight - 1; y >= 0; --y) {
         for (int x = 0; x < kWidth; ++x) {
             const GLubyte a = rgba[(y * kWidth + x) * 4 + 3];
-            if (a == 7) std::printf("   .");
-            else std::printf(" %3d", a);
+            if (a == 7)
+                std::printf("   .");
+            else
+                std::printf(" %3d", a);
         }
         std::printf("\n");
     }
@@ -32,11 +34,14 @@ int main() {
     std::vector<unsigned char> fb(kWidth * kHeight * 4);
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 16, nullptr);
     OSMesaMakeCurrent(ctx, fb.data(), GL_UNSIGNED_BYTE, kWidth, kHeight);
-    const GLenum names[] = {GL_POINT_SIZE_RANGE, GL_POINT_SIZE_GRANULARITY, GL_LINE_WIDTH_RANGE,
-                            GL_LINE_WIDTH_GRANULARITY, 0x846D /* GL_ALIASED_POINT_SIZE_RANGE */,
+    const GLenum names[] = {GL_POINT_SIZE_RANGE,
+                            GL_POINT_SIZE_GRANULARITY,
+                            GL_LINE_WIDTH_RANGE,
+                            GL_LINE_WIDTH_GRANULARITY,
+                            0x846D /* GL_ALIASED_POINT_SIZE_RANGE */,
                             0x846E /* GL_ALIASED_LINE_WIDTH_RANGE */};
-    const char* labels[] = {"POINT_SIZE_RANGE (= SMOOTH_)", "POINT_SIZE_GRANULARITY", "LINE_WIDTH_RANGE (= SMOOTH_)",
-                            "LINE_WIDTH_GRANULARITY", "ALIASED_POINT_SIZE_RANGE", "ALIASED_LINE_WIDTH_RANGE"};
+    const char* labels[] = {"POINT_SIZE_RANGE (= SMOOTH_)", "POINT_SIZE_GRANULARITY",   "LINE_WIDTH_RANGE (= SMOOTH_)",
+                            "LINE_WIDTH_GRANULARITY",       "ALIASED_POINT_SIZE_RANGE", "ALIASED_LINE_WIDTH_RANGE"};
     for (int i = 0; i < 6; ++i) {
         GLfloat v[2] = {-1, -1};
         glGetFloatv(names[i], v);

@@ -12,15 +12,13 @@
 #define H 37
 static unsigned char buf[W * H * 4];
 
-static int lit(int y)
-{
+static int lit(int y) {
     int x, n = 0;
     for (x = 0; x < W; x++) n += buf[(y * W + x) * 4] != 0;
     return n;
 }
 
-int main(void)
-{
+int main(void) {
     OSMesaContext c = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
     GLubyte pattern[128], back[128];
     GLint v;
@@ -31,8 +29,8 @@ int main(void)
     glLoadIdentity();
     glOrtho(0, W, 0, H, -1, 1);
     memset(pattern, 0, sizeof pattern);
-    pattern[0] = 0x80;      /* row 0: x = 0 */
-    pattern[4] = 0x01;      /* row 1: x = 7 */
+    pattern[0] = 0x80;         /* row 0: x = 0 */
+    pattern[4] = 0x01;         /* row 1: x = 7 */
     pattern[4 * 2 + 3] = 0x01; /* row 2: x = 31 */
     glPolygonStipple(pattern);
     glEnable(GL_POLYGON_STIPPLE);

@@ -1,8 +1,8 @@
 /* Probe: how llvmpipe filters two unorm8 texels under GL_LINEAR (docs/reference-rules.md,
- * Textures). A 2 x 1 texture (R = 10 and 138: a half at every odd weight) over a 256 x 1 window in REPLACE: pixel x samples
- * s = (x + 0.5) / 256, so the 8.8 fixed-point coordinate round(s * 2 * 256) - 128 takes every
- * odd weight. Counts the pixels each candidate lerp predicts exactly.
- * Build: cc texture_lerp_probe.c $(pkg-config --cflags --libs osmesa) -o probe */
+ * Textures). A 2 x 1 texture (R = 10 and 138: a half at every odd weight) over a 256 x 1 window in REPLACE: pixel x
+ * samples s = (x + 0.5) / 256, so the 8.8 fixed-point coordinate round(s * 2 * 256) - 128 takes every odd weight.
+ * Counts the pixels each candidate lerp predicts exactly. Build: cc texture_lerp_probe.c $(pkg-config --cflags --libs
+ * osmesa) -o probe */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <math.h>
@@ -23,10 +23,14 @@ int main(void) {
     glEnable(GL_TEXTURE_2D);
     glViewport(0, 0, W, 1);
     glBegin(GL_QUADS);
-    glTexCoord2f(0, 0); glVertex2f(-1, -1);
-    glTexCoord2f(1, 0); glVertex2f(1, -1);
-    glTexCoord2f(1, 1); glVertex2f(1, 1);
-    glTexCoord2f(0, 1); glVertex2f(-1, 1);
+    glTexCoord2f(0, 0);
+    glVertex2f(-1, -1);
+    glTexCoord2f(1, 0);
+    glVertex2f(1, -1);
+    glTexCoord2f(1, 1);
+    glVertex2f(1, 1);
+    glTexCoord2f(0, 1);
+    glVertex2f(-1, 1);
     glEnd();
     glFinish();
     for (x = 0; x < W; ++x) {

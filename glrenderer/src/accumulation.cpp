@@ -18,11 +18,14 @@ std::int16_t toWord(float value) {
 
 // A 16-bit sum that wraps, as the reference's `acc[i] += x` on shorts.
 std::int16_t wrappingAdd(std::int16_t a, std::int16_t b) {
-    return static_cast<std::int16_t>(static_cast<std::uint16_t>(static_cast<std::uint16_t>(a) + static_cast<std::uint16_t>(b)));
+    return static_cast<std::int16_t>(
+        static_cast<std::uint16_t>(static_cast<std::uint16_t>(a) + static_cast<std::uint16_t>(b)));
 }
 
 // GL's float to signed 16-bit for the clear value (Mesa's FLOAT_TO_SHORT).
-std::int16_t clearWord(float value) { return static_cast<std::int16_t>((static_cast<std::int32_t>(65535.0f * value) - 1) / 2); }
+std::int16_t clearWord(float value) {
+    return static_cast<std::int16_t>((static_cast<std::int32_t>(65535.0f * value) - 1) / 2);
+}
 
 std::uint8_t channel(std::uint32_t rgba, int c) { return static_cast<std::uint8_t>(rgba >> (8 * c)); }
 
@@ -38,16 +41,20 @@ void forEachPixel(const Framebuffer& fb, const ScissorBox& scissor, Visit&& visi
         y1 = static_cast<int>(std::clamp<std::int64_t>(std::int64_t{scissor.y} + scissor.height, y0, y1));
     }
     for (int y = y0; y < y1; ++y) {
-        for (int x = x0; x < x1; ++x) visit(static_cast<std::size_t>(y) * static_cast<std::size_t>(fb.width()) + static_cast<std::size_t>(x));
+        for (int x = x0; x < x1; ++x)
+            visit(static_cast<std::size_t>(y) * static_cast<std::size_t>(fb.width()) + static_cast<std::size_t>(x));
     }
 }
 
 }  // namespace
 
 void clearAccum(Framebuffer& fb, const ScissorBox& scissor, const std::array<float, 4>& value) {
-    const std::array<std::int16_t, 4> words{clearWord(value[0]), clearWord(value[1]), clearWord(value[2]), clearWord(value[3])};
+    const std::array<std::int16_t, 4> words{clearWord(value[0]), clearWord(value[1]), clearWord(value[2]),
+                                            clearWord(value[3])};
     const std::span<std::int16_t> accum = fb.accum();
-    forEachPixel(fb, scissor, [&](std::size_t i) { std::copy(words.begin(), words.end(), accum.begin() + static_cast<std::ptrdiff_t>(4 * i)); });
+    forEachPixel(fb, scissor, [&](std::size_t i) {
+        std::copy(words.begin(), words.end(), accum.begin() + static_cast<std::ptrdiff_t>(4 * i));
+    });
 }
 
 void accumulate(Framebuffer& fb, const ScissorBox& scissor, std::uint32_t colorMask, AccumOp op, float value) {
@@ -58,7 +65,8 @@ void accumulate(Framebuffer& fb, const ScissorBox& scissor, std::uint32_t colorM
     switch (op) {
     case AccumOp::Load:
         forEachPixel(fb, scissor, [&](std::size_t i) {
-            for (int c = 0; c < 4; ++c) accum[4 * i + c] = toWord(static_cast<float>(channel(color[i], c)) / 255.0f * scale);
+            for (int c = 0; c < 4; ++c)
+                accum[4 * i + c] = toWord(static_cast<float>(channel(color[i], c)) / 255.0f * scale);
         });
         break;
     case AccumOp::Accum:

@@ -50,7 +50,7 @@ struct Batch : BatchHeader {
 
 // A batch's place in its chunk.
 struct BatchEntry : BatchHeader {
-    std::size_t first = 0, count = 0;  // its vertices in the chunk
+    std::size_t first = 0, count = 0;            // its vertices in the chunk
     std::size_t firstIndex = 0, indexCount = 0;  // its indices in the chunk (none: not indexed)
 };
 

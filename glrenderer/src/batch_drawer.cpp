@@ -72,7 +72,8 @@ void BatchDrawer::draw(BatchChunk& chunk) {
 void BatchDrawer::select(const SubmittedBatch& submitted) {
     FeedbackOutput feedback(feedback_, feedbackLineReset_, framebuffer_.height());
     FeedbackOutput* output = submitted.state.feedback ? &feedback : nullptr;
-    if (output && isTriangleMode(submitted.mode) && !BatchSetup::filled(submitted.state)) return feedbackUnfilled(submitted, feedback);
+    if (output && isTriangleMode(submitted.mode) && !BatchSetup::filled(submitted.state))
+        return feedbackUnfilled(submitted, feedback);
     if (isTriangleMode(submitted.mode)) return setup_.select(submitted, hits_, output, stats_);
     selectPointsAndLines(submitted.mode, setup_.stage(submitted).vertices, submitted.state, framebuffer_.height(),
                          hits_, output);
@@ -84,12 +85,11 @@ void BatchDrawer::select(const SubmittedBatch& submitted) {
 void BatchDrawer::feedbackUnfilled(const SubmittedBatch& submitted, FeedbackOutput& feedback) {
     const Batch batch = setup_.stage(submitted);
     const bool flat = batch.state.shadeModel == ShadeModel::Flat;
-    const UnfilledTarget target{
-        [&](WindowVertex v0, WindowVertex v1, WindowVertex v2, const glm::vec4& flatColor) {
-            if (flat) v0.color = v1.color = v2.color = flatColor;
-            feedback.triangle(v0, v1, v2);
-        },
-        [] {}, &feedback};
+    const UnfilledTarget target{[&](WindowVertex v0, WindowVertex v1, WindowVertex v2, const glm::vec4& flatColor) {
+                                    if (flat) v0.color = v1.color = v2.color = flatColor;
+                                    feedback.triangle(v0, v1, v2);
+                                },
+                                [] {}, &feedback};
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
                       ViewportTransform(batch.state, framebuffer_.height()), batch.state, anyEdgeShown(batch),
                       framebuffer_, stats_, target);

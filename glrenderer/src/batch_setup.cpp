@@ -27,8 +27,8 @@ static_assert(offsetof(WindowVertex, invW) == 12 && offsetof(WindowVertex, color
 __m128 usableLanes(const WindowVertex& v) {
     const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
     const __m128 infinity = _mm_set1_ps(std::numeric_limits<float>::infinity());
-    const __m128 limits = _mm_setr_ps(kMaxWindowCoordinate, kMaxWindowCoordinate, std::numeric_limits<float>::infinity(),
-                                      std::numeric_limits<float>::infinity());
+    const __m128 limits = _mm_setr_ps(kMaxWindowCoordinate, kMaxWindowCoordinate,
+                                      std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
     return _mm_and_ps(_mm_cmplt_ps(_mm_and_ps(_mm_loadu_ps(&v.x), magnitude), limits),
                       _mm_cmplt_ps(_mm_and_ps(_mm_loadu_ps(&v.color.x), magnitude), infinity));
 }
@@ -102,19 +102,27 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
         for (std::uint32_t i = 0; i < batch.indices.size(); ++i) anyOutside |= outcodeAt(i);
     }
     const ViewportTransform viewport(batch.state, framebuffer_.height());
-    const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
-                           batch.quadSplit == QuadSplit::V1V3;
+    const bool v1v3Quads =
+        (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) || batch.quadSplit == QuadSplit::V1V3;
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
-    const PixelRect drawable = drawableRect(batch.state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
+    const PixelRect drawable =
+        drawableRect(batch.state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
     // The vertices first .. first + count, on the direct path or through the draw module.
     const auto decompose = [&](std::uint32_t first, std::uint32_t count, Outcode outside) {
         const DecompositionPath path = outside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
-        const Call call{batch, batch.vertices, assembled, &target, stats, &fragments,
+        const Call call{batch,
+                        batch.vertices,
+                        assembled,
+                        &target,
+                        stats,
+                        &fragments,
                         path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
                             batch.methods.culling == CullMethod::WindowArea,
-                        nullptr, nullptr, drawable};
+                        nullptr,
+                        nullptr,
+                        drawable};
         decomposeTriangles(batch.mode, count, path, v1v3Quads, [&](TriangleIndices t) {
             for (std::uint32_t& v : t.v) v = indexed ? batch.indices[v + first] : v + first;
             setUpTriangle(call, t, viewport);
@@ -138,12 +146,19 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
 void BatchSetup::select(const SubmittedBatch& batch, HitRange& hits, FeedbackOutput* feedback, Stats& stats) {
     run(batch);
     const ViewportTransform viewport(batch.state, framebuffer_.height());
-    const bool v1v3Quads = (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) ||
-                           batch.quadSplit == QuadSplit::V1V3;
+    const bool v1v3Quads =
+        (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) || batch.quadSplit == QuadSplit::V1V3;
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
-    const Call call{batch, batch.vertices, assembled, nullptr, stats, nullptr, batch.state.cullEnabled,
-                    feedback ? nullptr : &hits, feedback};
+    const Call call{batch,
+                    batch.vertices,
+                    assembled,
+                    nullptr,
+                    stats,
+                    nullptr,
+                    batch.state.cullEnabled,
+                    feedback ? nullptr : &hits,
+                    feedback};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), DecompositionPath::DrawModule,
                        v1v3Quads, [&](const TriangleIndices& t) { setUpTriangle(call, t, viewport); });
 }
@@ -155,8 +170,8 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     ++call.stats.triangles;
     if (batch.methods.culling != CullMethod::WindowArea && batch.state.cullEnabled) {
         const auto& eye = call.assembled;
-        const Facing facing = seedFacing(batch.methods.culling, eye[t.v[0]], eye[t.v[1]], eye[t.v[2]],
-                                         batch.state.frontFaceCCW);
+        const Facing facing =
+            seedFacing(batch.methods.culling, eye[t.v[0]], eye[t.v[1]], eye[t.v[2]], batch.state.frontFaceCCW);
         if (facing != Facing::ZeroArea && isCulled(batch.state, facing)) {  // edge-on: the seeds keep it
             ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
             return;
@@ -229,14 +244,15 @@ void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
     const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
-    const PixelRect drawable = drawableRect(batch.state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
+    const PixelRect drawable =
+        drawableRect(batch.state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
     setUpTriangle(Call{batch, {}, {}, &target, stats, &fragments, false, nullptr, nullptr, drawable}, v0, v1, v2,
                   flatColor);
 }
 
 // Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.
-void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1,
-                               const WindowVertex& v2, const glm::vec4& flatColor) {
+void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                               const glm::vec4& flatColor) {
     const DrawState& state = call.batch.state;
     const Methods& methods = call.batch.methods;
     if (!areUsable(v0, v1, v2)) {

@@ -60,27 +60,29 @@ private:
         const BatchHeader& batch;
         std::span<const Vertex> vertices;       // as the program gave them
         std::span<const ClipVertex> assembled;  // only when the culling method needs eye space
-        TriangleTarget* target;  // null in GL_SELECT
+        TriangleTarget* target;                 // null in GL_SELECT
         Stats& stats;
         const FragmentChoice* fragments;  // the batch's, chosen once; null in GL_SELECT
         // The batch goes through the reference's draw module with culling on: its cull stage
         // decides first, by drawModuleFacing.
         bool drawModuleCulls = false;
-        HitRange* hits = nullptr;  // GL_SELECT
+        HitRange* hits = nullptr;            // GL_SELECT
         FeedbackOutput* feedback = nullptr;  // GL_FEEDBACK
-        PixelRect drawable{};  // drawableRect of the draw, when drawing
+        PixelRect drawable{};                // drawableRect of the draw, when drawing
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     // A triangle's window vertices (by address: most triangles take them as they are) with the
     // records they came from (Vertex or ClipVertex), for their back colours, and its provoking
     // vertex, for its flat colours.
     template <class Record>
-    [[gnu::always_inline]] inline void setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
-                            std::array<const Record*, 3> records, const Vertex& provoking);
+    [[gnu::always_inline]] inline void setUpSidedTriangle(const Call& call,
+                                                          const std::array<const WindowVertex*, 3>& window,
+                                                          std::array<const Record*, 3> records,
+                                                          const Vertex& provoking);
     Outcode run(const SubmittedBatch& batch);
     // (Inlined into the callers: it is most of the work per triangle, called once each.)
-    [[gnu::always_inline]] inline void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
-                       const glm::vec4& flatColor);
+    [[gnu::always_inline]] inline void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1,
+                                                     const WindowVertex& v2, const glm::vec4& flatColor);
 
     const Framebuffer& framebuffer_;  // for its size only
     VertexStage vertexStage_;

@@ -6,8 +6,7 @@ namespace glrenderer {
 
 BatchThread::BatchThread(BatchDrawer& drawer, const Framebuffer& framebuffer,
                          std::vector<std::unique_ptr<BatchChunk>> chunks)
-    : drawer_(drawer), setup_(framebuffer, kChunkVertices), writer_(drawer.triangleArena()),
-      free_(std::move(chunks)) {
+    : drawer_(drawer), setup_(framebuffer, kChunkVertices), writer_(drawer.triangleArena()), free_(std::move(chunks)) {
     posted_.reserve(free_.size() + 1);
     free_.reserve(free_.size() + 1);
     thread_ = std::thread([this] { run(); });

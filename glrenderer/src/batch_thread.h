@@ -60,8 +60,8 @@ private:
     bool waiting_ = false;  // someone is in wait()
     bool stopping_ = false;
     const BatchChunk* settingUp_ = nullptr;  // queued, being set up by wait()'s caller
-    std::atomic<bool> needed_{false};  // a chunk was posted or someone waits: stop drawing tiles
-    std::thread thread_;  // last: starts once the members above exist
+    std::atomic<bool> needed_{false};        // a chunk was posted or someone waits: stop drawing tiles
+    std::thread thread_;                     // last: starts once the members above exist
 };
 
 }  // namespace glrenderer

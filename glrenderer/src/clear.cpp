@@ -30,7 +30,8 @@ void Pipeline::clear(const ClearRequest& request) {
     // Each buffer's bits under its mask take the value's.
     const auto fill = [&](std::span<std::uint32_t> pixels, std::uint32_t value, std::uint32_t mask) {
         for (int row = rect.minY; row <= rect.maxY; ++row) {
-            const std::size_t first = static_cast<std::size_t>(fb.height() - 1 - row) * static_cast<std::size_t>(fb.width());
+            const std::size_t first =
+                static_cast<std::size_t>(fb.height() - 1 - row) * static_cast<std::size_t>(fb.width());
             for (int x = rect.minX; x <= rect.maxX; ++x) {
                 std::uint32_t& pixel = pixels[first + static_cast<std::size_t>(x)];
                 pixel = (pixel & ~mask) | (value & mask);

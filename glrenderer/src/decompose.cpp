@@ -2,9 +2,7 @@
 
 namespace glrenderer {
 
-bool isTriangleMode(PrimitiveMode mode) {
-    return mode >= PrimitiveMode::Triangles;
-}
+bool isTriangleMode(PrimitiveMode mode) { return mode >= PrimitiveMode::Triangles; }
 
 std::size_t usableVertexCount(PrimitiveMode mode, std::size_t count) {
     switch (mode) {

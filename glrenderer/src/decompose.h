@@ -29,16 +29,17 @@ bool isTriangleMode(PrimitiveMode mode);
 // for all vertices it splits flat quads like smooth ones, measured on the depth buffer), and
 // for quads it has converted into triangles before drawing (QuadSplit::V1V3).
 template <class Emit>
-void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPath path, bool v1v3Quads,
-                        Emit&& emit) {
+void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPath path, bool v1v3Quads, Emit&& emit) {
     switch (mode) {
     case PrimitiveMode::Triangles:
         for (std::uint32_t i = 0; i + 2 < count; i += 3) emit(TriangleIndices{{i, i + 1, i + 2}});
         break;
     case PrimitiveMode::TriangleStrip:
         for (std::uint32_t i = 0; i + 2 < count; ++i) {
-            if (i % 2 == 0) emit(TriangleIndices{{i, i + 1, i + 2}});
-            else emit(TriangleIndices{{i + 1, i, i + 2}});
+            if (i % 2 == 0)
+                emit(TriangleIndices{{i, i + 1, i + 2}});
+            else
+                emit(TriangleIndices{{i + 1, i, i + 2}});
         }
         break;
     case PrimitiveMode::TriangleFan:
@@ -64,16 +65,17 @@ void decomposeTriangles(PrimitiveMode mode, std::uint32_t count, DecompositionPa
         // strip folds over itself without the depth test).
         for (std::uint32_t i = 0; i + 3 < count; i += 2) {
             const TriangleIndices first{{i, i + 1, i + 3}}, second{{i + 2, i, i + 3}};
-            if (path == DecompositionPath::Direct) emit(first), emit(second);
-            else emit(second), emit(first);
+            if (path == DecompositionPath::Direct)
+                emit(first), emit(second);
+            else
+                emit(second), emit(first);
         }
         break;
     case PrimitiveMode::Polygon:
         // A fan around v0 with v0 last: polygons take their flat color from the first vertex.
         for (std::uint32_t i = 1; i + 1 < count; ++i) emit(TriangleIndices{{i, i + 1, 0}});
         break;
-    default:
-        break;
+    default: break;
     }
 }
 

@@ -58,7 +58,8 @@ FragmentOps stencilImageOps(const FragmentOps& ops) {
 // alpha, stencil, blending, logic op, masks) with the whole window as the viewport, depth range
 // [0, 1], the image replacing the colour (or giving depths or stencil values: `use`), nothing
 // culled or offset.
-DrawState quadState(const DrawState& state, int width, int height, std::shared_ptr<const Texture> texture, TexelUse use) {
+DrawState quadState(const DrawState& state, int width, int height, std::shared_ptr<const Texture> texture,
+                    TexelUse use) {
     DrawState quad;
     quad.shadeModel = ShadeModel::Flat;
     quad.viewport = {0, 0, width, height};
@@ -87,7 +88,8 @@ constexpr VertexTransform kQuadTransform{kIdentity, Matrix{}};
 
 void Pipeline::drawPixels(const DrawState& state, const PixelImage& image) {
     const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
-    if (image.width <= 0 || image.height <= 0 || (image.colors.size() != pixels && image.words.size() != pixels)) return;
+    if (image.width <= 0 || image.height <= 0 || (image.colors.size() != pixels && image.words.size() != pixels))
+        return;
     const float left = static_cast<float>(image.x), bottom = static_cast<float>(image.y);
     const float right = left + static_cast<float>(image.width) * image.zoomX;
     const float top = bottom + static_cast<float>(image.height) * image.zoomY;
@@ -118,7 +120,8 @@ void Pipeline::drawPixels(const DrawState& state, const PixelImage& image) {
     const Stats counted = submitted_;
     setTransform(kQuadTransform);
     setUnlit();
-    submit(quadState(state, fb.width(), fb.height(), imageTexture(image), image.use), PrimitiveMode::TriangleFan, vertices);
+    submit(quadState(state, fb.width(), fb.height(), imageTexture(image), image.use), PrimitiveMode::TriangleFan,
+           vertices);
     endBatch();
     setTransform(transform);
     batch_->lighting = lighting;

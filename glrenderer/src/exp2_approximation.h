@@ -4,8 +4,11 @@
 // with LLVM's fmuladd (fused on CPUs with FMA). Written once over a lane type L (simd_*.h).
 namespace glrenderer {
 
-inline constexpr double kExp2Coefficients[] = {1.0, 0.693153073200168932794, 0.240153617044375388211,
-                                               0.0558263180532956664775, 0.00898934009049466391101,
+inline constexpr double kExp2Coefficients[] = {1.0,
+                                               0.693153073200168932794,
+                                               0.240153617044375388211,
+                                               0.0558263180532956664775,
+                                               0.00898934009049466391101,
                                                0.00187757667519147912699};
 
 template <class L>

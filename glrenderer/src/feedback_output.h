@@ -10,13 +10,16 @@ public:
     // `lineResetPending` outlives the output: the reference's feedback stage keeps its flag from
     // one draw to the next.
     FeedbackOutput(FeedbackPrimitives& primitives, bool& lineResetPending, int framebufferHeight)
-        : primitives_(primitives), lineResetPending_(lineResetPending), height_(static_cast<float>(framebufferHeight)) {}
+        : primitives_(primitives),
+          lineResetPending_(lineResetPending),
+          height_(static_cast<float>(framebufferHeight)) {}
 
     void point(const WindowVertex& v) { add(FeedbackPrimitive::Kind::Point, {convert(v)}); }
     // The next line is a GL_LINE_RESET_TOKEN (only the unfilled stage restarts the stipple).
     void resetLineStipple() { lineResetPending_ = true; }
     void line(const WindowVertex& a, const WindowVertex& b) {
-        add(lineResetPending_ ? FeedbackPrimitive::Kind::LineReset : FeedbackPrimitive::Kind::Line, {convert(a), convert(b)});
+        add(lineResetPending_ ? FeedbackPrimitive::Kind::LineReset : FeedbackPrimitive::Kind::Line,
+            {convert(a), convert(b)});
         lineResetPending_ = false;
     }
     void triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c) {

@@ -6,7 +6,8 @@
 
 namespace glrenderer {
 
-FogState makeFogState(FogMode mode, FogDistance distance, float density, float start, float end, const glm::vec4& color) {
+FogState makeFogState(FogMode mode, FogDistance distance, float density, float start, float end,
+                      const glm::vec4& color) {
     FogState fog;
     fog.mode = mode;
     fog.distance = distance;
@@ -14,8 +15,8 @@ FogState makeFogState(FogMode mode, FogDistance distance, float density, float s
     // as a guard against the division), the exponential ones in double, then rounded.
     fog.linearScale = end == start ? 1.0f : -1.0f / (end - start);
     fog.linearBias = end * -fog.linearScale;
-    constexpr double kLog2E = 1.44269504088896340736;          // 1 / ln 2
-    constexpr double kOneOverSqrtLn2 = 1.201122408786449815;   // 1 / sqrt(ln 2)
+    constexpr double kLog2E = 1.44269504088896340736;         // 1 / ln 2
+    constexpr double kOneOverSqrtLn2 = 1.201122408786449815;  // 1 / sqrt(ln 2)
     fog.expScale = static_cast<float>(density * (mode == FogMode::Exp2 ? kOneOverSqrtLn2 : kLog2E));
     for (int i = 0; i < 4; ++i) fog.color[i] = std::clamp(color[i], 0.0f, 1.0f);
     return fog;

@@ -15,7 +15,8 @@ struct FogLanes {
     typename L::Float linearScale, linearBias, expScale, color[3];
 
     explicit FogLanes(const FogState& fog)
-        : linearScale(L::floats(fog.linearScale)), linearBias(L::floats(fog.linearBias)),
+        : linearScale(L::floats(fog.linearScale)),
+          linearBias(L::floats(fog.linearBias)),
           expScale(L::floats(fog.expScale)),
           color{L::floats(fog.color[0]), L::floats(fog.color[1]), L::floats(fog.color[2])} {}
 

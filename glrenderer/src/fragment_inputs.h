@@ -71,16 +71,16 @@ struct FragmentInputs {
     FragmentKey key;
     std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
     const FragmentRoutine* routine = nullptr;
-    FragmentOpsConstants ops;  // (issue 16)
+    FragmentOpsConstants ops;                               // (issue 16)
     const PolygonStipplePattern* polygonStipple = nullptr;  // with a key that has it (interned)
-    AttributePlane color[4];  // colour, or colour / w under perspective shading
-    AttributePlane invW;      // 1 / w, under perspective shading
-    AttributePlane depth;     // window z, with the depth test
+    AttributePlane color[4];                                // colour, or colour / w under perspective shading
+    AttributePlane invW;                                    // 1 / w, under perspective shading
+    AttributePlane depth;                                   // window z, with the depth test
     // Fog (issue 16), with a key that has it: the fog coordinate's plane, divided by w as a
     // perspective colour's is (invW and the colour planes are set too, constant under flat
     // shading), and the draw's constants.
     AttributePlane fogCoord;
-    float depthOffset = 0.0f;  // polygon offset, with a key that has it
+    float depthOffset = 0.0f;          // polygon offset, with a key that has it
     AttributePlane secondaryColor[3];  // the same of the secondary colour, with a key that has the colour sum
     FogState fog;
     // Texturing (issue 16), with a key that has it: planes of s, t and q divided by w (invW is

@@ -15,8 +15,8 @@ enum class Shading : std::uint8_t {
 
 // What changes the work of the fragment stage, and nothing else: computed once per draw, it
 // picks the routine that draws the draw's fragments (fragment_paths.h). Fields are in GL's
-// order of the stage (the per-fragment operations' group aside); a field that does not matter under the others is normalized (no depth
-// function without the depth test), so that equal work has equal keys. A structural type: fast
+// order of the stage (the per-fragment operations' group aside); a field that does not matter under the others is
+// normalized (no depth function without the depth test), so that equal work has equal keys. A structural type: fast
 // paths take their key as a template argument and the compiler removes every step it turns off.
 struct FragmentKey {
     Shading shading = Shading::Flat;
@@ -131,8 +131,8 @@ constexpr FragmentKey withTexture(FragmentKey key, TextureEnv env, bool oneDimen
 inline FragmentKey withTexture(FragmentKey key, const TextureState& t) {
     if (t.env == TextureEnv::Off) {
         const FragmentKey u;  // untextured
-        return withTexture(key, u.textureEnv, u.texture1D, u.textureBase, u.minFilter, u.magFilter, u.mipFilter, u.wrapS,
-                           u.wrapT);
+        return withTexture(key, u.textureEnv, u.texture1D, u.textureBase, u.minFilter, u.magFilter, u.mipFilter,
+                           u.wrapS, u.wrapT);
     }
     return withTexture(key, t.env, t.oneDimensional, t.base, t.minFilter, t.magFilter, t.mipFilter, t.wrapS, t.wrapT,
                        t.use);
@@ -141,7 +141,8 @@ inline FragmentKey withTexture(FragmentKey key, const TextureState& t) {
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).
 inline FragmentKey fragmentKey(const DrawState& state) {
     const Shading shading = state.shadeModel == ShadeModel::Smooth ? Shading::Perspective : Shading::Flat;
-    FragmentKey key = withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
+    FragmentKey key =
+        withFog(makeFragmentKey(shading, state.depthTest, state.depthFunc, state.depthWrite), state.fog.mode);
     key.colorSum = state.secondaryColors;
     return withTexture(withFragmentOps(key, state.fragmentOps), state.texture);
 }

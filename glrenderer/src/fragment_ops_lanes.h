@@ -51,10 +51,12 @@ template <class L>
 // The fields of blend factor `f`, not One or Zero.
 template <class L>
 [[gnu::always_inline]] inline ChannelPairs<L> factorPairs(BlendFactor f, const ChannelPairs<L>& src,
-                                                         const ChannelPairs<L>& dst) {
+                                                          const ChannelPairs<L>& dst) {
     using Int = typename L::Int;
     const Int ones = L::ints(0x00FF00FF);
-    const auto oneMinus = [&](const ChannelPairs<L>& p) { return ChannelPairs<L>{L::sub(ones, p.rb), L::sub(ones, p.ga)}; };
+    const auto oneMinus = [&](const ChannelPairs<L>& p) {
+        return ChannelPairs<L>{L::sub(ones, p.rb), L::sub(ones, p.ga)};
+    };
     const auto alphaOf = [&](const ChannelPairs<L>& p) {
         const Int alpha = inBothFields<L>(L::shiftRight(p.ga, 16));
         return ChannelPairs<L>{alpha, alpha};
@@ -69,7 +71,8 @@ template <class L>
     case BlendFactor::DstAlpha: return alphaOf(dst);
     case BlendFactor::OneMinusDstAlpha: return oneMinus(alphaOf(dst));
     case BlendFactor::SrcAlphaSaturate: {  // min(As, 1 - Ad) on RGB, 1 on alpha
-        const Int saturate = L::minUnsigned(L::shiftRight(src.ga, 16), L::sub(L::ints(0xFF), L::shiftRight(dst.ga, 16)));
+        const Int saturate =
+            L::minUnsigned(L::shiftRight(src.ga, 16), L::sub(L::ints(0xFF), L::shiftRight(dst.ga, 16)));
         return {inBothFields<L>(saturate), L::bitOr(saturate, L::ints(0x00FF0000))};
     }
     default: return {ones, ones};
@@ -79,7 +82,7 @@ template <class L>
 // `value` times blend factor `f`, in fields.
 template <class L>
 [[gnu::always_inline]] inline ChannelPairs<L> blendTerm(BlendFactor f, const ChannelPairs<L>& value,
-                                                       const ChannelPairs<L>& src, const ChannelPairs<L>& dst) {
+                                                        const ChannelPairs<L>& src, const ChannelPairs<L>& dst) {
     if (f == BlendFactor::Zero) return {L::ints(0), L::ints(0)};
     if (f == BlendFactor::One) return value;
     const ChannelPairs<L> factor = factorPairs<L>(f, src, dst);

@@ -116,11 +116,11 @@ struct FragmentChoice {
     }
 
     FragmentPath varyingW, constantW;
-    FogState fog;  // the draw's, for the primitives' inputs when the key has fog
+    FogState fog;                 // the draw's, for the primitives' inputs when the key has fog
     PolygonOffset polygonOffset;  // the draw's, for filled triangles' depth offset
     FragmentOpsConstants ops;     // the draw's (issue 16), for every primitive's inputs
     const PolygonStipplePattern* polygonStipple = nullptr;  // the draw's, for filled triangles
-    ScissorBox scissor;           // the draw's, for the bounds of lines (drawableRect)
+    ScissorBox scissor;                                     // the draw's, for the bounds of lines (drawableRect)
     // The draw's texture (kept alive by the batch drawer until its triangles are drawn) and
     // environment and border colours, when the key has texturing.
     const Texture* texture = nullptr;

@@ -68,7 +68,11 @@ public:
     // row of the block.
     NarrowBlock(std::size_t firstPixel, int rows, unsigned columns, std::size_t width, Int laneOffsets,
                 const Mask* rowLanes)
-        : firstPixel_(firstPixel), rows_(rows), columns_(columns), width_(width), laneOffsets_(laneOffsets),
+        : firstPixel_(firstPixel),
+          rows_(rows),
+          columns_(columns),
+          width_(width),
+          laneOffsets_(laneOffsets),
           rowLanes_(rowLanes) {}
 
     // One gather: it measured faster than a masked load per row, which stalls behind the
@@ -157,8 +161,8 @@ template <class L>
         const Mask covered = L::both(inBlock, L::notNegative(outside));
         if (L::none(covered)) continue;
         fragments += L::count(covered);
-        const std::size_t firstPixel = static_cast<std::size_t>(fb.height() - 1 - top) * fbWidth +
-                                       static_cast<std::size_t>(area.minX);
+        const std::size_t firstPixel =
+            static_cast<std::size_t>(fb.height() - 1 - top) * fbWidth + static_cast<std::size_t>(area.minX);
         const NarrowBlock<L> block(firstPixel, rows, columns, fbWidth, laneOffsets, rowLanes);
         const typename L::Float y = L::toFloat(L::add(L::ints(top), dy));
         passed += L::count(shadeBlock<L>(key, lanes, x, y, covered, block, buffers));
@@ -200,16 +204,21 @@ struct RoutinesOf {
     // The fast path of `Key`.
     template <FragmentKey Key>
     static constexpr FragmentRoutine fastRoutine() {
-        if constexpr (L::kNarrowBlocks) return {&span<Key>, &rows<Key>, &narrow<Key>};
-        else return {&span<Key>, &rows<Key>, nullptr};
+        if constexpr (L::kNarrowBlocks)
+            return {&span<Key>, &rows<Key>, &narrow<Key>};
+        else
+            return {&span<Key>, &rows<Key>, nullptr};
     }
     template <std::size_t... I>
     static constexpr auto fastPaths(std::index_sequence<I...>) {
-        return std::array<FragmentPaths::FastPath, sizeof...(I)>{{{kFastFragmentKeys[I], fastRoutine<kFastFragmentKeys[I]>()}...}};
+        return std::array<FragmentPaths::FastPath, sizeof...(I)>{
+            {{kFastFragmentKeys[I], fastRoutine<kFastFragmentKeys[I]>()}...}};
     }
     static constexpr FragmentRoutine anyKey() {
-        if constexpr (L::kNarrowBlocks) return {&anyKeySpan, &anyKeyRows, &anyKeyNarrow};
-        else return {&anyKeySpan, &anyKeyRows, nullptr};
+        if constexpr (L::kNarrowBlocks)
+            return {&anyKeySpan, &anyKeyRows, &anyKeyNarrow};
+        else
+            return {&anyKeySpan, &anyKeyRows, nullptr};
     }
 };
 

@@ -33,13 +33,27 @@ public:
 
     // `framebufferHeight` turns internal rows into the window rows the polygon stipple reads.
     FragmentLanes(const FragmentInputs& in, int framebufferHeight)
-        : depth_(in.depth), invW_(in.invW), red_(in.color[0]), green_(in.color[1]), blue_(in.color[2]),
-          alpha_(in.color[3]), secondaryRed_(in.secondaryColor[0]), secondaryGreen_(in.secondaryColor[1]),
-          secondaryBlue_(in.secondaryColor[2]), flat_(L::ints(static_cast<int>(in.flatColor))), fogCoord_(in.fogCoord), fog_(in.fog),
-          depthOffset_(L::floats(in.depthOffset)), alphaRef_(L::ints(in.ops.alphaRef)),
-          stencilRef_(L::ints(in.ops.stencilRef)), stencilValueMask_(L::ints(in.ops.stencilValueMask)),
-          stencilWriteMask_(L::ints(in.ops.stencilWriteMask)), colorMask_(L::ints(static_cast<int>(in.ops.colorMask))),
-          texture_(in), polygonStipple_(in.polygonStipple), lastRow_(framebufferHeight - 1) {}
+        : depth_(in.depth),
+          invW_(in.invW),
+          red_(in.color[0]),
+          green_(in.color[1]),
+          blue_(in.color[2]),
+          alpha_(in.color[3]),
+          secondaryRed_(in.secondaryColor[0]),
+          secondaryGreen_(in.secondaryColor[1]),
+          secondaryBlue_(in.secondaryColor[2]),
+          flat_(L::ints(static_cast<int>(in.flatColor))),
+          fogCoord_(in.fogCoord),
+          fog_(in.fog),
+          depthOffset_(L::floats(in.depthOffset)),
+          alphaRef_(L::ints(in.ops.alphaRef)),
+          stencilRef_(L::ints(in.ops.stencilRef)),
+          stencilValueMask_(L::ints(in.ops.stencilValueMask)),
+          stencilWriteMask_(L::ints(in.ops.stencilWriteMask)),
+          colorMask_(L::ints(static_cast<int>(in.ops.colorMask))),
+          texture_(in),
+          polygonStipple_(in.polygonStipple),
+          lastRow_(framebufferHeight - 1) {}
 
     // The per-fragment operations' constants (issue 16).
     Int alphaRef() const { return alphaRef_; }
@@ -85,12 +99,14 @@ public:
         Float w{};
         if (key.shading == Shading::Perspective || key.fog != FogMode::Off || textured) {
             w = L::div(L::floats(1.0f), invW_.at(x, y));
-            if (key.shading == Shading::Perspective) r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
+            if (key.shading == Shading::Perspective)
+                r = L::mul(r, w), g = L::mul(g, w), b = L::mul(b, w), a = L::mul(a, w);
         }
         // The texture environment, then the secondary colour, unclamped (the conversion clamps the sum).
         Float secondary[3];
         if (key.colorSum) {
-            secondary[0] = secondaryRed_.at(x, y), secondary[1] = secondaryGreen_.at(x, y), secondary[2] = secondaryBlue_.at(x, y);
+            secondary[0] = secondaryRed_.at(x, y), secondary[1] = secondaryGreen_.at(x, y),
+            secondary[2] = secondaryBlue_.at(x, y);
             if (key.shading == Shading::Perspective) {
                 for (Float& s : secondary) s = L::mul(s, w);
             }
@@ -171,8 +187,9 @@ struct PixelBuffers {
 // The stencil test of a block: the lanes of `live` that pass, and into `updated` the stored
 // values changed by the stencil-fail operation.
 template <class L>
-[[gnu::always_inline]] inline typename L::Mask stencilTest(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Mask live,
-                             typename L::Int ref, typename L::Int stored, typename L::Int& updated) {
+[[gnu::always_inline]] inline typename L::Mask stencilTest(const FragmentKey& key, const FragmentLanes<L>& in,
+                                                           typename L::Mask live, typename L::Int ref,
+                                                           typename L::Int stored, typename L::Int& updated) {
     const typename L::Int mask = in.stencilValueMask();
     const typename L::Mask pass = L::compare(key.stencilFunc, live, L::bitAnd(ref, mask), L::bitAnd(stored, mask));
     if (key.stencilFail != StencilOp::Keep) {
@@ -184,13 +201,14 @@ template <class L>
 // The stored colour words `dst` under the colour `src` of the fragments: blending, the logic op
 // and the colour mask of the key.
 template <class L>
-[[gnu::always_inline]] inline typename L::Int combineWithStored(const FragmentKey& key, const FragmentLanes<L>& in, typename L::Int src,
-                                  typename L::Int dst) {
+[[gnu::always_inline]] inline typename L::Int combineWithStored(const FragmentKey& key, const FragmentLanes<L>& in,
+                                                                typename L::Int src, typename L::Int dst) {
     if (key.blendSrc != BlendFactor::One || key.blendDst != BlendFactor::Zero) {
         src = blend<L>(key.blendSrc, key.blendDst, src, dst);
     }
     if (key.logicOp != LogicOp::Copy) src = logicOp<L>(key.logicOp, src, dst);
-    if (key.colorMask) src = L::bitOr(L::bitAnd(src, in.colorMask()), L::bitAnd(dst, L::bitXor(in.colorMask(), L::ints(-1))));
+    if (key.colorMask)
+        src = L::bitOr(L::bitAnd(src, in.colorMask()), L::bitAnd(dst, L::bitXor(in.colorMask(), L::ints(-1))));
     return src;
 }
 
@@ -199,8 +217,9 @@ template <class L>
 // test needs it: the fragments that fail need none.
 template <class L, class Block>
 [[gnu::always_inline]] inline typename L::Mask shadeBlock(const FragmentKey& key, const FragmentLanes<L>& in,
-                                               typename L::Float x, typename L::Float y, typename L::Mask covered,
-                                               const Block& block, const PixelBuffers& buffers) {
+                                                          typename L::Float x, typename L::Float y,
+                                                          typename L::Mask covered, const Block& block,
+                                                          const PixelBuffers& buffers) {
     using Int = typename L::Int;
     typename L::Mask live = key.polygonStipple ? in.polygonStippled(x, y, covered) : covered;
     // The texture environment, then fog (FragmentLanes::rgba) make the colour.
@@ -229,7 +248,8 @@ template <class L, class Block>
     }
     if (key.stencilTest) {
         if (key.stencilDepthPass != StencilOp::Keep) {
-            updatedStencil = L::select(live, stencilAfter<L>(key.stencilDepthPass, stencil, stencilRef), updatedStencil);
+            updatedStencil =
+                L::select(live, stencilAfter<L>(key.stencilDepthPass, stencil, stencilRef), updatedStencil);
         }
         const Int writeMask = in.stencilWriteMask();
         const Int kept = L::bitAnd(stencil, L::bitXor(writeMask, L::ints(-1)));

@@ -32,15 +32,18 @@ struct TexelFields {
     // Field 0 (low) or 1 (high) of a word as a float channel.
     template <int Field>
     static typename L::Float channel(typename L::Int fields) {
-        if constexpr (Field == 1) return unormToFloat<L>(L::template shiftRightUnsigned<16>(fields));
-        else return unormToFloat<L>(L::bitAnd(fields, L::ints(0xFFFF)));
+        if constexpr (Field == 1)
+            return unormToFloat<L>(L::template shiftRightUnsigned<16>(fields));
+        else
+            return unormToFloat<L>(L::bitAnd(fields, L::ints(0xFFFF)));
     }
 };
 
 // a and b lerped with weights w (0-255, 256 being one), as gallivm's lerp of unorm8 values:
 // a + ((w * (b - a) + 128) >> 8), the rounding of SSSE3's pmulhrsw.
 template <class L>
-[[gnu::always_inline]] inline TexelFields<L> lerpTexels(typename L::Int w, const TexelFields<L>& a, const TexelFields<L>& b) {
+[[gnu::always_inline]] inline TexelFields<L> lerpTexels(typename L::Int w, const TexelFields<L>& a,
+                                                        const TexelFields<L>& b) {
     return {L::lerpFields(w, a.redBlue, b.redBlue), L::lerpFields(w, a.greenAlpha, b.greenAlpha)};
 }
 
@@ -64,10 +67,13 @@ public:
     // Only a textured key's texture is read: an untextured primitive's record may still point at
     // the texture of the draw it last served, freed since.
     explicit TextureLanes(const FragmentInputs& in)
-        : s_(in.texCoord[0]), t_(in.texCoord[1]), q_(in.texCoord[2]), invW_(in.invW),
+        : s_(in.texCoord[0]),
+          t_(in.texCoord[1]),
+          q_(in.texCoord[2]),
+          invW_(in.invW),
           texture_(in.key.textureEnv != TextureEnv::Off ? in.texture : nullptr),
-          envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]), L::floats(in.textureEnvColor[2]),
-                    L::floats(in.textureEnvColor[3])},
+          envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]),
+                    L::floats(in.textureEnvColor[2]), L::floats(in.textureEnvColor[3])},
           width0_(L::floats(texture_ ? static_cast<float>(texture_->width[0]) : 0.0f)),
           height0_(L::floats(texture_ ? static_cast<float>(texture_->height[0]) : 0.0f)),
           lastLevel_(L::ints(texture_ ? texture_->levelCount - 1 : 0)),
@@ -88,7 +94,8 @@ public:
             if (key.mipFilter != MipmapFilter::None || key.minFilter != key.magFilter) {
                 const Int qx = L::bitAnd(L::roundToInt(x), L::ints(~1)), qy = L::bitAnd(L::roundToInt(y), L::ints(~1));
                 lod = quadLod(key, L::toFloat(qx), L::toFloat(qy));
-                if (key.minFilter != key.magFilter) otherLod = quadLod(key, L::toFloat(L::bitXor(qx, L::ints(2))), L::toFloat(qy));
+                if (key.minFilter != key.magFilter)
+                    otherLod = quadLod(key, L::toFloat(L::bitXor(qx, L::ints(2))), L::toFloat(qy));
             }
             floatSampler_.sample(key, s, t, lod, otherLod, live, texel);
             return;
@@ -174,7 +181,8 @@ private:
     }
 
     // The level of detail from a quad's coordinate differences across (x) and down (y).
-    [[gnu::always_inline]] inline Float lodOfDifferences(const FragmentKey& key, Float sx, Float tx, Float sy, Float ty) const {
+    [[gnu::always_inline]] inline Float lodOfDifferences(const FragmentKey& key, Float sx, Float tx, Float sy,
+                                                         Float ty) const {
         const Float dsdx = L::mul(sx, width0_), dsdy = L::mul(sy, width0_);
         if (key.texture1D) return L::mul(fastLog2<L>(L::max(L::mul(dsdx, dsdx), L::mul(dsdy, dsdy))), L::floats(0.5f));
         const Float dtdx = L::mul(tx, height0_), dtdy = L::mul(ty, height0_);
@@ -184,9 +192,11 @@ private:
     }
 
     // The minification filter with the mipmap filter at `lod`.
-    [[gnu::always_inline]] inline TexelFields<L> minified(const FragmentKey& key, Float s, Float t, Float lod, Mask live) const {
+    [[gnu::always_inline]] inline TexelFields<L> minified(const FragmentKey& key, Float s, Float t, Float lod,
+                                                          Mask live) const {
         const Int last = lastLevel_;
-        if (key.mipFilter == MipmapFilter::None) return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, 0), live);
+        if (key.mipFilter == MipmapFilter::None)
+            return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, 0), live);
         if (key.mipFilter == MipmapFilter::Nearest) {
             const Int index = L::minInt(L::maxInt(L::roundToInt(lod), L::ints(0)), last);
             return sampleLevel(key, key.minFilter, s, t, Level::of(*texture_, index), live);
@@ -202,7 +212,8 @@ private:
         return lerpTexels<L>(weight, texel0, texel1);
     }
 
-    [[gnu::always_inline]] inline TexelFields<L> sampleLevel(const FragmentKey& key, TextureFilter filter, Float s, Float t, const Level& l, Mask live) const {
+    [[gnu::always_inline]] inline TexelFields<L> sampleLevel(const FragmentKey& key, TextureFilter filter, Float s,
+                                                             Float t, const Level& l, Mask live) const {
         if (filter == TextureFilter::Nearest) {
             const Int i = nearestIndex<L>(key.wrapS, s, l.width, texture_->powerOfTwoWidth);
             const Int j = nearestIndex<L>(key.wrapT, t, l.height, texture_->powerOfTwoHeight);
@@ -224,7 +235,8 @@ private:
         const Int last = L::sub(size, L::ints(1));
         if (wrap == TextureWrap::Repeat && !pot) {
             const Float f = L::sub(c, L::floor(c));
-            const Int fixed = L::sub(L::roundToInt(L::mul(L::mul(f, L::toFloat(size)), L::floats(256.0f))), L::ints(128));
+            const Int fixed =
+                L::sub(L::roundToInt(L::mul(L::mul(f, L::toFloat(size)), L::floats(256.0f))), L::ints(128));
             weight = L::bitAnd(fixed, L::ints(0xFF));
             const Int i = L::template shiftRightSigned<8>(fixed);
             i0 = L::minInt(L::select(L::lessThan(i, L::ints(0)), last, i), last);  // -1 wraps to the last
@@ -257,8 +269,9 @@ private:
 // as Mesa's fixed-function fragment program combines them for the texture's base format, and
 // with the colour sum the secondary colour `secondary` (else null) added to red, green and blue.
 template <class L>
-[[gnu::always_inline]] inline void applyTextureEnv(const FragmentKey& key, const typename L::Float texel[4], const typename L::Float envColor[4],
-                     const typename L::Float* secondary, typename L::Float c[4]) {
+[[gnu::always_inline]] inline void applyTextureEnv(const FragmentKey& key, const typename L::Float texel[4],
+                                                   const typename L::Float envColor[4],
+                                                   const typename L::Float* secondary, typename L::Float c[4]) {
     using Float = typename L::Float;
     const TextureBase base = key.textureBase;
     const bool hasColor = base != TextureBase::Alpha;
@@ -276,15 +289,18 @@ template <class L>
     switch (key.textureEnv) {
     case TextureEnv::Off: break;
     case TextureEnv::Modulate:
-        if (hasColor) for (int i = 0; i < 3; ++i) c[i] = L::mul(c[i], texel[i]);
+        if (hasColor)
+            for (int i = 0; i < 3; ++i) c[i] = L::mul(c[i], texel[i]);
         if (hasAlpha) c[3] = L::mul(c[3], texel[3]);
         break;
     case TextureEnv::Replace:
-        if (hasColor) for (int i = 0; i < 3; ++i) c[i] = texel[i];
+        if (hasColor)
+            for (int i = 0; i < 3; ++i) c[i] = texel[i];
         if (hasAlpha) c[3] = texel[3];
         break;
     case TextureEnv::Decal:
-        if (base == TextureBase::Rgb) for (int i = 0; i < 3; ++i) c[i] = texel[i];
+        if (base == TextureBase::Rgb)
+            for (int i = 0; i < 3; ++i) c[i] = texel[i];
         if (base == TextureBase::Rgba) {
             for (int i = 0; i < 3; ++i) c[i] = mix(c[i], texel[i], texel[3], sum(i));
             summed = true;
@@ -295,13 +311,18 @@ template <class L>
             for (int i = 0; i < 3; ++i) c[i] = mix(c[i], envColor[i], texel[i], sum(i));
             summed = true;
         }
-        if (base == TextureBase::Intensity) c[3] = mix(c[3], envColor[3], texel[3], nullptr);
-        else if (hasAlpha) c[3] = L::mul(c[3], texel[3]);
+        if (base == TextureBase::Intensity)
+            c[3] = mix(c[3], envColor[3], texel[3], nullptr);
+        else if (hasAlpha)
+            c[3] = L::mul(c[3], texel[3]);
         break;
     case TextureEnv::Add:  // saturated, as Mesa's program saturates its ADD
-        if (hasColor) for (int i = 0; i < 3; ++i) c[i] = clampUnit<L>(L::add(c[i], texel[i]));
-        if (base == TextureBase::Intensity) c[3] = clampUnit<L>(L::add(c[3], texel[3]));
-        else if (hasAlpha) c[3] = L::mul(c[3], texel[3]);
+        if (hasColor)
+            for (int i = 0; i < 3; ++i) c[i] = clampUnit<L>(L::add(c[i], texel[i]));
+        if (base == TextureBase::Intensity)
+            c[3] = clampUnit<L>(L::add(c[3], texel[3]));
+        else if (hasAlpha)
+            c[3] = L::mul(c[3], texel[3]);
         break;
     }
     if (secondary && !summed) {

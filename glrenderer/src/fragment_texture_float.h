@@ -23,13 +23,15 @@ public:
     using Mask = typename L::Mask;
 
     FloatTextureSampler(const Texture* texture, const glm::vec4& border)
-        : texture_(texture), border_{L::floats(border[0]), L::floats(border[1]), L::floats(border[2]), L::floats(border[3])} {}
+        : texture_(texture),
+          border_{L::floats(border[0]), L::floats(border[1]), L::floats(border[2]), L::floats(border[3])} {}
 
     // The texel colour at (s, t), `lod` the level of detail of the lane's quad and `otherLod`
     // that of the other quad of its block (the reference's 8 lanes hold two quads and choose
     // the filters' path for both: lp_build_sample_general).
     void sample(const FragmentKey& key, Float s, Float t, Float lod, Float otherLod, Mask live, Float out[4]) const {
-        if (key.minFilter == key.magFilter) return mipmap(key, key.minFilter, key.mipFilter, s, t, lod, none(), live, out);
+        if (key.minFilter == key.magFilter)
+            return mipmap(key, key.minFilter, key.mipFilter, s, t, lod, none(), live, out);
         // Linear where the lod says the linear filter; a block with any such lane samples every
         // lane linearly, the others' weights rounded to 0 or 1 (nearest, but a coordinate at
         // the texel's edge takes the lower texel, a GL_CLAMP coordinate <= 0 the border).
@@ -37,7 +39,8 @@ public:
         const Mask linear = linearAt(minLinear, lod), otherLinear = linearAt(minLinear, otherLod);
         Float both[4], nearest[4];
         mipmap(key, TextureFilter::Linear, key.mipFilter, s, t, lod, L::butNot(live, linear), live, both);
-        mipmap(key, TextureFilter::Nearest, minLinear ? MipmapFilter::None : key.mipFilter, s, t, lod, none(), live, nearest);
+        mipmap(key, TextureFilter::Nearest, minLinear ? MipmapFilter::None : key.mipFilter, s, t, lod, none(), live,
+               nearest);
         const Mask blockLinear = L::either(linear, otherLinear);
         for (int c = 0; c < 4; ++c) out[c] = L::select(blockLinear, both[c], nearest[c]);
     }
@@ -61,7 +64,8 @@ private:
     // where either level is clamped to the first or last.
     void mipmap(const FragmentKey& key, TextureFilter filter, MipmapFilter mip, Float s, Float t, Float lod,
                 Mask nearestLanes, Mask live, Float out[4]) const {
-        if (mip == MipmapFilter::None) return image(key, filter, s, t, Level::of(*texture_, 0), nearestLanes, live, out);
+        if (mip == MipmapFilter::None)
+            return image(key, filter, s, t, Level::of(*texture_, 0), nearestLanes, live, out);
         const Int last = L::ints(texture_->levelCount - 1);
         if (mip == MipmapFilter::Nearest) {
             const Int index = L::minInt(L::maxInt(L::roundToInt(lod), L::ints(0)), last);
@@ -125,14 +129,19 @@ private:
         const Float sizeF = L::toFloat(size), half = L::floats(0.5f);
         const Int last = L::sub(size, L::ints(1));
         Float u;
-        if (wrap == TextureWrap::Repeat && !pot) u = L::sub(L::mul(L::sub(c, L::floor(c)), sizeF), half);
-        else if (wrap == TextureWrap::Repeat) u = L::sub(L::mul(c, sizeF), half);
-        else if (wrap == TextureWrap::ClampToEdge) u = L::max(L::sub(L::min(L::mul(c, sizeF), sizeF), half), L::floats(0.0f));
-        else u = L::sub(L::min(L::max(L::mul(c, sizeF), L::floats(0.0f)), sizeF), half);
+        if (wrap == TextureWrap::Repeat && !pot)
+            u = L::sub(L::mul(L::sub(c, L::floor(c)), sizeF), half);
+        else if (wrap == TextureWrap::Repeat)
+            u = L::sub(L::mul(c, sizeF), half);
+        else if (wrap == TextureWrap::ClampToEdge)
+            u = L::max(L::sub(L::min(L::mul(c, sizeF), sizeF), half), L::floats(0.0f));
+        else
+            u = L::sub(L::min(L::max(L::mul(c, sizeF), L::floats(0.0f)), sizeF), half);
         const Float floor = L::floor(u);
         weight = L::sub(u, floor);
         // The nearest lanes take the texel of the larger weight (the lower one at a tie).
-        weight = L::select(nearestLanes, L::select(L::greaterThan(weight, half), L::floats(1.0f), L::floats(0.0f)), weight);
+        weight =
+            L::select(nearestLanes, L::select(L::greaterThan(weight, half), L::floats(1.0f), L::floats(0.0f)), weight);
         i0 = L::truncateToInt(floor);
         i1 = L::add(i0, L::ints(1));
         if (wrap == TextureWrap::Repeat && !pot) {

@@ -21,7 +21,8 @@ void Framebuffer::resize(int width, int height) {
 }
 
 Framebuffer::Pixels Framebuffer::allocate(std::size_t count) {
-    Pixels pixels(static_cast<std::uint32_t*>(::operator new[](count * sizeof(std::uint32_t), std::align_val_t{kAlignment})));
+    Pixels pixels(
+        static_cast<std::uint32_t*>(::operator new[](count * sizeof(std::uint32_t), std::align_val_t{kAlignment})));
     std::fill_n(pixels.get(), count, 0u);
     return pixels;
 }

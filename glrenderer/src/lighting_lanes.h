@@ -31,7 +31,9 @@ struct LightingLanes {
     };
 
     static Vec3 broadcast(const glm::vec3& v) { return {L::floats(v.x), L::floats(v.y), L::floats(v.z)}; }
-    static Vec4 broadcast(const glm::vec4& v) { return {L::floats(v.x), L::floats(v.y), L::floats(v.z), L::floats(v.w)}; }
+    static Vec4 broadcast(const glm::vec4& v) {
+        return {L::floats(v.x), L::floats(v.y), L::floats(v.z), L::floats(v.w)};
+    }
     static Vec3 add(const Vec3& a, const Vec3& b) { return {L::add(a.x, b.x), L::add(a.y, b.y), L::add(a.z, b.z)}; }
     static Vec3 sub(const Vec3& a, const Vec3& b) { return {L::sub(a.x, b.x), L::sub(a.y, b.y), L::sub(a.z, b.z)}; }
     static Vec3 scale(const Vec3& v, Float s) { return {L::mul(v.x, s), L::mul(v.y, s), L::mul(v.z, s)}; }
@@ -69,7 +71,8 @@ struct LightingLanes {
                                                    0.406718052498846252698};
         const auto c = [](int i) { return L::floats(static_cast<float>(kCoefficients[i])); };
         const auto bits = L::bitsOf(x);
-        const Float exponent = L::toFloat(L::sub(L::shiftRight(L::bitAnd(bits, L::ints(0x7f800000)), 23), L::ints(127)));
+        const Float exponent =
+            L::toFloat(L::sub(L::shiftRight(L::bitAnd(bits, L::ints(0x7f800000)), 23), L::ints(127)));
         const Float mantissa = L::fromBits(L::bitOr(L::bitAnd(bits, L::ints(0x007fffff)), L::ints(0x3f800000)));
         const Float y = L::div(L::sub(mantissa, L::floats(1.0f)), L::add(mantissa, L::floats(1.0f)));
         const Float z = L::mul(y, y), z2 = L::mul(z, z);
@@ -125,7 +128,9 @@ struct VertexBlock {
             for (int c = 0; c < 3; ++c) normal[c][lane] = v.normal[c];
         }
     }
-    typename Lanes::Vec4 positions() const { return {load(position[0]), load(position[1]), load(position[2]), load(position[3])}; }
+    typename Lanes::Vec4 positions() const {
+        return {load(position[0]), load(position[1]), load(position[2]), load(position[3])};
+    }
     typename Lanes::Vec3 normals() const { return {load(normal[0]), load(normal[1]), load(normal[2])}; }
     typename Lanes::Vec4 colors() const { return {load(color[0]), load(color[1]), load(color[2]), load(color[3])}; }
 
@@ -146,7 +151,8 @@ public:
         VertexBlock<L> block;
         alignas(64) float lit[2][4][L::kCount], litSecondary[2][4][L::kCount];
         for (std::size_t first = 0; first < vertices.size(); first += L::kCount) {
-            const std::span<Vertex> part = vertices.subspan(first, std::min<std::size_t>(L::kCount, vertices.size() - first));
+            const std::span<Vertex> part =
+                vertices.subspan(first, std::min<std::size_t>(L::kCount, vertices.size() - first));
             block.read(part);
             const Vec4 position = block.positions(), color = block.colors();
             const Vec3 normal = transformedNormal(block.normals());
@@ -224,7 +230,8 @@ private:
         const Vec4 diffuseMaterial = material(face, kDiffuse, color);
         const Vec4 ambientMaterial = material(face, kAmbient, color);
         // The scene colour: model ambient * material ambient + emission, alpha the diffuse alpha.
-        LitColors lit{Lanes::sum(Lanes::mul(Lanes::broadcast(p_.modelAmbient), ambientMaterial), material(face, kEmission, color)),
+        LitColors lit{Lanes::sum(Lanes::mul(Lanes::broadcast(p_.modelAmbient), ambientMaterial),
+                                 material(face, kEmission, color)),
                       Lanes::broadcast(glm::vec4(0.0f))};
         const Float alpha = diffuseMaterial.w;
         if (p_.lightCount > 0) {
@@ -249,8 +256,8 @@ private:
     };
 
     // One light's terms added to `lit`.
-    LitColors addLight(const PreparedLight& l, const Vec3& n, const Vec3& eye, const Vec3& eyeDirection, Float shininess,
-                       const Materials& material, LitColors lit) const {
+    LitColors addLight(const PreparedLight& l, const Vec3& n, const Vec3& eye, const Vec3& eyeDirection,
+                       Float shininess, const Materials& material, LitColors lit) const {
         Vec4& sum = lit.primary;
         Vec3 toLight = Lanes::broadcast(l.position);
         Float inverseDistance = L::floats(0.0f);
@@ -264,7 +271,8 @@ private:
         Float attenuation = L::floats(1.0f);
         if (l.spot) {
             const Float cosine = Lanes::dot3(Lanes::negate(toLight), Lanes::broadcast(l.spotDirection));
-            const Float inside = L::select(L::lessThan(L::floats(l.cosCutoff), cosine), L::floats(1.0f), L::floats(0.0f));
+            const Float inside =
+                L::select(L::lessThan(L::floats(l.cosCutoff), cosine), L::floats(1.0f), L::floats(0.0f));
             attenuation = L::mul(inside, Lanes::power(L::abs(cosine), L::floats(l.spotExponent)));
             hasAttenuation = true;
         }
@@ -279,9 +287,12 @@ private:
         Float normalDotHalf = normalDotLight;
         if (!p_.shininessIsZero) {
             Vec3 half;
-            if (p_.localViewer) half = Lanes::normalizeInProgram(Lanes::sub(toLight, eyeDirection));
-            else if (!l.positional) half = Lanes::broadcast(l.halfVector);
-            else half = Lanes::normalizeInProgram(Lanes::add(toLight, Lanes::broadcast(glm::vec3(0, 0, 1))));
+            if (p_.localViewer)
+                half = Lanes::normalizeInProgram(Lanes::sub(toLight, eyeDirection));
+            else if (!l.positional)
+                half = Lanes::broadcast(l.halfVector);
+            else
+                half = Lanes::normalizeInProgram(Lanes::add(toLight, Lanes::broadcast(glm::vec3(0, 0, 1))));
             normalDotHalf = Lanes::dot3(n, half);
         }
         const Vec4 ambient = Lanes::mul(Lanes::broadcast(l.ambient), material.ambient);

@@ -10,11 +10,11 @@ namespace glrenderer {
 // into the pieces where the pattern is on, each drawn as a line of its own. A counter of pixels
 // runs along the lines, measured on the major axis (max(|dx|, |dy|)); the n-th pixel from a
 // line's start is on when bit ((counter + n) / factor) & 15 is, and the counter then grows by
-// the line's length rounded up (measured: newer Mesa's unrounded growth differs on strips). Pieces start and end at whole pixels from the line's start,
-// their ends' attributes interpolated linearly in the window (x, y, z, 1 / w, colour, fog and
-// texture coordinates alike). The counter restarts at each segment of GL_LINES, at the first
-// segment of a strip or loop that survives clipping, at each polygon drawn as lines, and at any
-// point or filled triangle the stage sees; it lives as long as the pipeline.
+// the line's length rounded up (measured: newer Mesa's unrounded growth differs on strips). Pieces start and end at
+// whole pixels from the line's start, their ends' attributes interpolated linearly in the window (x, y, z, 1 / w,
+// colour, fog and texture coordinates alike). The counter restarts at each segment of GL_LINES, at the first segment of
+// a strip or loop that survives clipping, at each polygon drawn as lines, and at any point or filled triangle the stage
+// sees; it lives as long as the pipeline.
 class LineStippler {
 public:
     void restart() { counter_ = 0; }
@@ -28,13 +28,17 @@ public:
         bool on = false;
         int pieceStart = 0;
         for (int i = 0; i < whole; ++i) {
-            const bool bit = ((stipple.pattern >> (((counter_ + static_cast<std::uint32_t>(i)) / stipple.factor) & 15u)) & 1u) != 0;
+            const bool bit =
+                ((stipple.pattern >> (((counter_ + static_cast<std::uint32_t>(i)) / stipple.factor) & 15u)) & 1u) != 0;
             if (bit == on) continue;
-            if (on) piece(start, end, static_cast<float>(pieceStart) / length, static_cast<float>(i) / length, draw);
-            else pieceStart = i;
+            if (on)
+                piece(start, end, static_cast<float>(pieceStart) / length, static_cast<float>(i) / length, draw);
+            else
+                pieceStart = i;
             on = bit;
         }
-        if (on && static_cast<float>(pieceStart) < length) piece(start, end, static_cast<float>(pieceStart) / length, 1.0f, draw);
+        if (on && static_cast<float>(pieceStart) < length)
+            piece(start, end, static_cast<float>(pieceStart) / length, 1.0f, draw);
         counter_ += static_cast<std::uint32_t>(whole);
     }
 

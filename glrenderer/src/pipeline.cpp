@@ -15,8 +15,8 @@ namespace {
 
 // Modes whose consecutive glBegin/glEnd blocks the reference merges into one draw.
 bool isMergeable(PrimitiveMode mode) {
-    return mode == PrimitiveMode::Points || mode == PrimitiveMode::Lines ||
-           mode == PrimitiveMode::Triangles || mode == PrimitiveMode::Quads;
+    return mode == PrimitiveMode::Points || mode == PrimitiveMode::Lines || mode == PrimitiveMode::Triangles ||
+           mode == PrimitiveMode::Quads;
 }
 
 // Filled independent triangles come out the same however a batch of them is cut, so a long
@@ -44,14 +44,14 @@ DrawState withCulledFaceModes(DrawState state) {
     return state;
 }
 
-std::unique_ptr<BatchChunk> makeChunk() {
-    return std::make_unique<BatchChunk>(kChunkVertices, kChunkBatches);
-}
+std::unique_ptr<BatchChunk> makeChunk() { return std::make_unique<BatchChunk>(kChunkVertices, kChunkBatches); }
 
 }  // namespace
 
 Pipeline::Pipeline(Framebuffer& framebuffer)
-    : chunk_(makeChunk()), batch_(std::make_unique<BatchEntry>()), lightings_(std::make_unique<LightingPool>()),
+    : chunk_(makeChunk()),
+      batch_(std::make_unique<BatchEntry>()),
+      lightings_(std::make_unique<LightingPool>()),
       drawer_(std::make_unique<BatchDrawer>(framebuffer)) {
     if (workerThreadCount() > 1) {
         std::vector<std::unique_ptr<BatchChunk>> spare(kChunks - 1);

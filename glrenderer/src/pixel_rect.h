@@ -20,7 +20,9 @@ inline PixelRect drawableRect(const ScissorBox& scissor, int width, int height) 
     const std::int64_t right = left + scissor.width - 1, top = bottom + scissor.height - 1;
     // Lows within [0, size], highs within [-1, size - 1]: a box outside gives an empty rect.
     const auto low = [](std::int64_t v, int size) { return static_cast<int>(std::clamp<std::int64_t>(v, 0, size)); };
-    const auto high = [](std::int64_t v, int size) { return static_cast<int>(std::clamp<std::int64_t>(v, -1, size - 1)); };
+    const auto high = [](std::int64_t v, int size) {
+        return static_cast<int>(std::clamp<std::int64_t>(v, -1, size - 1));
+    };
     return {low(left, width), high(right, width), low(height - 1 - top, height), high(height - 1 - bottom, height)};
 }
 

@@ -9,8 +9,11 @@ template <class L>
 struct PlaneLanes {
     typename L::Float a0, dadx, dady;
 
-    explicit PlaneLanes(const AttributePlane& p) : a0(L::floats(p.a0)), dadx(L::floats(p.dadx)), dady(L::floats(p.dady)) {}
-    typename L::Float at(typename L::Float x, typename L::Float y) const { return L::fma(dady, y, L::fma(dadx, x, a0)); }
+    explicit PlaneLanes(const AttributePlane& p)
+        : a0(L::floats(p.a0)), dadx(L::floats(p.dadx)), dady(L::floats(p.dady)) {}
+    typename L::Float at(typename L::Float x, typename L::Float y) const {
+        return L::fma(dady, y, L::fma(dadx, x, a0));
+    }
 };
 
 }  // namespace glrenderer

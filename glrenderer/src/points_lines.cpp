@@ -48,8 +48,7 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
         for (std::size_t i = 0; i + 1 < n; ++i) clipped(vertices[i], vertices[i + 1], i == 0);
         if (mode == PrimitiveMode::LineLoop && n >= 2) clipped(vertices[n - 1], vertices[0], false);
         break;
-    default:
-        break;
+    default: break;
     }
 }
 
@@ -59,7 +58,7 @@ void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices
                         LineStippler& stippler, Framebuffer& framebuffer, Stats& stats) {
     // Points are drawn flat; lines as the state says; smooth ones as smoothFragmentKey says.
     const bool smooth = mode == PrimitiveMode::Points ? state.pointSmooth : state.lineSmooth;
-    const FragmentKey key = smooth ? smoothFragmentKey(state)
+    const FragmentKey key = smooth                          ? smoothFragmentKey(state)
                             : mode == PrimitiveMode::Points ? flatFragmentKey(state)
                                                             : fragmentKey(state);
     const FragmentChoice fragments(bestFragmentPaths(), key, state);

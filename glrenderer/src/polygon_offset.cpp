@@ -35,7 +35,8 @@ void offsetInDrawModule(const PolygonOffset& offset, WindowVertex& v0, WindowVer
     const float ex = v0.x - v2.x, ey = v0.y - v2.y, ez = v0.z - v2.z;
     const float fx = v1.x - v2.x, fy = v1.y - v2.y, fz = v1.z - v2.z;
     const float inverseDeterminant = 1.0f / (ex * fy - ey * fx);
-    const float z = depthOffset(offset, (ey * fz - ez * fy) * inverseDeterminant, (ez * fx - ex * fz) * inverseDeterminant);
+    const float z =
+        depthOffset(offset, (ey * fz - ez * fy) * inverseDeterminant, (ez * fx - ex * fz) * inverseDeterminant);
     v0.z = saturate(v0.z + z);
     v1.z = saturate(v1.z + z);
     v2.z = saturate(v2.z + z);

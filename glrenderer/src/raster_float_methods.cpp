@@ -48,8 +48,8 @@ void rasterizeBoundingBoxFloat(const RasterTriangle& t, const PixelRect& rect, F
         int runBegin = -1;
         for (int px = minX; px <= maxX + 1; ++px) {
             const float cx = static_cast<float>(px) + 0.5f;
-            const bool inside = px <= maxX && edge(0, 1, cx, py) >= 0.0f && edge(1, 2, cx, py) >= 0.0f &&
-                                edge(2, 0, cx, py) >= 0.0f;
+            const bool inside =
+                px <= maxX && edge(0, 1, cx, py) >= 0.0f && edge(1, 2, cx, py) >= 0.0f && edge(2, 0, cx, py) >= 0.0f;
             if (inside && runBegin < 0) runBegin = px;
             if (!inside && runBegin >= 0) {
                 t.fragment.shadeSpan(row, runBegin, px - 1, fb, counts);

@@ -14,8 +14,8 @@ void rasterizeScanline(const RasterTriangle& triangle, const PixelRect& rect, Fr
 
 // Seed 004: float edge functions evaluated at every pixel center of the bounding box, a pixel
 // inside when no edge function is negative: shared edges are drawn by both triangles.
-void rasterizeBoundingBoxFloat(const RasterTriangle& triangle, const PixelRect& rect,
-                               Framebuffer& framebuffer, FragmentCounts& counts);
+void rasterizeBoundingBoxFloat(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
+                               FragmentCounts& counts);
 
 // Draws `triangle` with the method it was prepared for.
 void rasterizeWithMethod(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,

@@ -204,16 +204,18 @@ private:
 // Draws the quad's pixels: per row, the span the four edges bound, through the fragment stage.
 void fillQuad(const LineQuad& q, const FragmentInputs& fragment, const PixelRect& drawable, Framebuffer& fb,
               Stats& stats) {
-    const LineEdge edges[4] = {LineEdge(q.x[0], q.y[0], q.x[1], q.y[1]),
-                               LineEdge(q.x[1], q.y[1], q.x[2], q.y[2]),
-                               LineEdge(q.x[2], q.y[2], q.x[3], q.y[3]),
-                               LineEdge(q.x[3], q.y[3], q.x[0], q.y[0])};
+    const LineEdge edges[4] = {LineEdge(q.x[0], q.y[0], q.x[1], q.y[1]), LineEdge(q.x[1], q.y[1], q.x[2], q.y[2]),
+                               LineEdge(q.x[2], q.y[2], q.x[3], q.y[3]), LineEdge(q.x[3], q.y[3], q.x[0], q.y[0])};
     // The reference's bounding box (rounded for the bottom-left convention), then the drawable rect.
     const std::int64_t one = 1 << kSubpixelBits;
-    const std::int64_t minX = std::max<std::int64_t>((std::min({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits, drawable.minX);
-    const std::int64_t maxX = std::min<std::int64_t>(((std::max({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits) - 1, drawable.maxX);
-    const std::int64_t minY = std::max<std::int64_t>((std::min({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits, drawable.minY);
-    const std::int64_t maxY = std::min<std::int64_t>(((std::max({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits) - 1, drawable.maxY);
+    const std::int64_t minX =
+        std::max<std::int64_t>((std::min({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits, drawable.minX);
+    const std::int64_t maxX = std::min<std::int64_t>(
+        ((std::max({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits) - 1, drawable.maxX);
+    const std::int64_t minY =
+        std::max<std::int64_t>((std::min({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits, drawable.minY);
+    const std::int64_t maxY = std::min<std::int64_t>(
+        ((std::max({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits) - 1, drawable.maxY);
     FragmentCounts counts;
     for (std::int64_t py = minY; py <= maxY; ++py) {
         // Each edge bounds the row's span: value(px) = a * px + b > 0.
@@ -221,9 +223,12 @@ void fillQuad(const LineQuad& q, const FragmentInputs& fragment, const PixelRect
         for (const LineEdge& e : edges) {
             const std::int64_t a = -e.dcdx * one;
             const std::int64_t b = e.c + e.dcdy * py * one;
-            if (a > 0) first = std::max(first, floorDiv(-b, a) + 1);
-            else if (a < 0) last = std::min(last, -floorDiv(-b, -a) - 1);
-            else if (b <= 0) last = first - 1;
+            if (a > 0)
+                first = std::max(first, floorDiv(-b, a) + 1);
+            else if (a < 0)
+                last = std::min(last, -floorDiv(-b, -a) - 1);
+            else if (b <= 0)
+                last = first - 1;
         }
         if (first <= last) {
             fragment.shadeSpan(static_cast<int>(py), static_cast<int>(first), static_cast<int>(last), fb, counts);
@@ -233,8 +238,8 @@ void fillQuad(const LineQuad& q, const FragmentInputs& fragment, const PixelRect
 }
 
 bool isUsable(const WindowVertex& v) {
-    return std::fabs(v.x) < kMaxLineCoordinate && std::fabs(v.y) < kMaxLineCoordinate &&
-           std::isfinite(v.z) && std::isfinite(v.invW);
+    return std::fabs(v.x) < kMaxLineCoordinate && std::fabs(v.y) < kMaxLineCoordinate && std::isfinite(v.z) &&
+           std::isfinite(v.invW);
 }
 
 }  // namespace
@@ -276,9 +281,11 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
         fragment.fogCoord = builder.plane(start.fogCoord * start.invW, end.fogCoord * end.invW);
     }
     if (key.textureEnv != TextureEnv::Off) {
-        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, builder, start, end);
+        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, builder, start,
+                            end);
     }
-    fillQuad(quad, fragment, drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height()), framebuffer, stats);
+    fillQuad(quad, fragment, drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height()), framebuffer,
+             stats);
 }
 
 }  // namespace glrenderer

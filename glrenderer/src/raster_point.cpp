@@ -80,12 +80,13 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
         fragment.fogCoord = {point.fogCoord * point.invW, 0.0f, 0.0f};
     }
     if (fragment.key.textureEnv != TextureEnv::Off) {
-        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, ConstantPlanes{},
-                            point);
+        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor,
+                            ConstantPlanes{}, point);
     }
     FragmentCounts counts;
     for (std::int64_t row = box.y0; row <= box.y1; ++row) {
-        fragment.shadeSpan(static_cast<int>(row), static_cast<int>(box.x0), static_cast<int>(box.x1), framebuffer, counts);
+        fragment.shadeSpan(static_cast<int>(row), static_cast<int>(box.x0), static_cast<int>(box.x1), framebuffer,
+                           counts);
     }
     addFragmentCounts(stats, counts);
 }

@@ -36,9 +36,12 @@ Span dividedSpan(const RasterTriangle& t, int row, int minX, int maxX) {
     for (const EdgeFunction& edge : t.edges) {
         // Inside where value + stepX * x >= 0.
         const std::int64_t value = edge.valueAtOrigin + edge.stepY * row;
-        if (edge.stepX > 0) begin = std::max(begin, ceilDiv(-value, edge.stepX));
-        else if (edge.stepX < 0) end = std::min(end, floorDiv(value, -edge.stepX));
-        else if (value < 0) return {1, 0};
+        if (edge.stepX > 0)
+            begin = std::max(begin, ceilDiv(-value, edge.stepX));
+        else if (edge.stepX < 0)
+            end = std::min(end, floorDiv(value, -edge.stepX));
+        else if (value < 0)
+            return {1, 0};
     }
     if (begin > end) return {1, 0};
     return {static_cast<int>(begin), static_cast<int>(end)};

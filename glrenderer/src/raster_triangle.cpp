@@ -7,7 +7,6 @@
 
 #include "polygon_offset.h"
 
-
 namespace glrenderer {
 namespace {
 
@@ -92,9 +91,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     const PlaneBuilder planes(v0, v1, v2);
     const bool perspective = key.shading == Shading::Perspective;
     // The planes in lanes of four, each vertex's values loaded as they lie in WindowVertex.
-    const auto lanes = [&](auto valuesOf) {
-        return planes.planes(valuesOf(v0), valuesOf(v1), valuesOf(v2));
-    };
+    const auto lanes = [&](auto valuesOf) { return planes.planes(valuesOf(v0), valuesOf(v1), valuesOf(v2)); };
     const auto oneOverW = [](const WindowVertex& v) { return _mm_set1_ps(v.invW); };
     if (key.shading != Shading::Flat) {
         lanes([&](const WindowVertex& v) {
@@ -112,7 +109,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     // each other in FragmentInputs.
     if (perspective || key.depthTest || key.fog != FogMode::Off || key.textureEnv != TextureEnv::Off) {
         lanes([&](const WindowVertex& v) {
-            const __m128 position = _mm_loadu_ps(&v.x);  // x, y, z, 1 / w
+            const __m128 position = _mm_loadu_ps(&v.x);                                          // x, y, z, 1 / w
             const __m128 fogOverW = _mm_mul_ps(_mm_loadu_ps(&v.secondaryColor.x), oneOverW(v));  // in lane 3
             return _mm_shuffle_ps(position, fogOverW, _MM_SHUFFLE(3, 3, 2, 3));
         }).store(&in.invW, 0, 3);
@@ -123,9 +120,8 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     if (key.textureEnv != TextureEnv::Off) {
         in.setTextureImage(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor);
         // s, t and q divided by w: lanes s, t, r, q.
-        const FourPlanes st = lanes([&](const WindowVertex& v) {
-            return _mm_mul_ps(_mm_loadu_ps(&v.texCoord.x), oneOverW(v));
-        });
+        const FourPlanes st =
+            lanes([&](const WindowVertex& v) { return _mm_mul_ps(_mm_loadu_ps(&v.texCoord.x), oneOverW(v)); });
         st.store(in.texCoord, 0, 2);
         st.store(&in.texCoord[2], 3, 1);
     }
@@ -140,8 +136,8 @@ void rasterizeTriangleExact(const RasterTriangle& t, const PixelRect& rect, Fram
     for (int py = minY; py <= maxY; ++py) {
         std::int64_t e0 = t.edges[0].at(minX, py), e1 = t.edges[1].at(minX, py), e2 = t.edges[2].at(minX, py);
         int runBegin = -1;  // the first pixel of the covered run being walked
-        for (int px = minX; px <= maxX + 1; ++px, e0 += t.edges[0].stepX, e1 += t.edges[1].stepX,
-                 e2 += t.edges[2].stepX) {
+        for (int px = minX; px <= maxX + 1;
+             ++px, e0 += t.edges[0].stepX, e1 += t.edges[1].stepX, e2 += t.edges[2].stepX) {
             const bool inside = px <= maxX && (e0 | e1 | e2) >= 0;
             if (inside && runBegin < 0) runBegin = px;
             if (!inside && runBegin >= 0) {

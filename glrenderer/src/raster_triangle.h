@@ -32,9 +32,7 @@ struct EdgeFunction {
 
     EdgeFunction() = default;
     EdgeFunction(const FixedPoint& a, const FixedPoint& b);
-    std::int64_t at(std::int64_t px, std::int64_t py) const {
-        return valueAtOrigin + stepX * px + stepY * py;
-    }
+    std::int64_t at(std::int64_t px, std::int64_t py) const { return valueAtOrigin + stepX * px + stepY * py; }
 };
 
 // Everything the kernel needs, computed once per triangle so that any tile can draw its part.
@@ -45,7 +43,7 @@ struct alignas(64) RasterTriangle {
     EdgeFunction edges[3];
     int minX = 0, maxX = -1, minY = 0, maxY = -1;  // inclusive pixel bounds, internal rows
     RasterMethod method = RasterMethod::Exact;
-    float meanDepth = 0;                      // for the painter's sort
+    float meanDepth = 0;  // for the painter's sort
     FragmentInputs fragment;
     float windowX[3] = {}, windowY[3] = {};  // unsnapped, for the float methods
 };
@@ -62,7 +60,7 @@ bool prepareTriangle(const SetupTriangle& triangle, const FragmentChoice& fragme
 
 // The exact method over the part of the triangle inside `rect`, tested pixel by pixel: integer
 // edge functions at 1/256 pixel; the covered pixels go through the scalar fragment routine.
-void rasterizeTriangleExact(const RasterTriangle& triangle, const PixelRect& rect,
-                            Framebuffer& framebuffer, FragmentCounts& counts);
+void rasterizeTriangleExact(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
+                            FragmentCounts& counts);
 
 }  // namespace glrenderer

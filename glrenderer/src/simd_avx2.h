@@ -45,7 +45,9 @@ struct Avx2Lanes {
     static Mask lessEqual(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_LE_OQ)); }
     static Mask equal(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_EQ_OQ)); }
     static Mask isNan(Float v) { return _mm256_castps_si256(_mm256_cmp_ps(v, v, _CMP_UNORD_Q)); }
-    static Float select(Mask m, Float ifSet, Float ifClear) { return _mm256_blendv_ps(ifClear, ifSet, _mm256_castsi256_ps(m)); }
+    static Float select(Mask m, Float ifSet, Float ifClear) {
+        return _mm256_blendv_ps(ifClear, ifSet, _mm256_castsi256_ps(m));
+    }
     static Float toFloat(Int v) { return _mm256_cvtepi32_ps(v); }
     static Int roundToInt(Float v) { return _mm256_cvtps_epi32(v); }
     static Int truncateToInt(Float v) { return _mm256_cvttps_epi32(v); }
@@ -71,11 +73,17 @@ struct Avx2Lanes {
     static Int minInt(Int a, Int b) { return _mm256_min_epi32(a, b); }
     static Int maxInt(Int a, Int b) { return _mm256_max_epi32(a, b); }
     template <int N>
-    static Int shiftRightSigned(Int v) { return _mm256_srai_epi32(v, N); }
+    static Int shiftRightSigned(Int v) {
+        return _mm256_srai_epi32(v, N);
+    }
     template <int N>
-    static Int shiftRightUnsigned(Int v) { return _mm256_srli_epi32(v, N); }
+    static Int shiftRightUnsigned(Int v) {
+        return _mm256_srli_epi32(v, N);
+    }
     template <int N>
-    static Int shiftLeft(Int v) { return _mm256_slli_epi32(v, N); }
+    static Int shiftLeft(Int v) {
+        return _mm256_slli_epi32(v, N);
+    }
     static Int shiftRight(Int v, int n) { return _mm256_srl_epi32(v, _mm_cvtsi32_si128(n)); }
 
     static Mask lessThan(Int a, Int b) { return _mm256_cmpgt_epi32(b, a); }
@@ -134,7 +142,8 @@ struct Avx2Lanes {
     // several times slower.
     static Int lookup16(const std::uint32_t* table, Int index) {
         const Int low = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table)), index);
-        const Int high = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + 8)), index);
+        const Int high =
+            _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + 8)), index);
         return select(_mm256_cmpgt_epi32(index, _mm256_set1_epi32(7)), high, low);
     }
     // The lanes of `m` read at base[offsets[i]], the others zero.

@@ -68,11 +68,17 @@ struct Avx512Lanes {
     static Int minInt(Int a, Int b) { return _mm512_min_epi32(a, b); }
     static Int maxInt(Int a, Int b) { return _mm512_max_epi32(a, b); }
     template <int N>
-    static Int shiftRightSigned(Int v) { return _mm512_srai_epi32(v, N); }
+    static Int shiftRightSigned(Int v) {
+        return _mm512_srai_epi32(v, N);
+    }
     template <int N>
-    static Int shiftRightUnsigned(Int v) { return _mm512_srli_epi32(v, N); }
+    static Int shiftRightUnsigned(Int v) {
+        return _mm512_srli_epi32(v, N);
+    }
     template <int N>
-    static Int shiftLeft(Int v) { return _mm512_slli_epi32(v, N); }
+    static Int shiftLeft(Int v) {
+        return _mm512_slli_epi32(v, N);
+    }
     static Int shiftRight(Int v, int n) { return _mm512_srl_epi32(v, _mm_cvtsi32_si128(n)); }
 
     static Mask lessThan(Int a, Int b) { return _mm512_cmplt_epi32_mask(a, b); }

@@ -55,7 +55,8 @@ struct ScalarLanes {
     }
     // Towards zero, as cvttps2dq: NaN and values out of range give INT_MIN.
     static Int truncateToInt(Float v) {
-        return std::isfinite(v) && std::fabs(v) < 2147483648.0f ? static_cast<Int>(static_cast<std::int32_t>(v)) : 0x80000000u;
+        return std::isfinite(v) && std::fabs(v) < 2147483648.0f ? static_cast<Int>(static_cast<std::int32_t>(v))
+                                                                : 0x80000000u;
     }
     static Int bitsOf(Float v) { return std::bit_cast<Int>(v); }
     static Float fromBits(Int v) { return std::bit_cast<Float>(v); }
@@ -67,9 +68,13 @@ struct ScalarLanes {
     static Int minInt(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b) ? a : b; }
     static Int maxInt(Int a, Int b) { return static_cast<std::int32_t>(a) > static_cast<std::int32_t>(b) ? a : b; }
     template <int N>
-    static Int shiftRightSigned(Int v) { return static_cast<Int>(static_cast<std::int32_t>(v) >> N); }
+    static Int shiftRightSigned(Int v) {
+        return static_cast<Int>(static_cast<std::int32_t>(v) >> N);
+    }
     template <int N>
-    static Int shiftRightUnsigned(Int v) { return v >> N; }
+    static Int shiftRightUnsigned(Int v) {
+        return v >> N;
+    }
     static Mask lessThan(Int a, Int b) { return static_cast<std::int32_t>(a) < static_cast<std::int32_t>(b); }
     static Int select(Mask m, Int ifSet, Int ifClear) { return m ? ifSet : ifClear; }
     static Mask greaterThan(Float a, Float b) { return a > b; }
@@ -78,7 +83,8 @@ struct ScalarLanes {
     static Int lerpFields(Int w, Int a, Int b) {
         Int out = 0;
         for (int shift = 0; shift < 32; shift += 16) {
-            const auto x = static_cast<std::int32_t>((a >> shift) & 0xFFFF), y = static_cast<std::int32_t>((b >> shift) & 0xFFFF);
+            const auto x = static_cast<std::int32_t>((a >> shift) & 0xFFFF),
+                       y = static_cast<std::int32_t>((b >> shift) & 0xFFFF);
             const std::int32_t lerped = x + ((static_cast<std::int32_t>(w) * (y - x) + 128) >> 8);
             out |= static_cast<Int>(lerped) << shift;
         }
@@ -102,7 +108,9 @@ struct ScalarLanes {
         return std::min(a & 0xFFFF, b & 0xFFFF) | std::min(a & 0xFFFF0000, b & 0xFFFF0000);
     }
     template <int N>
-    static Int shiftLeft(Int v) { return v << N; }
+    static Int shiftLeft(Int v) {
+        return v << N;
+    }
     static Int shiftRight(Int v, int n) { return v >> n; }
 
     // Lane 0 when first <= 0 <= last.

@@ -25,8 +25,9 @@ bool isUsable(const WindowVertex& v) {
 }  // namespace
 
 void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
-                        const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage, const FragmentChoice& fragments,
-                        const PixelRect& drawable, Framebuffer& framebuffer, FragmentCounts& counts) {
+                        const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage,
+                        const FragmentChoice& fragments, const PixelRect& drawable, Framebuffer& framebuffer,
+                        FragmentCounts& counts) {
     if (!isUsable(a.v) || !isUsable(b.v) || !isUsable(c.v)) return;
     const FixedPoint fa = snap(a.v), fb = snap(b.v), fc = snap(c.v);
     const std::int64_t area = fixedArea(fa, fb, fc);
@@ -38,9 +39,11 @@ void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const Smoo
     const FixedPoint& e2 = clockwise ? fc : fb;
     const EdgeFunction edges[3] = {EdgeFunction(fa, e1), EdgeFunction(e1, e2), EdgeFunction(e2, fa)};
     const int minX = static_cast<int>(std::max<std::int64_t>(ceilToPixel(std::min({fa.x, fb.x, fc.x})), drawable.minX));
-    const int maxX = static_cast<int>(std::min<std::int64_t>(floorToPixel(std::max({fa.x, fb.x, fc.x})), drawable.maxX));
+    const int maxX =
+        static_cast<int>(std::min<std::int64_t>(floorToPixel(std::max({fa.x, fb.x, fc.x})), drawable.maxX));
     const int minY = static_cast<int>(std::max<std::int64_t>(ceilToPixel(std::min({fa.y, fb.y, fc.y})), drawable.minY));
-    const int maxY = static_cast<int>(std::min<std::int64_t>(floorToPixel(std::max({fa.y, fb.y, fc.y})), drawable.maxY));
+    const int maxY =
+        static_cast<int>(std::min<std::int64_t>(floorToPixel(std::max({fa.y, fb.y, fc.y})), drawable.maxY));
     if (minX > maxX || minY > maxY) return;
 
     const SmoothVertex& s0 = clockwise ? b : a;
@@ -72,7 +75,8 @@ void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const Smoo
         fragment.fogCoord = perspective(v0.fogCoord, v1.fogCoord, v2.fogCoord);
     }
     if (key.textureEnv != TextureEnv::Off) {
-        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, planes, v0, v1, v2);
+        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, planes, v0, v1,
+                            v2);
     }
     for (int py = minY; py <= maxY; ++py) {
         for (int px = minX; px <= maxX; ++px) {

@@ -44,7 +44,8 @@ SmoothShading smoothShading(const DrawState& state);
 // colour reaches it per fragment). `flatColor` is the colour under flat shading.
 // The shading's `covered` gives the colour the stage takes (smoothShading).
 void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
-                        const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage, const FragmentChoice& fragments,
-                        const PixelRect& drawable, Framebuffer& framebuffer, FragmentCounts& counts);
+                        const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage,
+                        const FragmentChoice& fragments, const PixelRect& drawable, Framebuffer& framebuffer,
+                        FragmentCounts& counts);
 
 }  // namespace glrenderer

@@ -17,8 +17,10 @@ typename L::Float unormToFloat(typename L::Int byte) {
 // Byte `Shift / 8` of each word.
 template <class L, int Shift>
 typename L::Int channel(typename L::Int word) {
-    if constexpr (Shift == 24) return L::template shiftRightUnsigned<24>(word);
-    else return L::bitAnd(L::template shiftRightUnsigned<Shift>(word), L::ints(0xFF));
+    if constexpr (Shift == 24)
+        return L::template shiftRightUnsigned<24>(word);
+    else
+        return L::bitAnd(L::template shiftRightUnsigned<Shift>(word), L::ints(0xFF));
 }
 
 // The four channels of texel words as floats in [0, 1].

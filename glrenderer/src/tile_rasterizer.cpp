@@ -63,8 +63,7 @@ void prefetch(const RasterTriangle& triangle) {
 }  // namespace
 
 TileRasterizer::TileRasterizer(Framebuffer& framebuffer)
-    : framebuffer_(framebuffer), pool_(workerThreadCount()),
-      threadCounts_(pool_.threadCount()) {}
+    : framebuffer_(framebuffer), pool_(workerThreadCount()), threadCounts_(pool_.threadCount()) {}
 
 void TileRasterizer::refitTiles() {
     binnedWidth_ = framebuffer_.width();
@@ -141,8 +140,8 @@ void TileRasterizer::clearTile(std::size_t tile, const PixelRect& rect, bool dra
     const std::size_t width = static_cast<std::size_t>(framebuffer_.width());
     const auto count = static_cast<std::size_t>(rect.maxX - rect.minX + 1);
     for (int row = rect.minY; row <= rect.maxY; ++row) {
-        const std::size_t begin = static_cast<std::size_t>(framebuffer_.height() - 1 - row) * width +
-                                  static_cast<std::size_t>(rect.minX);
+        const std::size_t begin =
+            static_cast<std::size_t>(framebuffer_.height() - 1 - row) * width + static_cast<std::size_t>(rect.minX);
         if (color) fillPixels(framebuffer_.color().data() + begin, count, clear_.rgba, !drawnNext);
         if (depth) fillPixels(framebuffer_.depth().data() + begin, count, clear_.depth24, !drawnNext);
     }
@@ -153,13 +152,12 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     const int tx = static_cast<int>(tile % static_cast<std::size_t>(tilesX_));
     const int ty = static_cast<int>(tile / static_cast<std::size_t>(tilesX_));
     const int size = tileSize();
-    const PixelRect rect{tx * size, std::min((tx + 1) * size, binnedWidth_) - 1,
-                         ty * size, std::min((ty + 1) * size, binnedHeight_) - 1};
+    const PixelRect rect{tx * size, std::min((tx + 1) * size, binnedWidth_) - 1, ty * size,
+                         std::min((ty + 1) * size, binnedHeight_) - 1};
     std::vector<const RasterTriangle*>& bin = bins_[tile];
     if (paintersSort) {
-        std::stable_sort(bin.begin(), bin.end(), [](const RasterTriangle* a, const RasterTriangle* b) {
-            return a->meanDepth > b->meanDepth;
-        });
+        std::stable_sort(bin.begin(), bin.end(),
+                         [](const RasterTriangle* a, const RasterTriangle* b) { return a->meanDepth > b->meanDepth; });
     }
     if (clearPending_[tile]) {
         clearTile(tile, rect, !bin.empty());
@@ -182,7 +180,9 @@ void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     if (queued_ == 0 && !clearing) return;
     startDrawingTiles();
     for (ThreadCounts& c : threadCounts_) c.counts = {};
-    auto drawAny = [&](std::size_t tile, unsigned thread) { drawTile(tile, threadCounts_[thread].counts, paintersSort); };
+    auto drawAny = [&](std::size_t tile, unsigned thread) {
+        drawTile(tile, threadCounts_[thread].counts, paintersSort);
+    };
     const std::size_t pixels = static_cast<std::size_t>(binnedWidth_) * static_cast<std::size_t>(binnedHeight_);
     if (queued_ < kParallelThreshold && !(clearing && pixels >= kParallelClearPixels)) {
         for (std::size_t tile = 0; tile < bins_.size(); ++tile) drawAny(tile, 0);

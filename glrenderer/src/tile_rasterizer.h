@@ -102,8 +102,8 @@ private:
     std::uint32_t heldRgba_ = 0, heldDepth24_ = 0;
     std::uint64_t heldGeneration_ = 0;
     TriangleArena arena_;
-    ArenaWriter writer_{arena_};  // for slot() and keep()
-    std::size_t queued_ = 0;      // binned and not drawn yet
+    ArenaWriter writer_{arena_};                            // for slot() and keep()
+    std::size_t queued_ = 0;                                // binned and not drawn yet
     std::vector<std::vector<const RasterTriangle*>> bins_;  // per tile, in submission order
     // Per tile, triangles binned since the last flush: what its bin may have to hold next time,
     // however much of it is drawn early (which depends on timing).

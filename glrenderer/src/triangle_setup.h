@@ -105,8 +105,8 @@ public:
         FourPlanes p;
         p.dadx = _mm_sub_ps(_mm_mul_ps(da01, _mm_set1_ps(dy20Scaled_)), _mm_mul_ps(da20, _mm_set1_ps(dy01Scaled_)));
         p.dady = _mm_sub_ps(_mm_mul_ps(da20, _mm_set1_ps(dx01Scaled_)), _mm_mul_ps(da01, _mm_set1_ps(dx20Scaled_)));
-        p.a0 = _mm_sub_ps(a0, _mm_add_ps(_mm_mul_ps(p.dadx, _mm_set1_ps(x0Center_)),
-                                         _mm_mul_ps(p.dady, _mm_set1_ps(y0Center_))));
+        p.a0 = _mm_sub_ps(
+            a0, _mm_add_ps(_mm_mul_ps(p.dadx, _mm_set1_ps(x0Center_)), _mm_mul_ps(p.dady, _mm_set1_ps(y0Center_))));
         return p;
     }
 

@@ -28,8 +28,10 @@ void decomposeWithEdges(PrimitiveMode mode, std::uint32_t n, Emit&& emit) {
         break;
     case PrimitiveMode::TriangleStrip:
         for (std::uint32_t i = 0; i + 2 < n; ++i) {
-            if (i % 2 == 0) emit(i, i + 1, i + 2, kAllEdges | kResetStipple);
-            else emit(i + 1, i, i + 2, kAllEdges | kResetStipple);
+            if (i % 2 == 0)
+                emit(i, i + 1, i + 2, kAllEdges | kResetStipple);
+            else
+                emit(i + 1, i, i + 2, kAllEdges | kResetStipple);
         }
         break;
     case PrimitiveMode::TriangleFan:
@@ -56,8 +58,7 @@ void decomposeWithEdges(PrimitiveMode mode, std::uint32_t n, Emit&& emit) {
             emit(i + 1, i + 2, 0, edges);
         }
         break;
-    default:
-        break;
+    default: break;
     }
 }
 
@@ -79,7 +80,8 @@ struct Polygon {
 // plane keeps its flag up to the cut; the new edge along the plane is hidden for the view
 // volume's planes and drawn for the program's.
 // Returns false if the polygon vanished or a distance is not finite.
-bool clipPolygon(Polygon& polygon, Outcode outcodeUnion, const ViewportTransform& viewport, const UserClipPlanes& user) {
+bool clipPolygon(Polygon& polygon, Outcode outcodeUnion, const ViewportTransform& viewport,
+                 const UserClipPlanes& user) {
     Polygon out;
     for (int plane = 0; plane < kClipPlaneCount; ++plane) {
         if (!(outcodeUnion & (1u << plane))) continue;
@@ -117,15 +119,19 @@ class UnfilledDrawer {
 public:
     UnfilledDrawer(const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                    const UnfilledTarget& target)
-        : state_(state), anyEdgeShown_(anyEdgeShown), framebuffer_(framebuffer), stats_(stats), target_(target),
+        : state_(state),
+          anyEdgeShown_(anyEdgeShown),
+          framebuffer_(framebuffer),
+          stats_(stats),
+          target_(target),
           lineFragments_(bestFragmentPaths(), state.lineSmooth ? smoothFragmentKey(state) : fragmentKey(state), state),
           pointFragments_(bestFragmentPaths(), state.pointSmooth ? smoothFragmentKey(state) : flatFragmentKey(state),
                           state) {}
 
     // One triangle out of the clipper (provoking vertex last) with its edge bits and the
     // provoking vertex (for its flat colours).
-    void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c,
-                  std::uint8_t edges, const ClipVertex& provoking) {
+    void triangle(const PolygonVertex& a, const PolygonVertex& b, const PolygonVertex& c, std::uint8_t edges,
+                  const ClipVertex& provoking) {
         WindowVertex w0 = a.window, w1 = b.window, w2 = c.window;
         const float det = drawModuleDeterminant(w0, w1, w2);
         const bool front = drawModuleFacing(det, state_.frontFaceCCW) == Facing::Front;
@@ -142,8 +148,8 @@ public:
             w1.secondaryColor = secondary(flat ? provoking : b.clip);
             w2.secondaryColor = secondary(flat ? provoking : c.clip);
         }
-        const bool culled = state_.cullEnabled &&
-                            (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front);
+        const bool culled =
+            state_.cullEnabled && (state_.cullFace == Face::FrontAndBack || (state_.cullFace == Face::Front) == front);
         // With every edge hidden, the reference culls the faces drawn as lines or points.
         const bool hidden = !anyEdgeShown_ && (front ? state_.polygonFront : state_.polygonBack) != PolygonMode::Fill;
         if (culled || hidden) {
@@ -168,7 +174,8 @@ public:
         ++stats_.rasterized;
         target_.beforeLinesOrPoints();
         const bool flat = state_.shadeModel == ShadeModel::Flat;
-        if (mode == PolygonMode::Line && (edges & kResetStipple) && target_.feedback) target_.feedback->resetLineStipple();
+        if (mode == PolygonMode::Line && (edges & kResetStipple) && target_.feedback)
+            target_.feedback->resetLineStipple();
         if (mode == PolygonMode::Line) {
             if ((edges & kEdge2) && c.edgeFlag) line(w2, w0, flatColor);
             if ((edges & kEdge0) && a.edgeFlag) line(w0, w1, flatColor);
@@ -198,7 +205,8 @@ private:
     void line(const WindowVertex& from, const WindowVertex& to, const glm::vec4& flatColor) {
         if (target_.feedback) return target_.feedback->line(flatColored(from, flatColor), flatColored(to, flatColor));
         const auto draw = [&](const WindowVertex& a, const WindowVertex& b) {
-            if (state_.lineSmooth) return rasterizeSmoothLine(a, b, flatColor, state_, lineFragments_, framebuffer_, stats_);
+            if (state_.lineSmooth)
+                return rasterizeSmoothLine(a, b, flatColor, state_, lineFragments_, framebuffer_, stats_);
             rasterizeLine(a, b, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
         };
         if (stippling_) return target_.stippler->cut(state_.lineStipple, from, to, state_.lineSmooth, draw);
@@ -233,15 +241,13 @@ private:
 
 }  // namespace
 
-void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
-                       std::span<const Outcode> outcodes,
+void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices, std::span<const Outcode> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
                        const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                        const UnfilledTarget& target) {
     UnfilledDrawer drawer(state, anyEdgeShown, framebuffer, stats, target);
     const auto count = static_cast<std::uint32_t>(vertices.size());
-    decomposeWithEdges(mode, count, [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2,
-                                        std::uint8_t edges) {
+    decomposeWithEdges(mode, count, [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, std::uint8_t edges) {
         ++stats.triangles;
         const std::uint32_t index[3] = {i0, i1, i2};
         Polygon polygon;
@@ -255,7 +261,8 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
             drawer.triangle(polygon.v[0], polygon.v[1], polygon.v[2], edges, vertices[i2]);
             return;
         }
-        if ((outcodes[i0] & outcodes[i1] & outcodes[i2]) || !clipPolygon(polygon, outside, viewport, state.clipPlanes)) {
+        if ((outcodes[i0] & outcodes[i1] & outcodes[i2]) ||
+            !clipPolygon(polygon, outside, viewport, state.clipPlanes)) {
             ++stats.clippedAway;
             return;
         }

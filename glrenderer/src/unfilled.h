@@ -37,8 +37,7 @@ struct UnfilledTarget {
 // triangle's provoking vertex color for all of it. `anyEdgeShown` false: the vertices carry no
 // edge flags of their own and the current one is false, so every edge is hidden; the reference
 // then culls the faces drawn as lines or points (even the edges clip planes make).
-void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
-                       std::span<const Outcode> outcodes,
+void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices, std::span<const Outcode> outcodes,
                        std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
                        const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
                        const UnfilledTarget& target);

@@ -101,7 +101,7 @@ void lightChunk(BatchChunk& chunk) {
 }
 
 Outcode stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
-                           const ViewportTransform& viewport, const StagedVertices& out) {
+                      const ViewportTransform& viewport, const StagedVertices& out) {
     const ColumnTransform toClip(modelviewProjection);
     Outcode anyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {

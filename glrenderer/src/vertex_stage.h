@@ -35,7 +35,7 @@ public:
 
 private:
     std::vector<glm::vec4> clipPositions_;
-    std::vector<float> fogCoordinates_;  // empty without fog
+    std::vector<float> fogCoordinates_;      // empty without fog
     std::vector<glm::vec4> texCoordinates_;  // empty without texturing
     std::vector<Outcode> outcodes_;
     std::vector<WindowVertex> windowVertices_;
@@ -56,10 +56,10 @@ struct StagedVertices {
     WindowVertex* windowVertices;
 };
 Outcode stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
-                           const ViewportTransform& viewport, const StagedVertices& out);
+                      const ViewportTransform& viewport, const StagedVertices& out);
 
 // The version for CPUs with FMA, compiled for them; only call it after cpuHasFma().
 Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
-                              const ViewportTransform& viewport, const StagedVertices& out);
+                         const ViewportTransform& viewport, const StagedVertices& out);
 
 }  // namespace glrenderer

@@ -21,7 +21,7 @@ Outcode outcodeFromLanes(int outsideMinus, int outsidePlus) {
 }  // namespace
 
 Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
-                              const ViewportTransform& viewport, const StagedVertices& out) {
+                         const ViewportTransform& viewport, const StagedVertices& out) {
     const ColumnTransform toClip(modelviewProjection);
     const __m128 scale = _mm_setr_ps(viewport.scaleX(), viewport.scaleY(), viewport.scaleZ(), 0.0f);
     const __m128 translate = _mm_setr_ps(viewport.translateX(), viewport.translateY(), viewport.translateZ(), 0.0f);

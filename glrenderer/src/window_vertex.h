@@ -15,7 +15,7 @@ struct WindowVertex {
     // Only with DrawState::secondaryColors; under flat shading every vertex of a primitive
     // carries its provoking vertex's (the flat primary colour goes apart, as a word).
     glm::vec3 secondaryColor{0.0f};
-    float fogCoord = 0;  // only with fog
+    float fogCoord = 0;                          // only with fog
     glm::vec4 texCoord{0.0f, 0.0f, 0.0f, 1.0f};  // only with texturing
 };
 

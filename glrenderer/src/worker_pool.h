@@ -27,7 +27,8 @@ public:
     // task(std::size_t index, unsigned thread); called by reference, never copied (no allocation).
     template <class Task>
     void run(std::size_t count, Task& task) {
-        run(count, Job{&task, [](void* t, std::size_t index, unsigned thread) { (*static_cast<Task*>(t))(index, thread); }});
+        run(count,
+            Job{&task, [](void* t, std::size_t index, unsigned thread) { (*static_cast<Task*>(t))(index, thread); }});
     }
 
 private:
@@ -45,9 +46,9 @@ private:
     std::mutex mutex_;
     std::condition_variable wake_;
     std::condition_variable done_;
-    Job job_{nullptr, nullptr};  // the current job; job_.task is null between jobs
+    Job job_{nullptr, nullptr};                // the current job; job_.task is null between jobs
     std::atomic<std::uint64_t> remaining_{0};  // not taken yet: [front, back), front in the low half
-    unsigned busy_ = 0;  // workers inside the current job
+    unsigned busy_ = 0;                        // workers inside the current job
     unsigned generation_ = 0;
     bool stopping_ = false;
 };

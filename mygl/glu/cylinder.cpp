@@ -16,9 +16,14 @@ using mygl::glu::QuadricAttributes;
 class CylinderGrid {
 public:
     CylinderGrid(const GLUquadric& quadric, double base, double top, double height, int slices, int stacks)
-        : attributes_(quadric), flat_(quadric.normals == GLU_FLAT), slices_(slices), stacks_(stacks),
-          base_(static_cast<float>(base)), deltaRadius_(static_cast<float>(base - top)),
-          height_(static_cast<float>(height)), angle_(slices, 0.0, 2.0 * M_PI / slices, true),
+        : attributes_(quadric),
+          flat_(quadric.normals == GLU_FLAT),
+          slices_(slices),
+          stacks_(stacks),
+          base_(static_cast<float>(base)),
+          deltaRadius_(static_cast<float>(base - top)),
+          height_(static_cast<float>(height)),
+          angle_(slices, 0.0, 2.0 * M_PI / slices, true),
           facetAngle_(slices, -M_PI / slices, 2.0 * M_PI / slices, true) {
         // The surface normal leans along z by the slope of the side.
         const double length = std::hypot(base - top, height);
@@ -52,7 +57,9 @@ public:
         mygl::glu::gridLines(slices_, stacks_, 0, stacks_, step, [this](int i, int j) { vertex(i, j); });
     }
 
-    void points() const { mygl::glu::gridPoints(slices_, stacks_, [this](int i, int j) { vertex(i, j); }); }
+    void points() const {
+        mygl::glu::gridPoints(slices_, stacks_, [this](int i, int j) { vertex(i, j); });
+    }
 
 private:
     QuadricAttributes attributes_;

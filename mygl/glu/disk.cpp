@@ -18,13 +18,15 @@ class DiskGrid {
 public:
     DiskGrid(const GLUquadric& quadric, double inner, double outer, int slices, int loops, double startDegrees,
              double sweepDegrees)
-        : attributes_(quadric), slices_(slices), loops_(loops), full_(sweepDegrees == 360.0),
-          inner_(static_cast<float>(inner)), outer_(static_cast<float>(outer)),
+        : attributes_(quadric),
+          slices_(slices),
+          loops_(loops),
+          full_(sweepDegrees == 360.0),
+          inner_(static_cast<float>(inner)),
+          outer_(static_cast<float>(outer)),
           angle_(slices, startDegrees * M_PI / 180.0, sweepDegrees * M_PI / 180.0 / slices, full_) {}
 
-    float radius(int loop) const {
-        return outer_ - (outer_ - inner_) * fraction(loop, loops_);
-    }
+    float radius(int loop) const { return outer_ - (outer_ - inner_) * fraction(loop, loops_); }
     void vertex(int i, float r) const {
         const float t = r / outer_ / 2.0f;
         attributes_.texCoord(t * angle_.sin[i] + 0.5f, t * angle_.cos[i] + 0.5f);

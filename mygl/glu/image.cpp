@@ -74,20 +74,32 @@ double overlap(int source, double begin, double end) {
 
 int componentCount(GLenum format) {
     switch (format) {
-    case GL_COLOR_INDEX: case GL_STENCIL_INDEX: case GL_DEPTH_COMPONENT: case GL_RED: case GL_GREEN:
-    case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: return 1;
+    case GL_COLOR_INDEX:
+    case GL_STENCIL_INDEX:
+    case GL_DEPTH_COMPONENT:
+    case GL_RED:
+    case GL_GREEN:
+    case GL_BLUE:
+    case GL_ALPHA:
+    case GL_LUMINANCE: return 1;
     case GL_LUMINANCE_ALPHA: return 2;
-    case GL_RGB: case 0x80E0: return 3;  // GL_BGR
-    case GL_RGBA: case 0x80E1: return 4;  // GL_BGRA
+    case GL_RGB:
+    case 0x80E0: return 3;  // GL_BGR
+    case GL_RGBA:
+    case 0x80E1: return 4;  // GL_BGRA
     default: return 0;
     }
 }
 
 int componentBytes(GLenum type) {
     switch (type) {
-    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
-    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
-    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
+    case GL_UNSIGNED_BYTE:
+    case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT:
+    case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT:
+    case GL_INT:
+    case GL_FLOAT: return 4;
     default: return 0;
     }
 }
@@ -117,7 +129,8 @@ void writeImage(const FloatImage& image, GLenum type, int alignment, void* data)
     std::size_t in = 0;
     for (int y = 0; y < image.height; ++y) {
         unsigned char* row = target + stride * y;
-        for (int k = 0; k < image.width * image.components; ++k) writeComponent(type, image.values[in++], row + k * bytes);
+        for (int k = 0; k < image.width * image.components; ++k)
+            writeComponent(type, image.values[in++], row + k * bytes);
     }
 }
 
@@ -136,13 +149,15 @@ FloatImage scaleImage(const FloatImage& image, int width, int height) {
                 const double wy = overlap(v, y0, y1);
                 for (int u = static_cast<int>(x0); u < image.width && u < x1; ++u) {
                     const double weight = wy * overlap(u, x0, x1);
-                    const float* pixel = &image.values[(static_cast<std::size_t>(v) * image.width + u) * image.components];
+                    const float* pixel =
+                        &image.values[(static_cast<std::size_t>(v) * image.width + u) * image.components];
                     for (int c = 0; c < image.components; ++c) sum[c] += weight * pixel[c];
                     area += weight;
                 }
             }
             float* target = &out.values[(static_cast<std::size_t>(y) * width + x) * image.components];
-            for (int c = 0; c < image.components; ++c) target[c] = area > 0.0 ? static_cast<float>(sum[c] / area) : 0.0f;
+            for (int c = 0; c < image.components; ++c)
+                target[c] = area > 0.0 ? static_cast<float>(sum[c] / area) : 0.0f;
         }
     }
     return out;

@@ -28,13 +28,14 @@ void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFa
     const double sine = std::sin(radians);
     if (deltaZ == 0.0 || sine == 0.0 || aspect == 0.0) return;  // as GLU: no change
     const double cotangent = std::cos(radians) / sine;
-    const GLdouble m[16] = {cotangent / aspect, 0, 0, 0, 0, cotangent, 0, 0,
-                            0, 0, -(zFar + zNear) / deltaZ, -1, 0, 0, -2.0 * zNear * zFar / deltaZ, 0};
+    const GLdouble m[16] = {
+        cotangent / aspect,           0, 0, 0, 0, cotangent, 0, 0, 0, 0, -(zFar + zNear) / deltaZ, -1, 0, 0,
+        -2.0 * zNear * zFar / deltaZ, 0};
     glMultMatrixd(m);
 }
 
-void gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GLdouble centerY,
-               GLdouble centerZ, GLdouble upX, GLdouble upY, GLdouble upZ) {
+void gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GLdouble centerY, GLdouble centerZ,
+               GLdouble upX, GLdouble upY, GLdouble upZ) {
     double forward[3] = {centerX - eyeX, centerY - eyeY, centerZ - eyeZ};
     const double up[3] = {upX, upY, upZ};
     normalize(forward);
@@ -43,7 +44,7 @@ void gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GL
     normalize(side);
     cross(side, forward, trueUp);
     const GLdouble m[16] = {side[0], trueUp[0], -forward[0], 0, side[1], trueUp[1], -forward[1], 0,
-                            side[2], trueUp[2], -forward[2], 0, 0, 0, 0, 1};
+                            side[2], trueUp[2], -forward[2], 0, 0,       0,         0,           1};
     glMultMatrixd(m);
     glTranslated(-eyeX, -eyeY, -eyeZ);
 }
@@ -55,8 +56,7 @@ void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top) {
 // Maps the region of delX x delY pixels centred on (x, y) of the viewport to the whole clip volume.
 void gluPickMatrix(GLdouble x, GLdouble y, GLdouble delX, GLdouble delY, GLint* viewport) {
     if (!viewport || delX <= 0.0 || delY <= 0.0) return;  // as GLU: no change
-    glTranslated((viewport[2] - 2.0 * (x - viewport[0])) / delX,
-                 (viewport[3] - 2.0 * (y - viewport[1])) / delY, 0.0);
+    glTranslated((viewport[2] - 2.0 * (x - viewport[0])) / delX, (viewport[3] - 2.0 * (y - viewport[1])) / delY, 0.0);
     glScaled(viewport[2] / delX, viewport[3] / delY, 1.0);
 }
 

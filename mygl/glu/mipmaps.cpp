@@ -35,8 +35,7 @@ int powerOfTwoAtMost(int value) {
 }
 
 // Loads every level of `image`, with unpack alignment 1 for the packed levels GLU made itself.
-GLint buildMipmaps(GLenum target, GLint internalFormat, int dimensions, FloatImage image, GLenum format,
-                   GLenum type) {
+GLint buildMipmaps(GLenum target, GLint internalFormat, int dimensions, FloatImage image, GLenum format, GLenum type) {
     // A GL table without the texture calls (a backend that lacks them) gets an error, not a crash.
     if (!glPixelStorei || (dimensions == 1 ? !glTexImage1D : !glTexImage2D)) {
         return GLU_INVALID_OPERATION;
@@ -53,7 +52,8 @@ GLint buildMipmaps(GLenum target, GLint internalFormat, int dimensions, FloatIma
             glTexImage2D(target, level, internalFormat, image.width, image.height, 0, format, type, bytes.data());
         }
         if (image.width == 1 && image.height == 1) break;
-        image = mygl::glu::scaleImage(image, image.width > 1 ? image.width / 2 : 1, image.height > 1 ? image.height / 2 : 1);
+        image = mygl::glu::scaleImage(image, image.width > 1 ? image.width / 2 : 1,
+                                      image.height > 1 ? image.height / 2 : 1);
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, savedAlignment);
     return 0;
@@ -88,8 +88,8 @@ GLint gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLen
     return build(target, internalFormat, 1, width, 1, format, type, data);
 }
 
-GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format,
-                        GLenum type, const void* data) {
+GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                        const void* data) {
     return build(target, internalFormat, 2, width, height, format, type, data);
 }
 

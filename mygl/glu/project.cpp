@@ -11,14 +11,13 @@ using mygl::glu::transform;
 namespace {
 
 // Window coordinates back to object coordinates through the inverse of proj * model.
-bool unproject(const double window[4], const GLdouble* model, const GLdouble* proj, const GLint* view,
-               double depthNear, double depthFar, double out[4]) {
+bool unproject(const double window[4], const GLdouble* model, const GLdouble* proj, const GLint* view, double depthNear,
+               double depthFar, double out[4]) {
     if (!model || !proj || !view || view[2] == 0 || view[3] == 0 || depthFar == depthNear) return false;
     double product[16], inverse[16];
     multiply(proj, model, product);
     if (!invert(product, inverse)) return false;
-    const double ndc[4] = {(window[0] - view[0]) / view[2] * 2.0 - 1.0,
-                           (window[1] - view[1]) / view[3] * 2.0 - 1.0,
+    const double ndc[4] = {(window[0] - view[0]) / view[2] * 2.0 - 1.0, (window[1] - view[1]) / view[3] * 2.0 - 1.0,
                            (window[2] - depthNear) / (depthFar - depthNear) * 2.0 - 1.0, window[3]};
     transform(inverse, ndc, out);
     return true;
@@ -28,9 +27,8 @@ bool unproject(const double window[4], const GLdouble* model, const GLdouble* pr
 
 extern "C" {
 
-GLint gluProject(GLdouble objX, GLdouble objY, GLdouble objZ, const GLdouble* model,
-                 const GLdouble* proj, const GLint* view, GLdouble* winX, GLdouble* winY,
-                 GLdouble* winZ) {
+GLint gluProject(GLdouble objX, GLdouble objY, GLdouble objZ, const GLdouble* model, const GLdouble* proj,
+                 const GLint* view, GLdouble* winX, GLdouble* winY, GLdouble* winZ) {
     if (!model || !proj || !view || !winX || !winY || !winZ) return GL_FALSE;
     const double object[4] = {objX, objY, objZ, 1.0};
     double eye[4], clip[4];
@@ -44,9 +42,8 @@ GLint gluProject(GLdouble objX, GLdouble objY, GLdouble objZ, const GLdouble* mo
     return GL_TRUE;
 }
 
-GLint gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble* model,
-                   const GLdouble* proj, const GLint* view, GLdouble* objX, GLdouble* objY,
-                   GLdouble* objZ) {
+GLint gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble* model, const GLdouble* proj,
+                   const GLint* view, GLdouble* objX, GLdouble* objY, GLdouble* objZ) {
     const double window[4] = {winX, winY, winZ, 1.0};
     double object[4];
     if (!objX || !objY || !objZ || !unproject(window, model, proj, view, 0.0, 1.0, object)) return GL_FALSE;
@@ -57,10 +54,9 @@ GLint gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble* 
     return GL_TRUE;
 }
 
-GLint gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW,
-                    const GLdouble* model, const GLdouble* proj, const GLint* view,
-                    GLdouble nearVal, GLdouble farVal, GLdouble* objX, GLdouble* objY,
-                    GLdouble* objZ, GLdouble* objW) {
+GLint gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW, const GLdouble* model,
+                    const GLdouble* proj, const GLint* view, GLdouble nearVal, GLdouble farVal, GLdouble* objX,
+                    GLdouble* objY, GLdouble* objZ, GLdouble* objW) {
     const double window[4] = {winX, winY, winZ, clipW};
     double object[4];
     if (!objX || !objY || !objZ || !objW || !unproject(window, model, proj, view, nearVal, farVal, object)) {

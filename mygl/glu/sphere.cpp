@@ -17,10 +17,15 @@ using mygl::glu::QuadricAttributes;
 class SphereGrid {
 public:
     SphereGrid(const GLUquadric& quadric, double radius, int slices, int stacks)
-        : attributes_(quadric), flat_(quadric.normals == GLU_FLAT), slices_(slices), stacks_(stacks),
-          azimuth_(slices, 0.0, 2.0 * M_PI / slices, true), polar_(stacks, 0.0, M_PI / stacks, false),
+        : attributes_(quadric),
+          flat_(quadric.normals == GLU_FLAT),
+          slices_(slices),
+          stacks_(stacks),
+          azimuth_(slices, 0.0, 2.0 * M_PI / slices, true),
+          polar_(stacks, 0.0, M_PI / stacks, false),
           facetAzimuth_(slices, -M_PI / slices, 2.0 * M_PI / slices, true),
-          facetPolar_(stacks, 0.5 * M_PI / stacks, M_PI / stacks, false), ringRadius_(stacks + 1),
+          facetPolar_(stacks, 0.5 * M_PI / stacks, M_PI / stacks, false),
+          ringRadius_(stacks + 1),
           ringZ_(stacks + 1) {
         for (int j = 0; j <= stacks; ++j) {
             ringRadius_[j] = static_cast<float>(radius) * polar_.sin[j];
@@ -66,7 +71,9 @@ public:
         mygl::glu::gridLines(slices_, stacks_, 1, stacks_ - 1, 1, [this](int i, int j) { vertex(i, j); });
     }
 
-    void points() const { mygl::glu::gridPoints(slices_, stacks_, [this](int i, int j) { vertex(i, j); }); }
+    void points() const {
+        mygl::glu::gridPoints(slices_, stacks_, [this](int i, int j) { vertex(i, j); });
+    }
 
 private:
     // A triangle fan from the pole of ring `pole` around ring `ring`; the slices run backwards

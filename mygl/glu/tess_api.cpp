@@ -156,7 +156,10 @@ void gluGetTessProperty(GLUtesselator* tess, GLenum which, GLdouble* data) {
     case GLU_TESS_WINDING_RULE: *data = tess->windingRule; return;
     case GLU_TESS_BOUNDARY_ONLY: *data = tess->boundaryOnly ? GL_TRUE : GL_FALSE; return;
     case GLU_TESS_TOLERANCE: *data = tess->tolerance; return;
-    default: *data = 0.0; reportError(*tess, GLU_INVALID_ENUM); return;
+    default:
+        *data = 0.0;
+        reportError(*tess, GLU_INVALID_ENUM);
+        return;
     }
 }
 

@@ -19,7 +19,8 @@ struct Segment {
 class PointIndex {
 public:
     explicit PointIndex(std::vector<Vertex>& vertices) : vertices_(vertices) {
-        for (std::size_t v = 0; v < vertices.size(); ++v) index_.try_emplace({vertices[v].p.s, vertices[v].p.t}, static_cast<int>(v));
+        for (std::size_t v = 0; v < vertices.size(); ++v)
+            index_.try_emplace({vertices[v].p.s, vertices[v].p.t}, static_cast<int>(v));
     }
     // The vertex at v.p if there is one, otherwise v added.
     int findOrAdd(const Vertex& v) {
@@ -115,7 +116,8 @@ private:
     // The pieces of s between its split points, in order along it.
     void appendPieces(const Segment& s, std::vector<int>& at, std::vector<Segment>& pieces) const {
         const Point a = vertices_[s.a].p, b = vertices_[s.b].p;
-        std::sort(at.begin(), at.end(), [&](int x, int y) { return dot(a, vertices_[x].p, b) < dot(a, vertices_[y].p, b); });
+        std::sort(at.begin(), at.end(),
+                  [&](int x, int y) { return dot(a, vertices_[x].p, b) < dot(a, vertices_[y].p, b); });
         at.erase(std::unique(at.begin(), at.end()), at.end());
         int from = s.a;
         for (const int v : at) {
@@ -298,8 +300,8 @@ void findEnclosingCycles(Arrangement& arrangement) {
         for (std::size_t c = 0; c < arrangement.cycles.size(); ++c) {
             const Cycle& cycle = arrangement.cycles[c];
             if (cycle.component == static_cast<int>(k) || !(cycle.area > 0.0) ||
-                static_cast<int>(c) == arrangement.outerCycle[cycle.component] ||
-                !(cycle.area < smallest) || !cycleEncloses(arrangement, static_cast<int>(c), p)) {
+                static_cast<int>(c) == arrangement.outerCycle[cycle.component] || !(cycle.area < smallest) ||
+                !cycleEncloses(arrangement, static_cast<int>(c), p)) {
                 continue;
             }
             smallest = cycle.area;

@@ -15,9 +15,9 @@ struct Point {
 };
 
 struct Vertex {
-    Point p;            // in the projection plane
-    double coords[3];   // in object space, as the program gave them (or as combined)
-    void* data;         // the program's vertex data
+    Point p;           // in the projection plane
+    double coords[3];  // in object space, as the program gave them (or as combined)
+    void* data;        // the program's vertex data
 };
 
 // Makes the vertex at object coordinates `coords` where the edge between the vertices with data
@@ -28,16 +28,16 @@ using CombineVertex = std::function<void*(const double coords[3], void* const so
 struct HalfEdge {
     int origin, target;
     int twin;
-    int next;      // the next half-edge around the face on the left
-    int cycle;     // the face boundary this half-edge belongs to
-    int winding;   // how many contour edges run along it in its direction, minus those against it
+    int next;     // the next half-edge around the face on the left
+    int cycle;    // the face boundary this half-edge belongs to
+    int winding;  // how many contour edges run along it in its direction, minus those against it
 };
 
 struct Cycle {
-    int first;              // one of its half-edges
-    double area;            // signed: > 0 for the boundary of a bounded face (counter-clockwise)
-    int winding = 0;        // winding number of the face on the left of its half-edges
-    int component = -1;     // connected component of the arrangement it belongs to
+    int first;           // one of its half-edges
+    double area;         // signed: > 0 for the boundary of a bounded face (counter-clockwise)
+    int winding = 0;     // winding number of the face on the left of its half-edges
+    int component = -1;  // connected component of the arrangement it belongs to
 };
 
 struct Arrangement {

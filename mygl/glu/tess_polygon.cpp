@@ -76,7 +76,8 @@ public:
             if (!(cycle.area > 0.0) || !kept(static_cast<int>(c))) continue;
             std::vector<std::vector<int>> holeRings;
             for (const int hole : holes[c]) holeRings.push_back(ring(hole));
-            const auto faceTriangles = triangulateFace(arrangement_.vertices, ring(static_cast<int>(c)), std::move(holeRings));
+            const auto faceTriangles =
+                triangulateFace(arrangement_.vertices, ring(static_cast<int>(c)), std::move(holeRings));
             all.insert(all.end(), faceTriangles.begin(), faceTriangles.end());
         }
         if (all.empty()) return;
@@ -136,22 +137,30 @@ private:
     }
 
     void begin(GLenum mode) const {
-        if (tess_.beginData) tess_.beginData(mode, tess_.polygonData);
-        else if (tess_.begin) tess_.begin(mode);
+        if (tess_.beginData)
+            tess_.beginData(mode, tess_.polygonData);
+        else if (tess_.begin)
+            tess_.begin(mode);
     }
     void vertex(int v) const {
         void* data = arrangement_.vertices[v].data;
-        if (tess_.vertexData) tess_.vertexData(data, tess_.polygonData);
-        else if (tess_.vertex) tess_.vertex(data);
+        if (tess_.vertexData)
+            tess_.vertexData(data, tess_.polygonData);
+        else if (tess_.vertex)
+            tess_.vertex(data);
     }
     void end() const {
-        if (tess_.endData) tess_.endData(tess_.polygonData);
-        else if (tess_.end) tess_.end();
+        if (tess_.endData)
+            tess_.endData(tess_.polygonData);
+        else if (tess_.end)
+            tess_.end();
     }
     void edgeFlag(bool flag) const {
         const GLboolean value = flag ? GL_TRUE : GL_FALSE;
-        if (tess_.edgeFlagData) tess_.edgeFlagData(value, tess_.polygonData);
-        else if (tess_.edgeFlag) tess_.edgeFlag(value);
+        if (tess_.edgeFlagData)
+            tess_.edgeFlagData(value, tess_.polygonData);
+        else if (tess_.edgeFlag)
+            tess_.edgeFlag(value);
     }
 
     GLUtesselator& tess_;
@@ -162,8 +171,10 @@ private:
 }  // namespace
 
 void reportError(GLUtesselator& tess, GLenum error) {
-    if (tess.errorData) tess.errorData(error, tess.polygonData);
-    else if (tess.error) tess.error(error);
+    if (tess.errorData)
+        tess.errorData(error, tess.polygonData);
+    else if (tess.error)
+        tess.error(error);
 }
 
 void tessellatePolygon(GLUtesselator& tess) {
@@ -176,8 +187,10 @@ void tessellatePolygon(GLUtesselator& tess) {
         void* sources[4] = {sourceData[0], sourceData[1], sourceData[2], sourceData[3]};
         GLfloat shares[4] = {weights[0], weights[1], weights[2], weights[3]};
         void* made = nullptr;
-        if (tess.combineData) tess.combineData(where, sources, shares, &made, tess.polygonData);
-        else if (tess.combine) tess.combine(where, sources, shares, &made);
+        if (tess.combineData)
+            tess.combineData(where, sources, shares, &made, tess.polygonData);
+        else if (tess.combine)
+            tess.combine(where, sources, shares, &made);
         missingCombine = missingCombine || made == nullptr;
         return made;
     };
@@ -188,8 +201,10 @@ void tessellatePolygon(GLUtesselator& tess) {
         return;
     }
     Emitter emitter(tess, arrangement);
-    if (tess.boundaryOnly) emitter.boundaryLoops();
-    else emitter.triangles();
+    if (tess.boundaryOnly)
+        emitter.boundaryLoops();
+    else
+        emitter.triangles();
 }
 
 }  // namespace mygl::glu::tess

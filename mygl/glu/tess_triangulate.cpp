@@ -35,7 +35,8 @@ public:
 
     // Joins `hole` into `polygon` by a bridge from the hole's rightmost vertex to the nearest
     // polygon vertex it can see, walking the hole from there and back over the bridge.
-    void bridge(std::vector<int>& polygon, const std::vector<int>& hole, const std::vector<std::vector<int>>& others) const {
+    void bridge(std::vector<int>& polygon, const std::vector<int>& hole,
+                const std::vector<std::vector<int>>& others) const {
         std::size_t m = 0;
         for (std::size_t k = 1; k < hole.size(); ++k) {
             const Point &p = at(hole[k]), &best = at(hole[m]);
@@ -50,8 +51,10 @@ public:
             if (!(distance < nearest)) continue;
             const Point& before = at(polygon[(k + polygon.size() - 1) % polygon.size()]);
             const Point& after = at(polygon[(k + 1) % polygon.size()]);
-            if (!insideCorner(before, to, after, from) || blocked(from, to, polygon) || blocked(from, to, hole)) continue;
-            if (std::any_of(others.begin(), others.end(), [&](const auto& other) { return blocked(from, to, other); })) continue;
+            if (!insideCorner(before, to, after, from) || blocked(from, to, polygon) || blocked(from, to, hole))
+                continue;
+            if (std::any_of(others.begin(), others.end(), [&](const auto& other) { return blocked(from, to, other); }))
+                continue;
             nearest = distance;
             chosen = k;
         }

@@ -23,8 +23,8 @@ struct GLUtesselator {
     void (*errorData)(GLenum, void*) = nullptr;
     void (*edgeFlag)(GLboolean) = nullptr;
     void (*edgeFlagData)(GLboolean, void*) = nullptr;
-    void (*combine)(GLdouble[3], void*[4], GLfloat[4], void**) = nullptr;
-    void (*combineData)(GLdouble[3], void*[4], GLfloat[4], void**, void*) = nullptr;
+    void (*combine)(GLdouble[3], void* [4], GLfloat[4], void**) = nullptr;
+    void (*combineData)(GLdouble[3], void* [4], GLfloat[4], void**, void*) = nullptr;
 
     GLenum windingRule = GLU_TESS_WINDING_ODD;
     bool boundaryOnly = false;

@@ -10,8 +10,10 @@ void fillBox(reference::Image& image, int x, int y, int width, int height, Rgba 
     for (int row = y; row < y + height; ++row) {
         for (int column = x; column < x + width; ++column) {
             if (column < 0 || row < 0 || column >= image.width || row >= image.height) continue;
-            const std::size_t index = (static_cast<std::size_t>(image.height - 1 - row) * static_cast<std::size_t>(image.width) +
-                                       static_cast<std::size_t>(column)) * 4;
+            const std::size_t index =
+                (static_cast<std::size_t>(image.height - 1 - row) * static_cast<std::size_t>(image.width) +
+                 static_cast<std::size_t>(column)) *
+                4;
             for (std::size_t c = 0; c < 4; ++c) image.rgba[index + c] = color[c];
         }
     }

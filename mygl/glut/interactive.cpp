@@ -81,10 +81,11 @@ void setCallbacks(Runtime& r) {
         // Without a wheel callback freeglut reports the wheel as buttons 3 (up) and 4 (down).
         if (r.callbacks.mouseWheel) return toProgram(r, [&] { r.callbacks.mouseWheel(0, direction, x, y); });
         const int button = direction > 0 ? 3 : 4;
-        if (r.callbacks.mouse) toProgram(r, [&] {
-            r.callbacks.mouse(button, GLUT_DOWN, x, y);
-            r.callbacks.mouse(button, GLUT_UP, x, y);
-        });
+        if (r.callbacks.mouse)
+            toProgram(r, [&] {
+                r.callbacks.mouse(button, GLUT_DOWN, x, y);
+                r.callbacks.mouse(button, GLUT_UP, x, y);
+            });
     };
     c.motion = [&r](int x, int y, bool buttonDown) {
         if (windowState().menu.isOpen()) {
@@ -135,8 +136,10 @@ void windowPass(Runtime& r) {
     runDueTimers(r);
     if (r.callbacks.idle) r.callbacks.idle();
     applyPendingSize(r);
-    if (r.redisplay) callDisplay(r);
-    else if (!r.callbacks.idle) r.window->waitBriefly();
+    if (r.redisplay)
+        callDisplay(r);
+    else if (!r.callbacks.idle)
+        r.window->waitBriefly();
 }
 
 void runWindow(Runtime& r) {

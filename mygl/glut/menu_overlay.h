@@ -11,7 +11,7 @@
 namespace glut {
 
 struct MenuChoice {
-    int menu;   // whose callback is called
+    int menu;  // whose callback is called
     int value;
 };
 

@@ -63,7 +63,8 @@ int Menus::itemCount() const {
 }
 
 void Menus::attach(int button, int id) {
-    if (button < 0 || button > 2) return void(std::fprintf(stderr, "mygl glut: no mouse button %d for a menu\n", button));
+    if (button < 0 || button > 2)
+        return void(std::fprintf(stderr, "mygl glut: no mouse button %d for a menu\n", button));
     if (id != 0 && !find(id)) return void(std::fprintf(stderr, "mygl glut: glutAttachMenu without a current menu\n"));
     attached_[static_cast<std::size_t>(button)] = id;
 }

@@ -9,7 +9,7 @@ namespace glut {
 
 struct MenuItem {
     std::string label;
-    int value = 0;         // the callback's value, or the submenu's id
+    int value = 0;  // the callback's value, or the submenu's id
     bool submenu = false;
 };
 

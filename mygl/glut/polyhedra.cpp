@@ -51,9 +51,12 @@ Polyhedron withFaces(std::vector<Vec> corners) {
                 std::vector<int> onPlane;
                 for (int i = 0; i < n; ++i) {
                     const double side = dot(normal, p.corners[i]) - d;
-                    if (side > kEpsilon) ++above;
-                    else if (side < -kEpsilon) ++below;
-                    else onPlane.push_back(i);
+                    if (side > kEpsilon)
+                        ++above;
+                    else if (side < -kEpsilon)
+                        ++below;
+                    else
+                        onPlane.push_back(i);
                 }
                 if (above && below) continue;
                 if (above) normal = {-normal[0], -normal[1], -normal[2]};
@@ -73,8 +76,14 @@ Polyhedron withFaces(std::vector<Vec> corners) {
 }
 
 const Polyhedron& cube() {
-    static const Polyhedron p = withFaces({{-0.5, -0.5, -0.5}, {0.5, -0.5, -0.5}, {0.5, 0.5, -0.5}, {-0.5, 0.5, -0.5},
-                                           {-0.5, -0.5, 0.5}, {0.5, -0.5, 0.5}, {0.5, 0.5, 0.5}, {-0.5, 0.5, 0.5}});
+    static const Polyhedron p = withFaces({{-0.5, -0.5, -0.5},
+                                           {0.5, -0.5, -0.5},
+                                           {0.5, 0.5, -0.5},
+                                           {-0.5, 0.5, -0.5},
+                                           {-0.5, -0.5, 0.5},
+                                           {0.5, -0.5, 0.5},
+                                           {0.5, 0.5, 0.5},
+                                           {-0.5, 0.5, 0.5}});
     return p;
 }
 
@@ -128,8 +137,19 @@ const Polyhedron& rhombicDodecahedron() {
     // freeglut's: poles on z, a ring of four at z = +-1/2 on the axes and four at z = 0 between.
     static const Polyhedron p = [] {
         const double h = std::sqrt(0.5);
-        return withFaces({{0, 0, 1}, {h, 0, 0.5}, {0, h, 0.5}, {-h, 0, 0.5}, {0, -h, 0.5}, {h, h, 0}, {-h, h, 0},
-                          {-h, -h, 0}, {h, -h, 0}, {h, 0, -0.5}, {0, h, -0.5}, {-h, 0, -0.5}, {0, -h, -0.5},
+        return withFaces({{0, 0, 1},
+                          {h, 0, 0.5},
+                          {0, h, 0.5},
+                          {-h, 0, 0.5},
+                          {0, -h, 0.5},
+                          {h, h, 0},
+                          {-h, h, 0},
+                          {-h, -h, 0},
+                          {h, -h, 0},
+                          {h, 0, -0.5},
+                          {0, h, -0.5},
+                          {-h, 0, -0.5},
+                          {0, -h, -0.5},
                           {0, 0, -1}});
     }();
     return p;

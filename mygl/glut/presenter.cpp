@@ -54,7 +54,8 @@ int glutSpecialKey(int key) {
 int controlCharacter(int key) {
     switch (key) {
     case GLFW_KEY_ESCAPE: return 27;
-    case GLFW_KEY_ENTER: case GLFW_KEY_KP_ENTER: return 13;
+    case GLFW_KEY_ENTER:
+    case GLFW_KEY_KP_ENTER: return 13;
     case GLFW_KEY_TAB: return 9;
     case GLFW_KEY_BACKSPACE: return 8;
     case GLFW_KEY_DELETE: return 127;
@@ -90,16 +91,20 @@ Presenter::Presenter(int width, int height, const std::string& title) {
     load(gl_->finish, "glFinish");
     glfwSetWindowUserPointer(window_, this);
     glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned codepoint) { owner(w).onChar(codepoint); });
-    glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) { owner(w).onKey(key, action, mods); });
+    glfwSetKeyCallback(window_,
+                       [](GLFWwindow* w, int key, int, int action, int mods) { owner(w).onKey(key, action, mods); });
     glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int mods) {
         Presenter& p = owner(w);
         p.modifiers_ = glutModifiers(mods);
         if (button > 2) return;
         // GLFW numbers left, right, middle; GLUT left, middle, right.
-        const int glutButton = button == GLFW_MOUSE_BUTTON_RIGHT ? GLUT_RIGHT_BUTTON
-                             : button == GLFW_MOUSE_BUTTON_MIDDLE ? GLUT_MIDDLE_BUTTON : GLUT_LEFT_BUTTON;
-        if (action == GLFW_PRESS) p.buttonsDown_ |= 1 << glutButton;
-        else p.buttonsDown_ &= ~(1 << glutButton);
+        const int glutButton = button == GLFW_MOUSE_BUTTON_RIGHT    ? GLUT_RIGHT_BUTTON
+                               : button == GLFW_MOUSE_BUTTON_MIDDLE ? GLUT_MIDDLE_BUTTON
+                                                                    : GLUT_LEFT_BUTTON;
+        if (action == GLFW_PRESS)
+            p.buttonsDown_ |= 1 << glutButton;
+        else
+            p.buttonsDown_ &= ~(1 << glutButton);
         int x, y;
         p.cursor(x, y);
         if (p.callbacks_.mouse) p.callbacks_.mouse(glutButton, action == GLFW_PRESS ? GLUT_DOWN : GLUT_UP, x, y);
@@ -118,7 +123,8 @@ Presenter::Presenter(int width, int height, const std::string& title) {
         if (owner(w).callbacks_.entry) owner(w).callbacks_.entry(entered == GLFW_TRUE);
     });
     glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int newWidth, int newHeight) {
-        if (newWidth > 0 && newHeight > 0 && owner(w).callbacks_.resized) owner(w).callbacks_.resized(newWidth, newHeight);
+        if (newWidth > 0 && newHeight > 0 && owner(w).callbacks_.resized)
+            owner(w).callbacks_.resized(newWidth, newHeight);
     });
 }
 

@@ -12,20 +12,26 @@ int glutGet(GLenum query) {
     switch (query) {
     case GLUT_ELAPSED_TIME:
         if (r.captureFrames > 0) return static_cast<int>(r.now);  // simulated: 16 ms a frame
-        return static_cast<int>(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - r.start).count());
+        return static_cast<int>(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - r.start).count());
     case GLUT_WINDOW_WIDTH: return window ? r.width : 0;
     case GLUT_WINDOW_HEIGHT: return window ? r.height : 0;
     case GLUT_WINDOW_X: return window ? r.x : 0;
     case GLUT_WINDOW_Y: return window ? r.y : 0;
-    case GLUT_WINDOW_RED_SIZE: case GLUT_WINDOW_GREEN_SIZE: case GLUT_WINDOW_BLUE_SIZE: case GLUT_WINDOW_ALPHA_SIZE:
-        return window ? 8 : 0;
+    case GLUT_WINDOW_RED_SIZE:
+    case GLUT_WINDOW_GREEN_SIZE:
+    case GLUT_WINDOW_BLUE_SIZE:
+    case GLUT_WINDOW_ALPHA_SIZE: return window ? 8 : 0;
     case GLUT_WINDOW_BUFFER_SIZE: return window ? 32 : 0;
     case GLUT_WINDOW_DEPTH_SIZE: return window ? 24 : 0;
     case GLUT_WINDOW_STENCIL_SIZE: return window ? 8 : 0;  // every window has an 8-bit stencil buffer
     case GLUT_WINDOW_DOUBLEBUFFER: return window && (r.displayMode & GLUT_DOUBLE) ? 1 : 0;
     case GLUT_WINDOW_RGBA: return window ? 1 : 0;
-    case GLUT_WINDOW_NUM_SAMPLES: case GLUT_WINDOW_STEREO: return 0;
-    case GLUT_WINDOW_PARENT: case GLUT_WINDOW_NUM_CHILDREN: case GLUT_WINDOW_COLORMAP_SIZE: return 0;
+    case GLUT_WINDOW_NUM_SAMPLES:
+    case GLUT_WINDOW_STEREO: return 0;
+    case GLUT_WINDOW_PARENT:
+    case GLUT_WINDOW_NUM_CHILDREN:
+    case GLUT_WINDOW_COLORMAP_SIZE: return 0;
     case GLUT_WINDOW_CURSOR: return GLUT_CURSOR_INHERIT;
     case GLUT_SCREEN_WIDTH: return 1920;  // what the window system would say is not asked
     case GLUT_SCREEN_HEIGHT: return 1080;
@@ -42,15 +48,14 @@ int glutGet(GLenum query) {
     case GLUT_VERSION: return 30400;  // the freeglut API level this follows (3.4.0)
     case GLUT_RENDERING_CONTEXT: return GLUT_CREATE_NEW_CONTEXT;
     case GLUT_DIRECT_RENDERING: return 1;
-    default:
-        std::fprintf(stderr, "mygl glut: glutGet(0x%04X) is not answered; 0\n", query);
-        return 0;
+    default: std::fprintf(stderr, "mygl glut: glutGet(0x%04X) is not answered; 0\n", query); return 0;
     }
 }
 
 int glutDeviceGet(GLenum query) {
     switch (query) {
-    case GLUT_HAS_KEYBOARD: case GLUT_HAS_MOUSE: return 1;
+    case GLUT_HAS_KEYBOARD:
+    case GLUT_HAS_MOUSE: return 1;
     case GLUT_NUM_MOUSE_BUTTONS: return 3;
     case GLUT_DEVICE_IGNORE_KEY_REPEAT: return runtime().ignoreKeyRepeat ? 1 : 0;
     case GLUT_DEVICE_KEY_REPEAT: return runtime().ignoreKeyRepeat ? GLUT_KEY_REPEAT_OFF : GLUT_KEY_REPEAT_ON;

@@ -19,9 +19,12 @@ constexpr double kCaptureFrameMilliseconds = 16.0;
 void readEnvironment(Runtime& r) {
     if (const char* backend = std::getenv("MYGL_BACKEND")) {
         const std::string b = backend;
-        if (b == "osmesa") r.backend = Backend::OSMesa;
-        else if (b == "compare") r.backend = Backend::Compare;
-        else if (b != "mygl") fail("MYGL_BACKEND must be mygl, osmesa or compare, not '" + b + "'");
+        if (b == "osmesa")
+            r.backend = Backend::OSMesa;
+        else if (b == "compare")
+            r.backend = Backend::Compare;
+        else if (b != "mygl")
+            fail("MYGL_BACKEND must be mygl, osmesa or compare, not '" + b + "'");
     }
     if (const char* capture = std::getenv("MYGL_CAPTURE")) {
         const std::string c = capture;
@@ -61,7 +64,8 @@ void capture(Runtime& r, const FrameImages& images) {
     if (r.backend == Backend::Compare) {
         reference::writePng(base + "-osmesa.png", images.reference);
         reference::writePng(base + "-diff.png", reference::diffImage(images.program, images.reference));
-        std::printf("%s %s\n", name, reference::toString(reference::compareImages(images.program, images.reference)).c_str());
+        std::printf("%s %s\n", name,
+                    reference::toString(reference::compareImages(images.program, images.reference)).c_str());
     }
     ++r.framesCaptured;
     r.now = kCaptureFrameMilliseconds * r.framesCaptured;
@@ -121,7 +125,6 @@ void callDisplay(Runtime& r) {
     r.swappedInDisplay = false;
 }
 
-
 void fail(const std::string& message) {
     std::fprintf(stderr, "mygl glut: %s\n", message.c_str());
     std::exit(2);
@@ -130,8 +133,10 @@ void fail(const std::string& message) {
 // MyGL is only made current when it is not already: that reloads the table, which would drop
 // the recorder's wrappers in compare mode.
 void makeProgramContextCurrent(Runtime& r) {
-    if (r.backend == Backend::OSMesa) r.osmesa->makeCurrent();
-    else if (mygl::Context::current() != r.mygl.get()) r.mygl->makeCurrent();
+    if (r.backend == Backend::OSMesa)
+        r.osmesa->makeCurrent();
+    else if (mygl::Context::current() != r.mygl.get())
+        r.mygl->makeCurrent();
 }
 
 void frameDone(Runtime& r) {
@@ -151,8 +156,10 @@ void applyPendingSize(Runtime& r) {
     if (r.mygl && (r.mygl->width() != width || r.mygl->height() != height)) r.mygl->resize(width, height);
     if (r.osmesa && (r.osmesa->width() != width || r.osmesa->height() != height)) r.osmesa->resize(width, height);
     makeProgramContextCurrent(r);
-    if (r.callbacks.reshape) r.callbacks.reshape(width, height);
-    else glViewport(0, 0, width, height);
+    if (r.callbacks.reshape)
+        r.callbacks.reshape(width, height);
+    else
+        glViewport(0, 0, width, height);
     r.redisplay = true;
 }
 
@@ -196,8 +203,10 @@ void glutMainLoopEvent() {
     glut::Runtime& r = runtime();
     if (!r.windowExists || !r.callbacks.display) return;
     if (!r.shown) glut::windowShown(r);
-    if (r.captureFrames > 0) glut::capturePass(r);
-    else glut::windowPass(r);
+    if (r.captureFrames > 0)
+        glut::capturePass(r);
+    else
+        glut::windowPass(r);
 }
 
 void glutLeaveMainLoop() { runtime().leaveMainLoop = true; }

@@ -58,7 +58,7 @@ struct Runtime {
     unsigned displayMode = GLUT_RGBA | GLUT_SINGLE | GLUT_DEPTH;
     std::string title = "MyGL";
     bool windowExists = false, fullScreen = false;
-    bool shown = false;  // the first reshape and visibility callbacks have run
+    bool shown = false;                              // the first reshape and visibility callbacks have run
     std::optional<std::pair<int, int>> pendingSize;  // glutReshapeWindow or a resized window
 
     Callbacks callbacks;

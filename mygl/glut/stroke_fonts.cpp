@@ -27,7 +27,8 @@ void drawGlyph(const StrokeFont& font, const StrokeGlyph& g) {
     for (int s = 0; s < g.stripCount; ++s) {
         const auto& strip = font.strips[g.firstStrip + s];
         glBegin(GL_LINE_STRIP);
-        for (int p = 0; p < strip.pointCount; ++p) glVertex2fv(font.points + 2 * (strip.firstPoint + static_cast<unsigned>(p)));
+        for (int p = 0; p < strip.pointCount; ++p)
+            glVertex2fv(font.points + 2 * (strip.firstPoint + static_cast<unsigned>(p)));
         glEnd();
     }
     glTranslatef(g.advance, 0.0f, 0.0f);

@@ -54,7 +54,9 @@ const EntryPoint kEntryPoints[] = {
 
 }  // namespace
 
-void clearAccumBuffer(Context::State& s) { glrenderer::clearAccum(s.framebuffer, s.draw.fragmentOps.scissor, s.buffers.accumClear); }
+void clearAccumBuffer(Context::State& s) {
+    glrenderer::clearAccum(s.framebuffer, s.draw.fragmentOps.scissor, s.buffers.accumClear);
+}
 
 std::span<const EntryPoint> accumulationEntryPoints() { return kEntryPoints; }
 

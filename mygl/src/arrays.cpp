@@ -19,21 +19,32 @@ namespace {
 
 // The immediate-mode call an array's components stand for, taking them as T.
 template <class T>
-struct TexCoordCall { static void call(const T* v, int n) { texCoordv(v, n); } };
+struct TexCoordCall {
+    static void call(const T* v, int n) { texCoordv(v, n); }
+};
 template <class T>
-struct ColorCall { static void call(const T* v, int n) { colorv(v, n); } };
+struct ColorCall {
+    static void call(const T* v, int n) { colorv(v, n); }
+};
 template <class T>
-struct NormalCall { static void call(const T* v, int) { normalv(v); } };
+struct NormalCall {
+    static void call(const T* v, int) { normalv(v); }
+};
 template <class T>
-struct VertexCall { static void call(const T* v, int n) { vertexv(v, n); } };
+struct VertexCall {
+    static void call(const T* v, int n) { vertexv(v, n); }
+};
 template <class T>
-struct EdgeFlagCall { static void call(const T* v, int) { setEdgeFlag(v[0] != 0); } };
+struct EdgeFlagCall {
+    static void call(const T* v, int) { setEdgeFlag(v[0] != 0); }
+};
 
 // The `n` components at `p` (any alignment) read as T and handed to Call.
 template <class T, template <class> class Call>
 void readComponents(const void* p, int n) {
     T values[4]{};
-    for (int k = 0; k < n; ++k) std::memcpy(&values[k], static_cast<const unsigned char*>(p) + k * sizeof(T), sizeof(T));
+    for (int k = 0; k < n; ++k)
+        std::memcpy(&values[k], static_cast<const unsigned char*>(p) + k * sizeof(T), sizeof(T));
     Call<T>::call(values, n);
 }
 
@@ -46,7 +57,8 @@ public:
     static ArrayReader of(const ClientArray& a) {
         ArrayReader r;
         r.base_ = static_cast<const unsigned char*>(a.pointer);
-        r.step_ = a.stride ? static_cast<std::size_t>(a.stride) : static_cast<std::size_t>(a.size) * componentBytes(a.type);
+        r.step_ =
+            a.stride ? static_cast<std::size_t>(a.stride) : static_cast<std::size_t>(a.size) * componentBytes(a.type);
         r.size_ = a.size;
         switch (a.type) {
         case GL_BYTE: r.read_ = &readComponents<GLbyte, Call>; break;
@@ -155,12 +167,16 @@ private:
     };
     static Source sourceOf(const ClientArray& a) {
         if (!a.enabled) return {};
-        const std::size_t step = a.stride ? static_cast<std::size_t>(a.stride) : static_cast<std::size_t>(a.size) * componentBytes(a.type);
+        const std::size_t step =
+            a.stride ? static_cast<std::size_t>(a.stride) : static_cast<std::size_t>(a.size) * componentBytes(a.type);
         return {static_cast<const unsigned char*>(a.pointer), step, a.size};
     }
     explicit MeshArrays(const ClientArrays& a)
-        : vertex_(sourceOf(a.vertex)), color_(sourceOf(a.color)), normal_(sourceOf(a.normal)),
-          texCoord_(sourceOf(a.texCoord)), colorBytes_(a.color.type == GL_UNSIGNED_BYTE) {}
+        : vertex_(sourceOf(a.vertex)),
+          color_(sourceOf(a.color)),
+          normal_(sourceOf(a.normal)),
+          texCoord_(sourceOf(a.texCoord)),
+          colorBytes_(a.color.type == GL_UNSIGNED_BYTE) {}
 
     glm::vec4 colorFromBytes(std::size_t i) const {
         const unsigned char* b = color_.base + i * color_.step;
@@ -250,8 +266,8 @@ struct ArraySnapshot {
 std::shared_ptr<const ArraySnapshot> snapshot(const ClientArrays& source, const Elements& elements) {
     auto copy = std::make_shared<ArraySnapshot>();
     copy->arrays = source;
-    ClientArray* all[] = {&copy->arrays.vertex, &copy->arrays.normal, &copy->arrays.color,
-                          &copy->arrays.index, &copy->arrays.texCoord, &copy->arrays.edgeFlag};
+    ClientArray* all[] = {&copy->arrays.vertex, &copy->arrays.normal,   &copy->arrays.color,
+                          &copy->arrays.index,  &copy->arrays.texCoord, &copy->arrays.edgeFlag};
     std::vector<std::size_t> offsets;
     for (ClientArray* a : all) {
         offsets.push_back(copy->bytes.size());
@@ -269,7 +285,8 @@ std::shared_ptr<const ArraySnapshot> snapshot(const ClientArrays& source, const 
 
 // Draws `elements` of `arrays` as one primitive of `mode`, a draw of its own. The reference
 // converts indexed quads to triangles before it draws them.
-void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, const Elements& elements, bool indexed) {
+void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, const Elements& elements,
+                    bool indexed) {
     if (!arrays.vertex.enabled) return;  // no positions: nothing is drawn
     const glm::vec4 color = s.color, vertexColor = s.vertexColor, texCoord = s.texCoord;
     const glm::vec3 normal = s.normal;
@@ -284,8 +301,10 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
         drawIndexedParts(s, *mesh, elements);
     } else {
         for (std::size_t k = 0; k < elements.count; ++k) {
-            if (k > 0 && mesh) mesh->emit(s, elements[k]);
-            else element(elements[k]);
+            if (k > 0 && mesh)
+                mesh->emit(s, elements[k]);
+            else
+                element(elements[k]);
         }
     }
     end();
@@ -299,7 +318,8 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
 void drawOrCompile(Context::State& s, GLenum mode, const Elements& elements, bool indexed) {
     if (s.lists.compiling()) {
         s.lists.add([mode, kept = snapshot(s.arrays, elements), count = elements.count, indexed] {
-            if (Context::State* now = stateOutsideBeginEnd()) drawElementsOf(*now, mode, kept->arrays, {0, count}, indexed);
+            if (Context::State* now = stateOutsideBeginEnd())
+                drawElementsOf(*now, mode, kept->arrays, {0, count}, indexed);
         });
         if (!s.lists.executingWhileCompiling()) return;
     }
@@ -331,7 +351,8 @@ void drawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) 
     if (!s) return;
     if (mode > GL_POLYGON) return drawError(*s, GL_INVALID_ENUM);
     if (count < 0) return drawError(*s, GL_INVALID_VALUE);
-    if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) return drawError(*s, GL_INVALID_ENUM);
+    if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
+        return drawError(*s, GL_INVALID_ENUM);
     if (!indices) return;
     drawOrCompile(*s, mode, {0, static_cast<std::size_t>(count), indices, type}, true);
 }
@@ -409,8 +430,10 @@ void interleavedArrays(GLenum format, GLsizei stride, const void* pointer) {
     if (!f) return setError(*s, GL_INVALID_ENUM);
     const auto* base = static_cast<const unsigned char*>(pointer);
     const std::size_t colorBytes = f->colorType == GL_UNSIGNED_BYTE ? 4 : 4 * static_cast<std::size_t>(f->colors);
-    const std::size_t texBytes = 4 * static_cast<std::size_t>(f->texCoords), normalBytes = 4 * static_cast<std::size_t>(f->normals);
-    const std::size_t total = texBytes + (f->colors ? colorBytes : 0) + normalBytes + 4 * static_cast<std::size_t>(f->vertices);
+    const std::size_t texBytes = 4 * static_cast<std::size_t>(f->texCoords),
+                      normalBytes = 4 * static_cast<std::size_t>(f->normals);
+    const std::size_t total =
+        texBytes + (f->colors ? colorBytes : 0) + normalBytes + 4 * static_cast<std::size_t>(f->vertices);
     const auto step = stride ? stride : static_cast<GLsizei>(total);
     ClientArrays& a = s->arrays;
     a.edgeFlag.enabled = a.index.enabled = false;
@@ -446,28 +469,34 @@ ClientArray& edgeFlagArray(ClientArrays& a) { return a.edgeFlag; }
 
 const EntryPoint kEntryPoints[] = {
     {"glVertexPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
-         setPointer(vertexArray, size, size >= 2 && size <= 4, type, isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+         setPointer(vertexArray, size, size >= 2 && size <= 4, type,
+                    isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
      })},
     {"glNormalPointer", entry(+[](GLenum type, GLsizei stride, const void* p) {
-         setPointer(normalArray, 3, true, type, isOneOf(type, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+         setPointer(normalArray, 3, true, type, isOneOf(type, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride,
+                    p);
      })},
     {"glColorPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
          setPointer(colorArray, size, size == 3 || size == 4, type,
-                    isOneOf(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE}),
+                    isOneOf(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT,
+                                   GL_FLOAT, GL_DOUBLE}),
                     stride, p);
      })},
     {"glIndexPointer", entry(+[](GLenum type, GLsizei stride, const void* p) {
-         setPointer(indexArray, 1, true, type, isOneOf(type, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+         setPointer(indexArray, 1, true, type, isOneOf(type, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}),
+                    stride, p);
      })},
     {"glTexCoordPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
-         setPointer(texCoordArray, size, size >= 1 && size <= 4, type, isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+         setPointer(texCoordArray, size, size >= 1 && size <= 4, type,
+                    isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
      })},
     {"glEdgeFlagPointer", entry(+[](GLsizei stride, const void* p) {
          setPointer(edgeFlagArray, 1, true, GL_UNSIGNED_BYTE, true, stride, p);
      })},
     {"glEnableClientState", entry(+[](GLenum name) { enableClientState(name, true); })},
     {"glDisableClientState", entry(+[](GLenum name) { enableClientState(name, false); })},
-    {"glInterleavedArrays", entry(+[](GLenum format, GLsizei stride, const void* p) { interleavedArrays(format, stride, p); })},
+    {"glInterleavedArrays",
+     entry(+[](GLenum format, GLsizei stride, const void* p) { interleavedArrays(format, stride, p); })},
     {"glArrayElement", entry(+[](GLint i) { arrayElement(i); })},
     {"glDrawArrays", entry(+[](GLenum mode, GLint first, GLsizei count) { drawArrays(mode, first, count); })},
     {"glDrawElements", entry(+[](GLenum mode, GLsizei count, GLenum type, const void* indices) {

@@ -19,39 +19,94 @@ RestoreGroup saveFields(const State& state) {
 }
 
 constexpr GLenum kEnableCapabilities[] = {
-    GL_ALPHA_TEST, GL_BLEND, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_LIGHTING,
-    GL_LIGHT0, GL_LIGHT1, GL_LIGHT2, GL_LIGHT3, GL_LIGHT4, GL_LIGHT5, GL_LIGHT6, GL_LIGHT7, GL_LINE_SMOOTH,
-    GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
-    GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2, GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
-    GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7,
-    GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
-    GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
-    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
-    GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL,
+    GL_ALPHA_TEST,
+    GL_BLEND,
+    GL_COLOR_MATERIAL,
+    GL_CULL_FACE,
+    GL_DEPTH_TEST,
+    GL_DITHER,
+    GL_FOG,
+    GL_LIGHTING,
+    GL_LIGHT0,
+    GL_LIGHT1,
+    GL_LIGHT2,
+    GL_LIGHT3,
+    GL_LIGHT4,
+    GL_LIGHT5,
+    GL_LIGHT6,
+    GL_LIGHT7,
+    GL_LINE_SMOOTH,
+    GL_LINE_STIPPLE,
+    GL_NORMALIZE,
+    GL_POINT_SMOOTH,
+    GL_POLYGON_OFFSET_FILL,
+    GL_POLYGON_OFFSET_LINE,
+    GL_POLYGON_OFFSET_POINT,
+    GL_POLYGON_SMOOTH,
+    GL_POLYGON_STIPPLE,
+    GL_SCISSOR_TEST,
+    GL_STENCIL_TEST,
+    GL_TEXTURE_1D,
+    GL_TEXTURE_2D,
+    GL_TEXTURE_GEN_S,
+    GL_TEXTURE_GEN_T,
+    GL_TEXTURE_GEN_R,
+    GL_TEXTURE_GEN_Q,
+    GL_COLOR_LOGIC_OP,
+    GL_INDEX_LOGIC_OP,
+    GL_CLIP_PLANE0,
+    GL_CLIP_PLANE1,
+    GL_CLIP_PLANE2,
+    GL_CLIP_PLANE3,
+    GL_CLIP_PLANE4,
+    GL_CLIP_PLANE5,
+    GL_CLIP_PLANE0 + 6,
+    GL_CLIP_PLANE0 + 7,
+    GL_MAP1_COLOR_4,
+    GL_MAP1_INDEX,
+    GL_MAP1_NORMAL,
+    GL_MAP1_TEXTURE_COORD_1,
+    GL_MAP1_TEXTURE_COORD_2,
+    GL_MAP1_TEXTURE_COORD_3,
+    GL_MAP1_TEXTURE_COORD_4,
+    GL_MAP1_VERTEX_3,
+    GL_MAP1_VERTEX_4,
+    GL_MAP2_COLOR_4,
+    GL_MAP2_INDEX,
+    GL_MAP2_NORMAL,
+    GL_MAP2_TEXTURE_COORD_1,
+    GL_MAP2_TEXTURE_COORD_2,
+    GL_MAP2_TEXTURE_COORD_3,
+    GL_MAP2_TEXTURE_COORD_4,
+    GL_MAP2_VERTEX_3,
+    GL_MAP2_VERTEX_4,
+    GL_AUTO_NORMAL,
 };
-constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP};
+constexpr GLenum kColorBufferCapabilities[] = {GL_ALPHA_TEST, GL_BLEND, GL_DITHER, GL_COLOR_LOGIC_OP,
+                                               GL_INDEX_LOGIC_OP};
 constexpr GLenum kDepthBufferCapabilities[] = {GL_DEPTH_TEST};
 constexpr GLenum kFogCapabilities[] = {GL_FOG};
 constexpr GLenum kLightingCapabilities[] = {GL_COLOR_MATERIAL, GL_LIGHTING, GL_LIGHT0, GL_LIGHT1, GL_LIGHT2,
                                             GL_LIGHT3,         GL_LIGHT4,   GL_LIGHT5, GL_LIGHT6, GL_LIGHT7};
 constexpr GLenum kLineCapabilities[] = {GL_LINE_SMOOTH, GL_LINE_STIPPLE};
 constexpr GLenum kPointCapabilities[] = {GL_POINT_SMOOTH};
-constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE,          GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE,
-                                           GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,      GL_POLYGON_STIPPLE};
+constexpr GLenum kPolygonCapabilities[] = {GL_CULL_FACE,           GL_POLYGON_OFFSET_FILL,
+                                           GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT,
+                                           GL_POLYGON_SMOOTH,      GL_POLYGON_STIPPLE};
 constexpr GLenum kScissorCapabilities[] = {GL_SCISSOR_TEST};
 constexpr GLenum kStencilCapabilities[] = {GL_STENCIL_TEST};
 constexpr GLenum kTextureCapabilities[] = {GL_TEXTURE_1D,    GL_TEXTURE_2D,    GL_TEXTURE_GEN_S,
                                            GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q};
 constexpr GLenum kEvalCapabilities[] = {
-    GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2,
-    GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
-    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
-    GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_AUTO_NORMAL,
+    GL_MAP1_COLOR_4,         GL_MAP1_INDEX,           GL_MAP1_NORMAL,          GL_MAP1_TEXTURE_COORD_1,
+    GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3, GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3,
+    GL_MAP1_VERTEX_4,        GL_MAP2_COLOR_4,         GL_MAP2_INDEX,           GL_MAP2_NORMAL,
+    GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3, GL_MAP2_TEXTURE_COORD_4,
+    GL_MAP2_VERTEX_3,        GL_MAP2_VERTEX_4,        GL_AUTO_NORMAL,
 };
-constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE,   GL_CLIP_PLANE0,     GL_CLIP_PLANE1,     GL_CLIP_PLANE2,
-                                             GL_CLIP_PLANE3, GL_CLIP_PLANE4,     GL_CLIP_PLANE5,     GL_CLIP_PLANE0 + 6,
-                                             GL_CLIP_PLANE0 + 7};
+constexpr GLenum kTransformCapabilities[] = {GL_NORMALIZE,   GL_CLIP_PLANE0,     GL_CLIP_PLANE1,
+                                             GL_CLIP_PLANE2, GL_CLIP_PLANE3,     GL_CLIP_PLANE4,
+                                             GL_CLIP_PLANE5, GL_CLIP_PLANE0 + 6, GL_CLIP_PLANE0 + 7};
 
 // GL_TEXTURE_BIT: the unit's bindings, environment and texgen, and the parameters of the
 // textures bound now (restored into those textures, if they still exist).
@@ -80,8 +135,8 @@ RestoreGroup saveTextures(const State& state) {
             TextureUnit& textures = s.textures;
             const auto found = textures.objects.find(p.name);
             TextureObject* t = p.name == 0 ? (p.target == GL_TEXTURE_1D ? &textures.default1D : &textures.default2D)
-                             : found != textures.objects.end() ? &found->second
-                                                               : nullptr;
+                               : found != textures.objects.end() ? &found->second
+                                                                 : nullptr;
             if (!t) continue;
             t->minFilter = p.minFilter, t->magFilter = p.magFilter, t->wrapS = p.wrapS, t->wrapT = p.wrapT;
             t->borderColor = p.borderColor, t->priority = p.priority;
@@ -104,9 +159,8 @@ const AttribGroup kServerGroups[] = {
      }>},
     {GL_ACCUM_BUFFER_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.accumClear); }>},
     {GL_PIXEL_MODE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.readBuffer, s.pixelModes); }>},
-    {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities, saveFields<[](auto& s) {
-         return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth);
-     }>},
+    {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities,
+     saveFields<[](auto& s) { return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth); }>},
     {GL_FOG_BIT, kFogCapabilities, saveFields<[](auto& s) { return std::tie(s.fog, s.draw.fog); }>},
     {GL_EVAL_BIT, kEvalCapabilities, saveFields<[](auto& s) {
          auto& e = s.evaluators;
@@ -136,10 +190,11 @@ const AttribGroup kServerGroups[] = {
                          p.stencilDepthFail, p.stencilDepthPass, p.clearStencil, s.draw.fragmentOps.stencil);
      }>},
     {GL_TEXTURE_BIT, kTextureCapabilities, saveTextures},
-    {GL_TRANSFORM_BIT, kTransformCapabilities, saveFields<[](auto& s) { return std::tie(s.matrixMode, s.eyeClipPlanes); }>},
-    {GL_VIEWPORT_BIT, {}, saveFields<[](auto& s) {
-         return std::tie(s.draw.viewport, s.draw.depthNear, s.draw.depthFar);
-     }>},
+    {GL_TRANSFORM_BIT, kTransformCapabilities,
+     saveFields<[](auto& s) { return std::tie(s.matrixMode, s.eyeClipPlanes); }>},
+    {GL_VIEWPORT_BIT,
+     {},
+     saveFields<[](auto& s) { return std::tie(s.draw.viewport, s.draw.depthNear, s.draw.depthFar); }>},
     {GL_HINT_BIT, {}, saveFields<[](auto& s) { return std::tie(s.hints); }>},
     {GL_LIST_BIT, {}, saveFields<[](auto& s) { return std::tie(s.lists.base); }>},
 };

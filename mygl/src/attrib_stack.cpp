@@ -13,7 +13,8 @@ bool AttribStack::push(const Context::State& state, GLbitfield mask, std::span<c
         if (!(mask & group.bit)) continue;
         if (!group.capabilities.empty()) {
             std::vector<std::pair<GLenum, bool>> enabled;
-            for (GLenum cap : group.capabilities) enabled.emplace_back(cap, capabilityEnabled(state, cap).value_or(false));
+            for (GLenum cap : group.capabilities)
+                enabled.emplace_back(cap, capabilityEnabled(state, cap).value_or(false));
             saved.emplace_back([enabled](Context::State& s) {
                 for (const auto& [cap, on] : enabled) setCapability(s, cap, on);
             });
@@ -58,7 +59,8 @@ const EntryPoint kEntryPoints[] = {
      }>()},
     // Client state is not compiled into display lists.
     {"glPushClientAttrib", entry(+[](GLbitfield mask) {
-         if (Context::State* s = stateOutsideBeginEnd()) pushAttrib(s, s->clientAttribStack, mask, clientAttribGroups());
+         if (Context::State* s = stateOutsideBeginEnd())
+             pushAttrib(s, s->clientAttribStack, mask, clientAttribGroups());
      })},
     {"glPopClientAttrib", entry(+[]() {
          if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->clientAttribStack);

@@ -58,6 +58,7 @@ void rect(T x1, T y1, T x2, T y2) {
 }
 
 // glColor, glNormal, ... in every type: one line per entry point.
+// clang-format off
 #define MYGL_COLOR(suffix, T)                                                                    \
     {"glColor3" #suffix, compiled<+[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }>()},  \
     {"glColor4" #suffix, compiled<+[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); }>()}, \
@@ -78,24 +79,43 @@ void rect(T x1, T y1, T x2, T y2) {
 #define MYGL_RECT(suffix, T)                                                                      \
     {"glRect" #suffix, compiled<+[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }>()},               \
     {"glRect" #suffix "v", compiled<+[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); }, 2>()}
+// clang-format on
 
 const EntryPoint kEntryPoints[] = {
     {"glBegin", compiled<+[](GLenum mode) {
          if (Context::State* s = currentState()) begin(mode, quadSplitOf(*s));
      }>()},
     {"glEnd", compiled<+[] { end(); }>()},
-    MYGL_POSITION_ENTRIES("glVertex", s, GLshort, vertexv), MYGL_POSITION_ENTRIES("glVertex", i, GLint, vertexv),
-    MYGL_POSITION_ENTRIES("glVertex", f, GLfloat, vertexv), MYGL_POSITION_ENTRIES("glVertex", d, GLdouble, vertexv),
-    MYGL_COLOR(b, GLbyte), MYGL_COLOR(ub, GLubyte), MYGL_COLOR(s, GLshort), MYGL_COLOR(us, GLushort),
-    MYGL_COLOR(i, GLint), MYGL_COLOR(ui, GLuint), MYGL_COLOR(f, GLfloat), MYGL_COLOR(d, GLdouble),
-    MYGL_NORMAL(b, GLbyte), MYGL_NORMAL(s, GLshort), MYGL_NORMAL(i, GLint), MYGL_NORMAL(f, GLfloat),
+    MYGL_POSITION_ENTRIES("glVertex", s, GLshort, vertexv),
+    MYGL_POSITION_ENTRIES("glVertex", i, GLint, vertexv),
+    MYGL_POSITION_ENTRIES("glVertex", f, GLfloat, vertexv),
+    MYGL_POSITION_ENTRIES("glVertex", d, GLdouble, vertexv),
+    MYGL_COLOR(b, GLbyte),
+    MYGL_COLOR(ub, GLubyte),
+    MYGL_COLOR(s, GLshort),
+    MYGL_COLOR(us, GLushort),
+    MYGL_COLOR(i, GLint),
+    MYGL_COLOR(ui, GLuint),
+    MYGL_COLOR(f, GLfloat),
+    MYGL_COLOR(d, GLdouble),
+    MYGL_NORMAL(b, GLbyte),
+    MYGL_NORMAL(s, GLshort),
+    MYGL_NORMAL(i, GLint),
+    MYGL_NORMAL(f, GLfloat),
     MYGL_NORMAL(d, GLdouble),
-    MYGL_TEXCOORD(s, GLshort), MYGL_TEXCOORD(i, GLint), MYGL_TEXCOORD(f, GLfloat), MYGL_TEXCOORD(d, GLdouble),
-    MYGL_RECT(s, GLshort), MYGL_RECT(i, GLint), MYGL_RECT(f, GLfloat), MYGL_RECT(d, GLdouble),
+    MYGL_TEXCOORD(s, GLshort),
+    MYGL_TEXCOORD(i, GLint),
+    MYGL_TEXCOORD(f, GLfloat),
+    MYGL_TEXCOORD(d, GLdouble),
+    MYGL_RECT(s, GLshort),
+    MYGL_RECT(i, GLint),
+    MYGL_RECT(f, GLfloat),
+    MYGL_RECT(d, GLdouble),
     {"glEdgeFlag", compiled<+[](GLboolean flag) { setEdgeFlag(flag != GL_FALSE); }>()},
     {"glEdgeFlagv", compiled<+[](const GLboolean* flag) {
          if (flag) setEdgeFlag(*flag != GL_FALSE);
-     }, 1>()},
+     },
+                             1>()},
 };
 
 }  // namespace

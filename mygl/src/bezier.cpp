@@ -54,8 +54,7 @@ namespace {
 class Casteljau {
 public:
     Casteljau(const float* net, int k, int dim, int uorder, int vorder, float u, float v)
-        : net_(net), k_(k), dim_(dim), vorder_(vorder), uorder_(uorder), u_(u), v_(v), us_(1.0f - u),
-          vs_(1.0f - v) {}
+        : net_(net), k_(k), dim_(dim), vorder_(vorder), uorder_(uorder), u_(u), v_(v), us_(1.0f - u), vs_(1.0f - v) {}
 
     // A control point's component. Past the net (an order of 1, where the reference reads
     // whatever memory follows its points) it is 0.
@@ -203,8 +202,10 @@ void bezierSurfaceWithDerivatives(const float* net, float* out, float* du, float
     const int minOrder = uorder < vorder ? uorder : vorder;
     for (int k = 0; k < dim; ++k) {
         Casteljau casteljau(net, k, dim, uorder, vorder, u, v);
-        if (minOrder < 3) casteljau.lowOrder(out[k], du[k], dv[k]);
-        else casteljau.highOrder(out[k], du[k], dv[k]);
+        if (minOrder < 3)
+            casteljau.lowOrder(out[k], du[k], dv[k]);
+        else
+            casteljau.highOrder(out[k], du[k], dv[k]);
     }
 }
 

@@ -25,8 +25,8 @@ public:
     // Whether it can join what is cached (always when the cache is empty).
     bool accepts(int x, int y, int width, int height, const glm::vec4& color, float z) const;
     // Adds a cacheable bitmap that the cache accepts; `rows` as glBitmap's, `stride` bytes apart.
-    void add(int x, int y, int width, int height, const std::uint8_t* rows, std::size_t stride,
-             const glm::vec4& color, float z);
+    void add(int x, int y, int width, int height, const std::uint8_t* rows, std::size_t stride, const glm::vec4& color,
+             float z);
     // The whole cache as one bitmap to draw; then clear().
     glrenderer::Bitmap bitmap() const;
     void clear();

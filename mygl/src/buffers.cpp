@@ -14,7 +14,8 @@ namespace {
 void clear(GLbitfield mask) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    constexpr GLbitfield kKnown = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+    constexpr GLbitfield kKnown =
+        GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
     if (mask & ~kKnown) return setError(*s, GL_INVALID_VALUE);
     if (s->renderMode != GL_RENDER) return;  // as the reference: selection clears nothing
     drawCachedBitmaps(*s);
@@ -28,7 +29,8 @@ void clear(GLbitfield mask) {
     const bool scissored = box.enabled && (box.x > 0 || box.y > 0 || box.x + box.width < s->framebuffer.width() ||
                                            box.y + box.height < s->framebuffer.height());
     const bool stencilMasked = (mask & GL_STENCIL_BUFFER_BIT) && (ops.stencil.writeMask & 0xFFu) != 0xFFu;
-    const std::uint32_t depth24 = scissored || stencilMasked ? glrenderer::quadClearDepth24(s->clearDepth) : glrenderer::clearDepth24(s->clearDepth);
+    const std::uint32_t depth24 = scissored || stencilMasked ? glrenderer::quadClearDepth24(s->clearDepth)
+                                                             : glrenderer::clearDepth24(s->clearDepth);
     s->pipeline.clear({.color = color,
                        .depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite,
                        .stencil = (mask & GL_STENCIL_BUFFER_BIT) != 0,

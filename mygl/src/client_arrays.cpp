@@ -4,16 +4,21 @@ namespace mygl {
 
 std::size_t componentBytes(GLenum type) {
     switch (type) {
-    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
-    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
-    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_BYTE:
+    case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT:
+    case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT:
+    case GL_UNSIGNED_INT:
+    case GL_FLOAT: return 4;
     case GL_DOUBLE: return 8;
     default: return 0;
     }
 }
 
 const void* ClientArray::element(std::size_t i) const {
-    const std::size_t step = stride ? static_cast<std::size_t>(stride) : static_cast<std::size_t>(size) * componentBytes(type);
+    const std::size_t step =
+        stride ? static_cast<std::size_t>(stride) : static_cast<std::size_t>(size) * componentBytes(type);
     return static_cast<const unsigned char*>(pointer) + i * step;
 }
 

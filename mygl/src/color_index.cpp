@@ -22,13 +22,18 @@ GLuint truncatedIndex(GLfloat value) {
     return static_cast<GLuint>(static_cast<std::uint64_t>(inRange ? static_cast<std::int64_t>(value) : INT64_MIN));
 }
 
+// clang-format off
 #define MYGL_INDEX_ENTRIES(suffix, T)                                             \
     {"glIndex" #suffix, compiled<+[](T c) { index(c); }>()},                      \
     {"glIndex" #suffix "v", compiled<+[](const T* c) { if (c) index(c[0]); }, 1>()}
+// clang-format on
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_INDEX_ENTRIES(d, GLdouble), MYGL_INDEX_ENTRIES(f, GLfloat), MYGL_INDEX_ENTRIES(i, GLint),
-    MYGL_INDEX_ENTRIES(s, GLshort), MYGL_INDEX_ENTRIES(ub, GLubyte),
+    MYGL_INDEX_ENTRIES(d, GLdouble),
+    MYGL_INDEX_ENTRIES(f, GLfloat),
+    MYGL_INDEX_ENTRIES(i, GLint),
+    MYGL_INDEX_ENTRIES(s, GLshort),
+    MYGL_INDEX_ENTRIES(ub, GLubyte),
     {"glClearIndex", compiled<+[](GLfloat c) {
          if (Context::State* s = stateOutsideBeginEnd()) s->buffers.clearIndex = truncatedIndex(c);
      }>()},

@@ -45,8 +45,10 @@ struct Compiled<Implementation, Count, R (*)(Args...)> {
     // Out of line, so that the usual path (not compiling) saves no registers for it.
     [[gnu::noinline, gnu::cold]] static void keep(Context::State& s, Args... args) {
         std::size_t count = 0;
-        if constexpr (std::is_invocable_v<decltype(Count), Args...>) count = Count(args...);
-        else count = Count;
+        if constexpr (std::is_invocable_v<decltype(Count), Args...>)
+            count = Count(args...);
+        else
+            count = Count;
         s.lists.add([kept = std::make_tuple(KeptArgument<Args>(args, count)...)] {
             std::apply([](const auto&... k) { Implementation(k.get()...); }, kept);
         });
@@ -62,6 +64,7 @@ ProcAddress compiled() {
 
 // The 2, 3 and 4 component forms of a position call (glVertex, glRasterPos) in type T and their
 // vector forms, each calling `function(const T* components, int count)`.
+// clang-format off
 #define MYGL_POSITION_ENTRIES(name, suffix, T, function)                                            \
     {name "2" #suffix, compiled<+[](T x, T y) { function(std::array<T, 2>{x, y}.data(), 2); }>()},        \
     {name "3" #suffix, compiled<+[](T x, T y, T z) { function(std::array<T, 3>{x, y, z}.data(), 3); }>()}, \
@@ -69,5 +72,6 @@ ProcAddress compiled() {
     {name "2" #suffix "v", compiled<+[](const T* v) { function(v, 2); }, 2>()},                                \
     {name "3" #suffix "v", compiled<+[](const T* v) { function(v, 3); }, 3>()},                                \
     {name "4" #suffix "v", compiled<+[](const T* v) { function(v, 4); }, 4>()}
+// clang-format on
 
 }  // namespace mygl

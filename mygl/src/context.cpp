@@ -9,8 +9,7 @@ namespace {
 
 void requireValidSize(int width, int height) {
     if (width < 1 || height < 1 || width > Context::kMaxSize || height > Context::kMaxSize) {
-        throw std::invalid_argument("MyGL context size must be between 1 and " +
-                                    std::to_string(Context::kMaxSize));
+        throw std::invalid_argument("MyGL context size must be between 1 and " + std::to_string(Context::kMaxSize));
     }
 }
 

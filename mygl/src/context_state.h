@@ -29,7 +29,10 @@ namespace mygl {
 
 class MatrixStack {
 public:
-    explicit MatrixStack(std::size_t maxDepth) : maxDepth_(maxDepth) { stack_.reserve(maxDepth); stack_.emplace_back(); }
+    explicit MatrixStack(std::size_t maxDepth) : maxDepth_(maxDepth) {
+        stack_.reserve(maxDepth);
+        stack_.emplace_back();
+    }
     StackMatrix& top() { return stack_.back(); }
     const StackMatrix& top() const { return stack_.back(); }
     std::size_t depth() const { return stack_.size(); }
@@ -73,7 +76,7 @@ struct FragmentOpsParameters {
     GLenum alphaFunc = GL_ALWAYS;
     float alphaRef = 0.0f;  // clamped, as set
     GLenum stencilFunc = GL_ALWAYS;
-    GLint stencilRef = 0;  // as given
+    GLint stencilRef = 0;                                     // as given
     GLuint stencilValueMask = 0xFF, stencilWriteMask = 0xFF;  // the reference starts at its 8 bits
     GLenum stencilFail = GL_KEEP, stencilDepthFail = GL_KEEP, stencilDepthPass = GL_KEEP;
     GLint clearStencil = 0;
@@ -121,15 +124,17 @@ struct Context::State {
     GLenum shadeModel = GL_SMOOTH;
     GLenum polygonModeFront = GL_FILL, polygonModeBack = GL_FILL;
     std::vector<GLenum> otherEnabled{GL_DITHER};  // accepted capabilities that change nothing here
-    std::map<GLenum, GLenum> hints{{GL_PERSPECTIVE_CORRECTION_HINT, GL_DONT_CARE}, {GL_POINT_SMOOTH_HINT, GL_DONT_CARE},
-                                   {GL_LINE_SMOOTH_HINT, GL_DONT_CARE}, {GL_POLYGON_SMOOTH_HINT, GL_DONT_CARE},
+    std::map<GLenum, GLenum> hints{{GL_PERSPECTIVE_CORRECTION_HINT, GL_DONT_CARE},
+                                   {GL_POINT_SMOOTH_HINT, GL_DONT_CARE},
+                                   {GL_LINE_SMOOTH_HINT, GL_DONT_CARE},
+                                   {GL_POLYGON_SMOOTH_HINT, GL_DONT_CARE},
                                    {GL_FOG_HINT, GL_DONT_CARE}};
     glm::vec4 clearColor{0, 0, 0, 0};
     double clearDepth = 1.0;
     BufferState buffers;
     PixelStoreModes pack, unpack;  // glPixelStore
-    PixelModes pixelModes;  // glPixelTransfer, glPixelZoom
-    PixelMaps pixelMaps;    // glPixelMap
+    PixelModes pixelModes;         // glPixelTransfer, glPixelZoom
+    PixelMaps pixelMaps;           // glPixelMap
     // glDrawPixels' and glCopyPixels' depth, stencil and index values, reused from call to call.
     std::vector<std::uint32_t> pixelValues;
     TextureUnit textures;  // (issue 16)
@@ -151,7 +156,7 @@ struct Context::State {
     // glMaterial came inside the open glBegin/glEnd: its vertices are lit as they come.
     bool lightingOnProgramThread = false;
 
-    FogParameters fog;  // (issue 16)
+    FogParameters fog;                  // (issue 16)
     FragmentOpsParameters fragmentOps;  // (issue 16)
 
     // What the reference does when it validates state before a draw or a read: settle the

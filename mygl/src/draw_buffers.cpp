@@ -13,11 +13,20 @@ GLenum bufferError(GLenum buffer) {
     constexpr GLenum kColorAttachment0 = 0x8CE0;
     if (buffer >= kColorAttachment0 && buffer < kColorAttachment0 + 32) return GL_INVALID_OPERATION;
     switch (buffer) {
-    case GL_NONE: case GL_FRONT_LEFT: case GL_BACK_LEFT: case GL_FRONT: case GL_BACK: case GL_LEFT:
-    case GL_FRONT_AND_BACK:
-        return GL_NO_ERROR;
-    case GL_FRONT_RIGHT: case GL_BACK_RIGHT: case GL_RIGHT: case GL_AUX0: case GL_AUX1: case GL_AUX2: case GL_AUX3:
-        return GL_INVALID_OPERATION;
+    case GL_NONE:
+    case GL_FRONT_LEFT:
+    case GL_BACK_LEFT:
+    case GL_FRONT:
+    case GL_BACK:
+    case GL_LEFT:
+    case GL_FRONT_AND_BACK: return GL_NO_ERROR;
+    case GL_FRONT_RIGHT:
+    case GL_BACK_RIGHT:
+    case GL_RIGHT:
+    case GL_AUX0:
+    case GL_AUX1:
+    case GL_AUX2:
+    case GL_AUX3: return GL_INVALID_OPERATION;
     default: return GL_INVALID_ENUM;
     }
 }

@@ -15,14 +15,15 @@ bool byName(const EntryPoint& a, const EntryPoint& b) { return std::strcmp(a.nam
 const std::vector<EntryPoint>& implementedTable() {
     static const std::vector<EntryPoint> table = [] {
         std::vector<EntryPoint> all;
-        for (auto area : {beginEndEntryPoints(), matrixEntryPoints(), stateEntryPoints(), getEntryPoints(),
-                          bufferEntryPoints(), listEntryPoints(), arrayEntryPoints(), rasterPosEntryPoints(),
-                          pixelRectangleEntryPoints(), pixelModeEntryPoints(),
-                          selectionEntryPoints(), attribStackEntryPoints(), lightingEntryPoints(),
-                          clipPlaneEntryPoints(), evaluatorEntryPoints(), fogEntryPoints(),
-                          polygonOffsetEntryPoints(), stippleEntryPoints(), accumulationEntryPoints(), colorIndexEntryPoints(),
-                          drawBufferEntryPoints(), feedbackEntryPoints(), fragmentOpsEntryPoints(),
-                          textureEntryPoints(), textureParameterEntryPoints(), textureGenEntryPoints()}) {
+        for (
+            auto area :
+            {beginEndEntryPoints(),         matrixEntryPoints(),    stateEntryPoints(),        getEntryPoints(),
+             bufferEntryPoints(),           listEntryPoints(),      arrayEntryPoints(),        rasterPosEntryPoints(),
+             pixelRectangleEntryPoints(),   pixelModeEntryPoints(), selectionEntryPoints(),    attribStackEntryPoints(),
+             lightingEntryPoints(),         clipPlaneEntryPoints(), evaluatorEntryPoints(),    fogEntryPoints(),
+             polygonOffsetEntryPoints(),    stippleEntryPoints(),   accumulationEntryPoints(), colorIndexEntryPoints(),
+             drawBufferEntryPoints(),       feedbackEntryPoints(),  fragmentOpsEntryPoints(),  textureEntryPoints(),
+             textureParameterEntryPoints(), textureGenEntryPoints()}) {
             all.insert(all.end(), area.begin(), area.end());
         }
         std::sort(all.begin(), all.end(), byName);
@@ -43,9 +44,8 @@ std::vector<EntryPoint> sortedTable() {
 
 const EntryPoint* findIn(const std::vector<EntryPoint>& table, const char* name) {
     if (!name) return nullptr;
-    const auto found = std::lower_bound(table.begin(), table.end(), name, [](const EntryPoint& e, const char* n) {
-        return std::strcmp(e.name, n) < 0;
-    });
+    const auto found = std::lower_bound(table.begin(), table.end(), name,
+                                        [](const EntryPoint& e, const char* n) { return std::strcmp(e.name, n) < 0; });
     return found != table.end() && std::strcmp(found->name, name) == 0 ? &*found : nullptr;
 }
 

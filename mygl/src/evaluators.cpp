@@ -22,7 +22,8 @@ constexpr int kComponents[kMapTargets] = {4, 1, 3, 1, 2, 3, 4, 3, 4};
 
 // The initial maps: order 1, the attribute's default value.
 Evaluators::Evaluators() {
-    const float initial[kMapTargets][4] = {{1, 1, 1, 1}, {1}, {0, 0, 1}, {0}, {0, 0}, {0, 0, 0}, {0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0, 1}};
+    const float initial[kMapTargets][4] = {{1, 1, 1, 1}, {1},          {0, 0, 1}, {0},         {0, 0},
+                                           {0, 0, 0},    {0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0, 1}};
     for (int t = 0; t < kMapTargets; ++t) {
         map1[t].points.assign(initial[t], initial[t] + kComponents[t]);
         map2[t].points = map1[t].points;
@@ -67,8 +68,9 @@ ActiveMaps activeMaps(const std::array<Map, kMapTargets>& maps, const std::array
     a.vertex = activeMap(maps, enabled, {MapTarget::Vertex4, MapTarget::Vertex3}, a.vertexSize);
     a.normal = activeMap(maps, enabled, {MapTarget::Normal}, a.normalSize);
     a.color = activeMap(maps, enabled, {MapTarget::Color4}, a.colorSize);
-    a.texture = activeMap(maps, enabled, {MapTarget::Texture4, MapTarget::Texture3, MapTarget::Texture2, MapTarget::Texture1},
-                          a.textureSize);
+    a.texture =
+        activeMap(maps, enabled, {MapTarget::Texture4, MapTarget::Texture3, MapTarget::Texture2, MapTarget::Texture1},
+                  a.textureSize);
     return a;
 }
 
@@ -212,7 +214,8 @@ void map2(GLenum target, T u1, T u2, GLint ustride, GLint uorder, T v1, T v2, GL
     for (int i = 0; i < uorder; ++i) {
         for (int j = 0; j < vorder; ++j) {
             for (int k = 0; k < size; ++k) {
-                map.points.push_back(static_cast<float>(points[std::ptrdiff_t(i) * ustride + std::ptrdiff_t(j) * vstride + k]));
+                map.points.push_back(
+                    static_cast<float>(points[std::ptrdiff_t(i) * ustride + std::ptrdiff_t(j) * vstride + k]));
             }
         }
     }
@@ -260,7 +263,8 @@ void evalPoint2(GLint i, GLint j) {
 }
 
 bool vertexMapEnabled(const std::array<bool, kMapTargets>& enabled) {
-    return enabled[static_cast<std::size_t>(MapTarget::Vertex3)] || enabled[static_cast<std::size_t>(MapTarget::Vertex4)];
+    return enabled[static_cast<std::size_t>(MapTarget::Vertex3)] ||
+           enabled[static_cast<std::size_t>(MapTarget::Vertex4)];
 }
 
 // The grid's parameters step by repeated addition, as the reference's loops do.
@@ -335,7 +339,8 @@ void getMap(GLenum target, GLenum query, T* out, Convert convert) {
     if (!s || !out) return;
     const std::optional<int> t1 = targetIndex(target, GL_MAP1_COLOR_4), t2 = targetIndex(target, GL_MAP2_COLOR_4);
     if (!t1 && !t2) return setError(*s, GL_INVALID_ENUM);
-    const Map& map = t1 ? s->evaluators.map1[static_cast<std::size_t>(*t1)] : s->evaluators.map2[static_cast<std::size_t>(*t2)];
+    const Map& map =
+        t1 ? s->evaluators.map1[static_cast<std::size_t>(*t1)] : s->evaluators.map2[static_cast<std::size_t>(*t2)];
     switch (query) {
     case GL_COEFF:
         for (std::size_t i = 0; i < map.points.size(); ++i) out[i] = convert(map.points[i]);
@@ -348,8 +353,7 @@ void getMap(GLenum target, GLenum query, T* out, Convert convert) {
         out[0] = convert(map.u1), out[1] = convert(map.u2);
         if (t2) out[2] = convert(map.v1), out[3] = convert(map.v2);
         break;
-    default:
-        setError(*s, GL_INVALID_ENUM);
+    default: setError(*s, GL_INVALID_ENUM);
     }
 }
 
@@ -377,14 +381,18 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
 const EntryPoint kEntryPoints[] = {
     {"glMap1f", compiled<+[](GLenum t, GLfloat u1, GLfloat u2, GLint stride, GLint order, const GLfloat* p) {
          map1(t, u1, u2, stride, order, p);
-     }, map1Count<GLfloat>>()},
+     },
+                         map1Count<GLfloat>>()},
     {"glMap1d", compiled<+[](GLenum t, GLdouble u1, GLdouble u2, GLint stride, GLint order, const GLdouble* p) {
          map1(t, u1, u2, stride, order, p);
-     }, map1Count<GLdouble>>()},
+     },
+                         map1Count<GLdouble>>()},
     {"glMap2f", compiled<+[](GLenum t, GLfloat u1, GLfloat u2, GLint us, GLint uo, GLfloat v1, GLfloat v2, GLint vs,
-                             GLint vo, const GLfloat* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); }, map2Count<GLfloat>>()},
+                             GLint vo, const GLfloat* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); },
+                         map2Count<GLfloat>>()},
     {"glMap2d", compiled<+[](GLenum t, GLdouble u1, GLdouble u2, GLint us, GLint uo, GLdouble v1, GLdouble v2, GLint vs,
-                             GLint vo, const GLdouble* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); }, map2Count<GLdouble>>()},
+                             GLint vo, const GLdouble* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); },
+                         map2Count<GLdouble>>()},
     {"glMapGrid1f", compiled<+[](GLint un, GLfloat u1, GLfloat u2) { mapGrid1(un, u1, u2); }>()},
     {"glMapGrid1d", compiled<+[](GLint un, GLdouble u1, GLdouble u2) {
          mapGrid1(un, static_cast<float>(u1), static_cast<float>(u2));
@@ -393,26 +401,35 @@ const EntryPoint kEntryPoints[] = {
          mapGrid2(un, u1, u2, vn, v1, v2);
      }>()},
     {"glMapGrid2d", compiled<+[](GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2) {
-         mapGrid2(un, static_cast<float>(u1), static_cast<float>(u2), vn, static_cast<float>(v1), static_cast<float>(v2));
+         mapGrid2(un, static_cast<float>(u1), static_cast<float>(u2), vn, static_cast<float>(v1),
+                  static_cast<float>(v2));
      }>()},
     {"glEvalCoord1f", compiled<+[](GLfloat u) { evalCoord1(u); }>()},
     {"glEvalCoord1d", compiled<+[](GLdouble u) { evalCoord1(static_cast<float>(u)); }>()},
-    {"glEvalCoord1fv", compiled<+[](const GLfloat* u) { if (u) evalCoord1(u[0]); }, 1>()},
-    {"glEvalCoord1dv", compiled<+[](const GLdouble* u) { if (u) evalCoord1(static_cast<float>(u[0])); }, 1>()},
+    {"glEvalCoord1fv", compiled<+[](const GLfloat* u) {
+         if (u) evalCoord1(u[0]);
+     },
+                                1>()},
+    {"glEvalCoord1dv", compiled<+[](const GLdouble* u) {
+         if (u) evalCoord1(static_cast<float>(u[0]));
+     },
+                                1>()},
     {"glEvalCoord2f", compiled<+[](GLfloat u, GLfloat v) { evalCoord2(u, v); }>()},
-    {"glEvalCoord2d", compiled<+[](GLdouble u, GLdouble v) {
-         evalCoord2(static_cast<float>(u), static_cast<float>(v));
-     }>()},
-    {"glEvalCoord2fv", compiled<+[](const GLfloat* u) { if (u) evalCoord2(u[0], u[1]); }, 2>()},
+    {"glEvalCoord2d",
+     compiled<+[](GLdouble u, GLdouble v) { evalCoord2(static_cast<float>(u), static_cast<float>(v)); }>()},
+    {"glEvalCoord2fv", compiled<+[](const GLfloat* u) {
+         if (u) evalCoord2(u[0], u[1]);
+     },
+                                2>()},
     {"glEvalCoord2dv", compiled<+[](const GLdouble* u) {
          if (u) evalCoord2(static_cast<float>(u[0]), static_cast<float>(u[1]));
-     }, 2>()},
+     },
+                                2>()},
     {"glEvalPoint1", compiled<+[](GLint i) { evalPoint1(i); }>()},
     {"glEvalPoint2", compiled<+[](GLint i, GLint j) { evalPoint2(i, j); }>()},
     {"glEvalMesh1", compiled<+[](GLenum mode, GLint i1, GLint i2) { evalMesh1(mode, i1, i2); }>()},
-    {"glEvalMesh2", compiled<+[](GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) {
-         evalMesh2(mode, i1, i2, j1, j2);
-     }>()},
+    {"glEvalMesh2",
+     compiled<+[](GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) { evalMesh2(mode, i1, i2, j1, j2); }>()},
     {"glGetMapdv", entry(+[](GLenum t, GLenum q, GLdouble* v) { getMap(t, q, v, [](float x) { return double(x); }); })},
     {"glGetMapfv", entry(+[](GLenum t, GLenum q, GLfloat* v) { getMap(t, q, v, [](float x) { return x; }); })},
     {"glGetMapiv", entry(+[](GLenum t, GLenum q, GLint* v) { getMap(t, q, v, roundToInt); })},
@@ -425,8 +442,10 @@ std::span<const EntryPoint> evaluatorEntryPoints() { return kEntryPoints; }
 bool setEvaluatorCapability(Context::State& s, GLenum cap, bool enabled) {
     Evaluators& e = s.evaluators;
     bool* flag = cap == GL_AUTO_NORMAL ? &e.autoNormal : nullptr;
-    if (const std::optional<int> t = targetIndex(cap, GL_MAP1_COLOR_4)) flag = &e.enabled1[static_cast<std::size_t>(*t)];
-    if (const std::optional<int> t = targetIndex(cap, GL_MAP2_COLOR_4)) flag = &e.enabled2[static_cast<std::size_t>(*t)];
+    if (const std::optional<int> t = targetIndex(cap, GL_MAP1_COLOR_4))
+        flag = &e.enabled1[static_cast<std::size_t>(*t)];
+    if (const std::optional<int> t = targetIndex(cap, GL_MAP2_COLOR_4))
+        flag = &e.enabled2[static_cast<std::size_t>(*t)];
     if (!flag) return false;
     if (*flag != enabled) endBatch(s);
     *flag = enabled;

@@ -63,7 +63,8 @@ void passThrough(GLfloat value) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glFeedbackBuffer", entry(+[](GLsizei size, GLenum type, GLfloat* buffer) { feedbackBuffer(size, type, buffer); })},
+    {"glFeedbackBuffer",
+     entry(+[](GLsizei size, GLenum type, GLfloat* buffer) { feedbackBuffer(size, type, buffer); })},
     {"glPassThrough", compiled<+[](GLfloat value) { passThrough(value); }>()},
 };
 

@@ -69,10 +69,10 @@ const EntryPoint kEntryPoints[] = {
 
 void updateFog(Context::State& s) {
     const FogParameters& f = s.fog;
-    const FogMode mode = !f.enabled ? FogMode::Off
-                       : f.mode == GL_LINEAR ? FogMode::Linear
-                       : f.mode == GL_EXP ? FogMode::Exp
-                                          : FogMode::Exp2;
+    const FogMode mode = !f.enabled            ? FogMode::Off
+                         : f.mode == GL_LINEAR ? FogMode::Linear
+                         : f.mode == GL_EXP    ? FogMode::Exp
+                                               : FogMode::Exp2;
     const glrenderer::FogState fog =
         glrenderer::makeFogState(mode, s.draw.fog.distance, f.density, f.start, f.end, f.color);
     if (fog != s.draw.fog) endBatch(s);
@@ -84,7 +84,8 @@ void updateFogDistance(Context::State& s) {
     bool eyePosition = false;
     if (s.lightingEnabled) {
         eyePosition = s.lighting.localViewer;
-        for (const glrenderer::LightSource& l : s.lighting.lights) eyePosition = eyePosition || (l.enabled && l.position.w != 0.0f);
+        for (const glrenderer::LightSource& l : s.lighting.lights)
+            eyePosition = eyePosition || (l.enabled && l.position.w != 0.0f);
     }
     s.draw.fog.distance = eyePosition ? glrenderer::FogDistance::EyePosition : glrenderer::FogDistance::OwnDotProduct;
 }

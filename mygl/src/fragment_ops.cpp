@@ -188,7 +188,8 @@ std::optional<std::vector<double>> fragmentOpsQuery(const Context::State& s, GLe
     const FragmentOpsParameters& p = s.fragmentOps;
     const glrenderer::ScissorBox& box = s.draw.fragmentOps.scissor;
     switch (name) {
-    case GL_SCISSOR_BOX: return std::vector<double>{double(box.x), double(box.y), double(box.width), double(box.height)};
+    case GL_SCISSOR_BOX:
+        return std::vector<double>{double(box.x), double(box.y), double(box.width), double(box.height)};
     case GL_ALPHA_TEST_FUNC: return std::vector<double>{double(p.alphaFunc)};
     case GL_ALPHA_TEST_REF: return std::vector<double>{p.alphaRef};
     case GL_STENCIL_FUNC: return std::vector<double>{double(p.stencilFunc)};

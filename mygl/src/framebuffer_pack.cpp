@@ -44,8 +44,10 @@ void putFloatComponent(std::uint8_t* p, float v, GLenum type, bool swap) {
     case GL_UNSIGNED_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(scaled(65535.0f)), swap);
     case GL_SHORT: return writeClientComponent(p, static_cast<std::int16_t>(scaled(32767.0f)), swap);
     case GL_UNSIGNED_INT:
-        return writeClientComponent(p, v > 1.0f ? 4294967295u : static_cast<std::uint32_t>(scaled(4294967295.0f)), swap);
-    case GL_INT: return writeClientComponent(p, v > 1.0f ? 2147483647 : static_cast<std::int32_t>(scaled(2147483647.0f)), swap);
+        return writeClientComponent(p, v > 1.0f ? 4294967295u : static_cast<std::uint32_t>(scaled(4294967295.0f)),
+                                    swap);
+    case GL_INT:
+        return writeClientComponent(p, v > 1.0f ? 2147483647 : static_cast<std::int32_t>(scaled(2147483647.0f)), swap);
     case GL_FLOAT: return writeClientComponent(p, v, swap);
     default: return;
     }
@@ -57,12 +59,16 @@ void putFloatComponent(std::uint8_t* p, float v, GLenum type, bool swap) {
 // transfer; otherwise through the float, truncated). `z` is the depth24's float, transferred.
 void putDepth(std::uint8_t* p, std::uint32_t depth24, float z, bool fastPath, GLenum type, bool swap) {
     switch (type) {
-    case GL_UNSIGNED_BYTE: return writeClientComponent(p, static_cast<std::uint8_t>(static_cast<int>(z * 255.0f)), swap);
-    case GL_BYTE: return writeClientComponent(p, static_cast<std::int8_t>((static_cast<int>(z * 255.0f) - 1) / 2), swap);
+    case GL_UNSIGNED_BYTE:
+        return writeClientComponent(p, static_cast<std::uint8_t>(static_cast<int>(z * 255.0f)), swap);
+    case GL_BYTE:
+        return writeClientComponent(p, static_cast<std::int8_t>((static_cast<int>(z * 255.0f) - 1) / 2), swap);
     case GL_UNSIGNED_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(std::lrint(z * 65535.0f)), swap);
-    case GL_SHORT: return writeClientComponent(p, static_cast<std::int16_t>((static_cast<int>(z * 65535.0f) - 1) / 2), swap);
+    case GL_SHORT:
+        return writeClientComponent(p, static_cast<std::int16_t>((static_cast<int>(z * 65535.0f) - 1) / 2), swap);
     case GL_UNSIGNED_INT:
-        if (!fastPath) return writeClientComponent(p, static_cast<std::uint32_t>(static_cast<double>(z) * 4294967295.0), swap);
+        if (!fastPath)
+            return writeClientComponent(p, static_cast<std::uint32_t>(static_cast<double>(z) * 4294967295.0), swap);
         return writeClientComponent(p, (depth24 << 8) | (depth24 >> 16), swap);
     case GL_INT: return writeClientComponent(p, static_cast<std::int32_t>(2147483647.0 * static_cast<double>(z)), swap);
     case GL_FLOAT: return writeClientComponent(p, z, swap);
@@ -72,8 +78,8 @@ void putDepth(std::uint8_t* p, std::uint32_t depth24, float z, bool fastPath, GL
 
 // Calls writePixel(p, index) for each source pixel, p where its first component goes.
 template <class WritePixel>
-void packRows(int width, int height, GLenum format, GLenum type, const PixelStoreModes& modes,
-              const PackTarget& target, WritePixel writePixel) {
+void packRows(int width, int height, GLenum format, GLenum type, const PixelStoreModes& modes, const PackTarget& target,
+              WritePixel writePixel) {
     const ClientLayout layout = clientLayout(target.fullWidth, format, type, modes);
     const std::size_t pixelBytes = bytesOfType(type) * static_cast<std::size_t>(componentsOf(format));
     auto* first = static_cast<std::uint8_t*>(target.pixels) + layout.firstByte + target.skipRows * layout.rowStride +
@@ -130,7 +136,9 @@ void packColors(std::span<const std::uint32_t> rgba8, int width, int height, GLe
     if (format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA) {
         // The reference goes through floats (each byte times 1/255, summed red first, clamped).
         packRows(width, height, format, type, modes, target, [&](std::uint8_t* p, std::size_t i) {
-            const auto channel = [word = rgba8[i]](int c) { return static_cast<float>((word >> (8 * c)) & 0xFFu) * (1.0f / 255.0f); };
+            const auto channel = [word = rgba8[i]](int c) {
+                return static_cast<float>((word >> (8 * c)) & 0xFFu) * (1.0f / 255.0f);
+            };
             putFloatComponent(p, std::min(channel(0) + channel(1) + channel(2), 1.0f), type, swap);
             if (format == GL_LUMINANCE_ALPHA) putFloatComponent(p + step, channel(3), type, swap);
         });
@@ -156,17 +164,22 @@ void packDepths(std::span<const std::uint32_t> depth24, int width, int height, G
 }
 
 void packStencils(std::span<const std::uint32_t> stencil, int width, int height, GLenum type,
-                  const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps, const PackTarget& target) {
+                  const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps,
+                  const PackTarget& target) {
     const bool swap = modes.swapBytes;
     const std::vector<float>& map = maps.of(GL_PIXEL_MAP_S_TO_S);
     packRows(width, height, GL_STENCIL_INDEX, type, modes, target, [&](std::uint8_t* p, std::size_t i) {
         std::int64_t value = stencil[i];
-        value = pixel.indexShift >= 0 ? value << std::min(pixel.indexShift, 32) : value >> std::min(-pixel.indexShift, 32);
+        value =
+            pixel.indexShift >= 0 ? value << std::min(pixel.indexShift, 32) : value >> std::min(-pixel.indexShift, 32);
         value += pixel.indexOffset;
-        if (pixel.mapStencil) value = static_cast<std::int64_t>(map[static_cast<std::size_t>(value) & (map.size() - 1)]);
+        if (pixel.mapStencil)
+            value = static_cast<std::int64_t>(map[static_cast<std::size_t>(value) & (map.size() - 1)]);
         switch (type) {
-        case GL_UNSIGNED_BYTE: case GL_BYTE: return writeClientComponent(p, static_cast<std::uint8_t>(value), swap);
-        case GL_UNSIGNED_SHORT: case GL_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(value), swap);
+        case GL_UNSIGNED_BYTE:
+        case GL_BYTE: return writeClientComponent(p, static_cast<std::uint8_t>(value), swap);
+        case GL_UNSIGNED_SHORT:
+        case GL_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(value), swap);
         case GL_FLOAT: return writeClientComponent(p, static_cast<float>(value), swap);
         default: return writeClientComponent(p, static_cast<std::uint32_t>(value), swap);
         }

@@ -21,8 +21,7 @@ struct PackTarget {
 // width x height RGBA8 words (red in the low byte), bottom row first, through the pixel
 // transfer of `pixel`. `format` is a colour format other than GL_COLOR_INDEX, `type` not GL_BITMAP.
 void packColors(std::span<const std::uint32_t> rgba8, int width, int height, GLenum format, GLenum type,
-                const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps,
-                const PackTarget& target);
+                const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps, const PackTarget& target);
 // width x height 24-bit depths, bottom row first, through the depth scale and bias; `type` not
 // GL_BITMAP.
 void packDepths(std::span<const std::uint32_t> depth24, int width, int height, GLenum type,
@@ -31,6 +30,7 @@ void packDepths(std::span<const std::uint32_t> depth24, int width, int height, G
 // width x height stencil values, bottom row first, through the index shift and offset and
 // GL_MAP_STENCIL, as indices of `type` (integers as they are, GL_FLOAT as a float).
 void packStencils(std::span<const std::uint32_t> stencil, int width, int height, GLenum type,
-                  const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps, const PackTarget& target);
+                  const PixelStoreModes& modes, const PixelModes& pixel, const PixelMaps& maps,
+                  const PackTarget& target);
 
 }  // namespace mygl

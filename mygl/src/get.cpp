@@ -33,7 +33,8 @@ Value query(const Context::State& s, GLenum name) {
     };
     const auto& d = s.draw;
     switch (name) {
-    case GL_VIEWPORT: return Value{{double(d.viewport.x), double(d.viewport.y), double(d.viewport.width), double(d.viewport.height)}};
+    case GL_VIEWPORT:
+        return Value{{double(d.viewport.x), double(d.viewport.y), double(d.viewport.width), double(d.viewport.height)}};
     case GL_MODELVIEW_MATRIX: return matrix(s.modelview.top().matrix());
     case GL_PROJECTION_MATRIX: return matrix(s.projection.top().matrix());
     case GL_TEXTURE_MATRIX: return matrix(s.texture.top().matrix());
@@ -46,7 +47,8 @@ Value query(const Context::State& s, GLenum name) {
     case GL_MAX_TEXTURE_STACK_DEPTH: return one(double(s.texture.maxDepth()));
     case GL_ATTRIB_STACK_DEPTH: return one(double(s.attribStack.depth()));
     case GL_CLIENT_ATTRIB_STACK_DEPTH: return one(double(s.clientAttribStack.depth()));
-    case GL_MAX_ATTRIB_STACK_DEPTH: case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: return one(double(AttribStack::kMaxDepth));
+    case GL_MAX_ATTRIB_STACK_DEPTH:
+    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: return one(double(AttribStack::kMaxDepth));
     case GL_MAX_VIEWPORT_DIMS: return Value{{double(Context::kMaxSize), double(Context::kMaxSize)}};
     case GL_CULL_FACE: return flag(d.cullEnabled);
     case GL_DEPTH_TEST: return flag(d.depthTest);
@@ -60,8 +62,10 @@ Value query(const Context::State& s, GLenum name) {
     case GL_LINE_STIPPLE_PATTERN: return one(d.lineStipple.pattern);
     case GL_LINE_STIPPLE_REPEAT: return one(d.lineStipple.factor);
     // The reference's limits for points and lines, smooth or not.
-    case GL_POINT_SIZE_RANGE: case GL_LINE_WIDTH_RANGE: return Value{{1.0, 255.0}};
-    case GL_POINT_SIZE_GRANULARITY: case GL_LINE_WIDTH_GRANULARITY: return one(0.1f);
+    case GL_POINT_SIZE_RANGE:
+    case GL_LINE_WIDTH_RANGE: return Value{{1.0, 255.0}};
+    case GL_POINT_SIZE_GRANULARITY:
+    case GL_LINE_WIDTH_GRANULARITY: return one(0.1f);
     case GL_POINT_SIZE: return one(d.pointSize);
     case GL_DEPTH_RANGE: return Value{{d.depthNear, d.depthFar}, true};
     case GL_COLOR_CLEAR_VALUE: return Value{{s.clearColor.r, s.clearColor.g, s.clearColor.b, s.clearColor.a}, true};
@@ -72,13 +76,17 @@ Value query(const Context::State& s, GLenum name) {
     case GL_EDGE_FLAG: return flag(s.edgeFlag);
     case GL_CURRENT_RASTER_POSITION:
         return Value{{s.rasterPosition.x, s.rasterPosition.y, s.rasterPosition.z, s.rasterPosition.w}};
-    case GL_CURRENT_RASTER_COLOR: return Value{{s.rasterColor.r, s.rasterColor.g, s.rasterColor.b, s.rasterColor.a}, true};
+    case GL_CURRENT_RASTER_COLOR:
+        return Value{{s.rasterColor.r, s.rasterColor.g, s.rasterColor.b, s.rasterColor.a}, true};
     case GL_CURRENT_RASTER_TEXTURE_COORDS:
         return Value{{s.rasterTexCoord.s, s.rasterTexCoord.t, s.rasterTexCoord.p, s.rasterTexCoord.q}};
     case GL_CURRENT_RASTER_DISTANCE: return one(s.rasterDistance);
     case GL_CURRENT_RASTER_INDEX: return one(1);  // an RGBA context's
     case GL_CURRENT_RASTER_POSITION_VALID: return flag(s.rasterValid);
-    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: return one(8);
+    case GL_RED_BITS:
+    case GL_GREEN_BITS:
+    case GL_BLUE_BITS:
+    case GL_ALPHA_BITS: return one(8);
     case GL_DEPTH_BITS: return one(24);
     case GL_STENCIL_BITS: return one(8);
     case GL_SUBPIXEL_BITS: return one(8);
@@ -115,17 +123,25 @@ Value query(const Context::State& s, GLenum name) {
     case GL_TEXTURE_COORD_ARRAY_TYPE: return one(s.arrays.texCoord.type);
     case GL_TEXTURE_COORD_ARRAY_STRIDE: return one(s.arrays.texCoord.stride);
     case GL_EDGE_FLAG_ARRAY_STRIDE: return one(s.arrays.edgeFlag.stride);
-    case GL_PERSPECTIVE_CORRECTION_HINT: case GL_POINT_SMOOTH_HINT: case GL_LINE_SMOOTH_HINT:
-    case GL_POLYGON_SMOOTH_HINT: case GL_FOG_HINT: return one(s.hints.at(name));
-    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS: return one(16);
+    case GL_PERSPECTIVE_CORRECTION_HINT:
+    case GL_POINT_SMOOTH_HINT:
+    case GL_LINE_SMOOTH_HINT:
+    case GL_POLYGON_SMOOTH_HINT:
+    case GL_FOG_HINT: return one(s.hints.at(name));
+    case GL_ACCUM_RED_BITS:
+    case GL_ACCUM_GREEN_BITS:
+    case GL_ACCUM_BLUE_BITS:
+    case GL_ACCUM_ALPHA_BITS: return one(16);
     case GL_ACCUM_CLEAR_VALUE: {
         const auto& c = s.buffers.accumClear;
         return Value{{c[0], c[1], c[2], c[3]}, true};
     }
     case GL_DRAW_BUFFER: return one(s.buffers.drawBuffer);
     case GL_READ_BUFFER: return one(s.buffers.readBuffer);
-    case GL_AUX_BUFFERS: case GL_INDEX_BITS: return one(0);
-    case GL_STEREO: case GL_INDEX_MODE: return flag(false);
+    case GL_AUX_BUFFERS:
+    case GL_INDEX_BITS: return one(0);
+    case GL_STEREO:
+    case GL_INDEX_MODE: return flag(false);
     case GL_RGBA_MODE: return flag(true);
     case GL_CURRENT_INDEX: return one(s.buffers.currentIndex);
     // Kept unsigned, answered as signed integers, as the reference does.
@@ -157,7 +173,8 @@ Value query(const Context::State& s, GLenum name) {
     }
     case GL_LIGHT_MODEL_LOCAL_VIEWER: return flag(s.lighting.localViewer);
     case GL_LIGHT_MODEL_TWO_SIDE: return flag(s.lighting.twoSide);
-    case GL_LIGHT_MODEL_COLOR_CONTROL: return one(s.lighting.separateSpecular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR);
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+        return one(s.lighting.separateSpecular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR);
     case GL_COLOR_MATERIAL_FACE: return one(s.colorMaterialFace);
     case GL_COLOR_MATERIAL_PARAMETER: return one(s.colorMaterialMode);
     default:
@@ -170,7 +187,8 @@ Value query(const Context::State& s, GLenum name) {
         if (std::optional<std::vector<double>> fog = fogQuery(s, name)) return Value{*fog, name == GL_FOG_COLOR};
         if (const std::optional<bool> enabled = evaluatorCapability(s, name)) return flag(*enabled);
         if (name == GL_COLOR_WRITEMASK) return Value{*fragmentOpsQuery(s, name), false, true};
-        if (std::optional<std::vector<double>> op = fragmentOpsQuery(s, name)) return Value{*op, name == GL_ALPHA_TEST_REF};
+        if (std::optional<std::vector<double>> op = fragmentOpsQuery(s, name))
+            return Value{*op, name == GL_ALPHA_TEST_REF};
         if (const std::optional<bool> enabled = textureCapability(s, name)) return flag(*enabled);
         if (const std::optional<bool> enabled = texGenCapability(s, name)) return flag(*enabled);
         if (std::optional<std::vector<double>> texture = textureQuery(s, name)) return Value{*texture};
@@ -201,7 +219,8 @@ GLint toInteger(const Value& v, double x) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glGetDoublev", entry(+[](GLenum name, GLdouble* out) { get(name, out, [](const Value&, double x) { return x; }); })},
+    {"glGetDoublev",
+     entry(+[](GLenum name, GLdouble* out) { get(name, out, [](const Value&, double x) { return x; }); })},
     {"glGetFloatv", entry(+[](GLenum name, GLfloat* out) {
          get(name, out, [](const Value&, double x) { return static_cast<GLfloat>(x); });
      })},
@@ -212,11 +231,11 @@ const EntryPoint kEntryPoints[] = {
     {"glGetString", entry(+[](GLenum name) -> const GLubyte* {
          Context::State* s = stateOutsideBeginEnd();
          if (!s) return nullptr;
-         const char* text = name == GL_VENDOR ? "MyGL"
-                          : name == GL_RENDERER ? "MyGL software rasterizer"
-                          : name == GL_VERSION ? "1.1 MyGL"
-                          : name == GL_EXTENSIONS ? ""
-                          : nullptr;
+         const char* text = name == GL_VENDOR       ? "MyGL"
+                            : name == GL_RENDERER   ? "MyGL software rasterizer"
+                            : name == GL_VERSION    ? "1.1 MyGL"
+                            : name == GL_EXTENSIONS ? ""
+                                                    : nullptr;
          if (!text) setError(*s, GL_INVALID_ENUM);
          return reinterpret_cast<const GLubyte*>(text);
      })},

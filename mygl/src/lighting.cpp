@@ -30,8 +30,8 @@ LightSource* lightOf(Context::State& s, GLenum light) {
 // the spot direction, 1 otherwise.
 std::size_t lightValueCount(GLenum name) {
     return name == GL_AMBIENT || name == GL_DIFFUSE || name == GL_SPECULAR || name == GL_POSITION ? 4
-         : name == GL_SPOT_DIRECTION                                                                ? 3
-                                                                                                    : 1;
+           : name == GL_SPOT_DIRECTION                                                            ? 3
+                                                                                                  : 1;
 }
 std::size_t materialValueCount(GLenum name) { return name == GL_SHININESS ? 1 : name == GL_COLOR_INDEXES ? 3 : 4; }
 std::size_t lightModelValueCount(GLenum name) { return name == GL_LIGHT_MODEL_AMBIENT ? 4 : 1; }
@@ -131,8 +131,8 @@ void material(GLenum face, GLenum name, const GLfloat* p) {
     if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return setError(*s, GL_INVALID_ENUM);
     const glm::vec4 v{p[0], p[1], p[2], p[3]};
     if (name == GL_SHININESS && (p[0] < 0.0f || p[0] > 128.0f)) return setError(*s, GL_INVALID_VALUE);
-    if (name != GL_AMBIENT && name != GL_DIFFUSE && name != GL_SPECULAR && name != GL_EMISSION && name != GL_SHININESS &&
-        name != GL_AMBIENT_AND_DIFFUSE && name != GL_COLOR_INDEXES) {
+    if (name != GL_AMBIENT && name != GL_DIFFUSE && name != GL_SPECULAR && name != GL_EMISSION &&
+        name != GL_SHININESS && name != GL_AMBIENT_AND_DIFFUSE && name != GL_COLOR_INDEXES) {
         return setError(*s, GL_INVALID_ENUM);
     }
     if (!s->insideBeginEnd) endBatch(*s);
@@ -178,9 +178,12 @@ void lightModel(GLenum name, const GLfloat* p) {
         updateLitColors(*s);
         break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
-        if (p[0] == static_cast<GLfloat>(GL_SINGLE_COLOR)) l.separateSpecular = false;
-        else if (p[0] == static_cast<GLfloat>(GL_SEPARATE_SPECULAR_COLOR)) l.separateSpecular = true;
-        else return setError(*s, GL_INVALID_ENUM);
+        if (p[0] == static_cast<GLfloat>(GL_SINGLE_COLOR))
+            l.separateSpecular = false;
+        else if (p[0] == static_cast<GLfloat>(GL_SEPARATE_SPECULAR_COLOR))
+            l.separateSpecular = true;
+        else
+            return setError(*s, GL_INVALID_ENUM);
         endBatch(*s);
         updateLitColors(*s);
         break;
@@ -195,7 +198,7 @@ void lightModelv(GLenum name, const T* p) {
     std::array<GLfloat, 4> f{};
     for (std::size_t i = 0; i < lightModelValueCount(name); ++i) {
         f[i] = std::is_same_v<T, GLint> && name == GL_LIGHT_MODEL_AMBIENT ? intColor(static_cast<GLint>(p[i]))
-                                                                         : static_cast<GLfloat>(p[i]);
+                                                                          : static_cast<GLfloat>(p[i]);
     }
     lightModel(name, f.data());
 }
@@ -245,7 +248,9 @@ std::vector<float> materialValues(const Material& m, GLenum name) {
     }
 }
 
-bool isColor(GLenum name) { return name == GL_AMBIENT || name == GL_DIFFUSE || name == GL_SPECULAR || name == GL_EMISSION; }
+bool isColor(GLenum name) {
+    return name == GL_AMBIENT || name == GL_DIFFUSE || name == GL_SPECULAR || name == GL_EMISSION;
+}
 
 // Answers into `out` converted by `convert(isColor, value)`.
 template <class T, class Convert>
@@ -283,38 +288,49 @@ GLfloat asFloat(bool, float v) { return v; }
 // The values behind the pointer of glLight*v, glMaterial*v and glLightModel*v (what a display
 // list keeps).
 template <class T>
-std::size_t lightCount(GLenum, GLenum name, const T*) { return lightValueCount(name); }
+std::size_t lightCount(GLenum, GLenum name, const T*) {
+    return lightValueCount(name);
+}
 template <class T>
-std::size_t materialCount(GLenum, GLenum name, const T*) { return materialValueCount(name); }
+std::size_t materialCount(GLenum, GLenum name, const T*) {
+    return materialValueCount(name);
+}
 template <class T>
-std::size_t lightModelCount(GLenum name, const T*) { return lightModelValueCount(name); }
+std::size_t lightModelCount(GLenum name, const T*) {
+    return lightModelValueCount(name);
+}
 
 const EntryPoint kEntryPoints[] = {
-    {"glLightf", compiled<+[](GLenum l, GLenum name, GLfloat v) { lightv(l, name, std::array<GLfloat, 4>{v}.data()); }>()},
+    {"glLightf",
+     compiled<+[](GLenum l, GLenum name, GLfloat v) { lightv(l, name, std::array<GLfloat, 4>{v}.data()); }>()},
     {"glLighti", compiled<+[](GLenum l, GLenum name, GLint v) {
          lightv(l, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
      }>()},
-    {"glLightfv", compiled<+[](GLenum l, GLenum name, const GLfloat* v) { lightv(l, name, v); }, lightCount<GLfloat>>()},
+    {"glLightfv",
+     compiled<+[](GLenum l, GLenum name, const GLfloat* v) { lightv(l, name, v); }, lightCount<GLfloat>>()},
     {"glLightiv", compiled<+[](GLenum l, GLenum name, const GLint* v) { lightv(l, name, v); }, lightCount<GLint>>()},
-    {"glMaterialf", compiled<+[](GLenum face, GLenum name, GLfloat v) { materialv(face, name, std::array<GLfloat, 4>{v}.data()); }>()},
+    {"glMaterialf",
+     compiled<+[](GLenum face, GLenum name, GLfloat v) { materialv(face, name, std::array<GLfloat, 4>{v}.data()); }>()},
     {"glMateriali", compiled<+[](GLenum face, GLenum name, GLint v) {
          materialv(face, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
      }>()},
-    {"glMaterialfv", compiled<+[](GLenum face, GLenum name, const GLfloat* v) { materialv(face, name, v); },
-                              materialCount<GLfloat>>()},
-    {"glMaterialiv", compiled<+[](GLenum face, GLenum name, const GLint* v) { materialv(face, name, v); },
-                              materialCount<GLint>>()},
+    {"glMaterialfv",
+     compiled<+[](GLenum face, GLenum name, const GLfloat* v) { materialv(face, name, v); }, materialCount<GLfloat>>()},
+    {"glMaterialiv",
+     compiled<+[](GLenum face, GLenum name, const GLint* v) { materialv(face, name, v); }, materialCount<GLint>>()},
     {"glLightModelf", compiled<+[](GLenum name, GLfloat v) { lightModelv(name, std::array<GLfloat, 4>{v}.data()); }>()},
     {"glLightModeli", compiled<+[](GLenum name, GLint v) {
          lightModelv(name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
      }>()},
-    {"glLightModelfv", compiled<+[](GLenum name, const GLfloat* v) { lightModelv(name, v); }, lightModelCount<GLfloat>>()},
+    {"glLightModelfv",
+     compiled<+[](GLenum name, const GLfloat* v) { lightModelv(name, v); }, lightModelCount<GLfloat>>()},
     {"glLightModeliv", compiled<+[](GLenum name, const GLint* v) { lightModelv(name, v); }, lightModelCount<GLint>>()},
     {"glColorMaterial", compiled<+[](GLenum face, GLenum mode) { colorMaterial(face, mode); }>()},
     {"glGetLightfv", entry(+[](GLenum l, GLenum name, GLfloat* out) { getLight(l, name, out, asFloat); })},
     {"glGetLightiv", entry(+[](GLenum l, GLenum name, GLint* out) { getLight(l, name, out, toInteger); })},
     {"glGetMaterialfv", entry(+[](GLenum face, GLenum name, GLfloat* out) { getMaterial(face, name, out, asFloat); })},
-    {"glGetMaterialiv", entry(+[](GLenum face, GLenum name, GLint* out) { getMaterial(face, name, out, toMaterialInteger); })},
+    {"glGetMaterialiv",
+     entry(+[](GLenum face, GLenum name, GLint* out) { getMaterial(face, name, out, toMaterialInteger); })},
 };
 
 }  // namespace
@@ -334,7 +350,8 @@ bool setLightingCapability(Context::State& s, GLenum cap, bool enabled) {
     }
     if (cap == GL_NORMALIZE) return flag(s.lighting.normalize);
     if (cap == GL_RESCALE_NORMAL) return flag(s.lighting.rescaleNormal);
-    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + glrenderer::kMaxLights) return flag(s.lighting.lights[cap - GL_LIGHT0].enabled);
+    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + glrenderer::kMaxLights)
+        return flag(s.lighting.lights[cap - GL_LIGHT0].enabled);
     if (cap == GL_COLOR_MATERIAL) {
         storeFollowedColors(s);
         flag(s.colorMaterialEnabled);

@@ -88,9 +88,14 @@ void callLists(GLsizei n, GLenum type, const void* lists) {
 std::size_t callListsBytes(GLsizei n, GLenum type) {
     const std::size_t count = n > 0 ? static_cast<std::size_t>(n) : 0;
     switch (type) {
-    case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_2_BYTES: return 2 * count;
+    case GL_SHORT:
+    case GL_UNSIGNED_SHORT:
+    case GL_2_BYTES: return 2 * count;
     case GL_3_BYTES: return 3 * count;
-    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: case GL_4_BYTES: return 4 * count;
+    case GL_INT:
+    case GL_UNSIGNED_INT:
+    case GL_FLOAT:
+    case GL_4_BYTES: return 4 * count;
     default: return count;
     }
 }
@@ -100,7 +105,8 @@ void compiledCallLists(GLsizei n, GLenum type, const void* lists) {
     Context::State* s = currentState();
     if (s && s->lists.compiling()) {
         const auto* bytes = static_cast<const GLubyte*>(lists);
-        std::vector<GLubyte> kept = bytes ? std::vector<GLubyte>(bytes, bytes + callListsBytes(n, type)) : std::vector<GLubyte>();
+        std::vector<GLubyte> kept =
+            bytes ? std::vector<GLubyte>(bytes, bytes + callListsBytes(n, type)) : std::vector<GLubyte>();
         const bool null = !bytes;
         s->lists.add([n, type, kept = std::move(kept), null] { callLists(n, type, null ? nullptr : kept.data()); });
         if (!s->lists.executingWhileCompiling()) return;

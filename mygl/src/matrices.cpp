@@ -73,7 +73,8 @@ void frustumOrOrtho(bool isFrustum, float l, float r, float b, float t, float n,
     Context::State* s = currentState();
     if (!s) return;
     // Checked after the conversion to float, as the reference does.
-    const bool invalid = isFrustum ? (n <= 0.0f || f <= 0.0f || l == r || b == t || n == f) : (l == r || b == t || n == f);
+    const bool invalid =
+        isFrustum ? (n <= 0.0f || f <= 0.0f || l == r || b == t || n == f) : (l == r || b == t || n == f);
     if (invalid && !s->insideBeginEnd) return setError(*s, GL_INVALID_VALUE);
     alwaysChange([&](StackMatrix& top) { isFrustum ? top.frustum(l, r, b, t, n, f) : top.ortho(l, r, b, t, n, f); });
 }
@@ -95,7 +96,8 @@ const EntryPoint kEntryPoints[] = {
     {"glTranslated", compiled<+[](GLdouble x, GLdouble y, GLdouble z) {
          alwaysChange([&](StackMatrix& top) { top.translate(F(x), F(y), F(z)); });
      }>()},
-    {"glScalef", compiled<+[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); }>()},
+    {"glScalef",
+     compiled<+[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); }>()},
     {"glScaled", compiled<+[](GLdouble x, GLdouble y, GLdouble z) {
          alwaysChange([&](StackMatrix& top) { top.scale(F(x), F(y), F(z)); });
      }>()},

@@ -17,7 +17,8 @@ float dot3(const float* a, const float* b) { return a[0] * b[0] + a[1] * b[1] + 
 // The translation column of an affine inverse: -(R^-1 t), each row summed left to right.
 void invertTranslation(const Matrix& in, Matrix& out) {
     for (int row = 0; row < 3; ++row) {
-        at(out, row, 3) = -(at(in, 0, 3) * at(out, row, 0) + at(in, 1, 3) * at(out, row, 1) + at(in, 2, 3) * at(out, row, 2));
+        at(out, row, 3) =
+            -(at(in, 0, 3) * at(out, row, 0) + at(in, 1, 3) * at(out, row, 1) + at(in, 2, 3) * at(out, row, 2));
     }
 }
 
@@ -176,7 +177,8 @@ MatrixType typeFromFlags(const Matrix& m, unsigned flags) {
         return m[10] == 1.0f && m[14] == 0.0f ? MatrixType::NoRotation2D : MatrixType::NoRotation3D;
     }
     if (onlyFlags(flags, k3DFlags)) {
-        const bool flat = m[8] == 0.0f && m[9] == 0.0f && m[2] == 0.0f && m[6] == 0.0f && m[10] == 1.0f && m[14] == 0.0f;
+        const bool flat =
+            m[8] == 0.0f && m[9] == 0.0f && m[2] == 0.0f && m[6] == 0.0f && m[10] == 1.0f && m[14] == 0.0f;
         return flat ? MatrixType::General2D : MatrixType::General3D;
     }
     const bool perspective = m[4] == 0.0f && m[12] == 0.0f && m[1] == 0.0f && m[13] == 0.0f && m[2] == 0.0f &&

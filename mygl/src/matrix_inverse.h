@@ -8,8 +8,13 @@ namespace mygl {
 // Mesa's matrix flags: what operations have applied, or what an analysis of the values found
 // after a load or a general product.
 enum MatrixFlag : unsigned {
-    kGeneralFlag = 1, kRotationFlag = 2, kTranslationFlag = 4, kUniformScaleFlag = 8, kGeneralScaleFlag = 16,
-    kGeneral3DFlag = 32, kPerspectiveFlag = 64,
+    kGeneralFlag = 1,
+    kRotationFlag = 2,
+    kTranslationFlag = 4,
+    kUniformScaleFlag = 8,
+    kGeneralScaleFlag = 16,
+    kGeneral3DFlag = 32,
+    kPerspectiveFlag = 64,
 };
 
 enum class MatrixType { General, Identity, NoRotation3D, Perspective, General2D, NoRotation2D, General3D };

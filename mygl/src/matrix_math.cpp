@@ -8,8 +8,8 @@ Matrix multiply(const Matrix& a, const Matrix& b) {
     Matrix p;
     for (int i = 0; i < 4; ++i) {
         for (int j = 0; j < 4; ++j) {
-            at(p, i, j) = at(a, i, 0) * at(b, 0, j) + at(a, i, 1) * at(b, 1, j) +
-                          at(a, i, 2) * at(b, 2, j) + at(a, i, 3) * at(b, 3, j);
+            at(p, i, j) = at(a, i, 0) * at(b, 0, j) + at(a, i, 1) * at(b, 1, j) + at(a, i, 2) * at(b, 2, j) +
+                          at(a, i, 3) * at(b, 3, j);
         }
     }
     return p;

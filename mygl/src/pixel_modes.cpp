@@ -124,8 +124,10 @@ void pixelMap(GLenum map, GLsizei size, const T* values) {
             value = indices ? static_cast<float>(values[i]) : static_cast<float>(values[i] / kMax);
         }
         // Stencil indices are rounded to integers, colour values clamped to [0, 1].
-        if (map == GL_PIXEL_MAP_S_TO_S) value = std::round(value);
-        else if (!indices) value = std::clamp(value, 0.0f, 1.0f);
+        if (map == GL_PIXEL_MAP_S_TO_S)
+            value = std::round(value);
+        else if (!indices)
+            value = std::clamp(value, 0.0f, 1.0f);
         target[i] = value;
     }
 }
@@ -168,7 +170,8 @@ const EntryPoint kEntryPoints[] = {
     {"glPixelTransferi", compiled<+[](GLenum name, GLint value) { pixelTransfer(name, static_cast<float>(value)); }>()},
     {"glPixelMapfv", compiled<+[](GLenum map, GLsizei size, const GLfloat* v) { pixelMap(map, size, v); }, mapSize>()},
     {"glPixelMapuiv", compiled<+[](GLenum map, GLsizei size, const GLuint* v) { pixelMap(map, size, v); }, mapSize>()},
-    {"glPixelMapusv", compiled<+[](GLenum map, GLsizei size, const GLushort* v) { pixelMap(map, size, v); }, mapSize>()},
+    {"glPixelMapusv",
+     compiled<+[](GLenum map, GLsizei size, const GLushort* v) { pixelMap(map, size, v); }, mapSize>()},
     {"glGetPixelMapfv", entry(+[](GLenum map, GLfloat* v) { getPixelMap(map, v); })},
     {"glGetPixelMapuiv", entry(+[](GLenum map, GLuint* v) { getPixelMap(map, v); })},
     {"glGetPixelMapusv", entry(+[](GLenum map, GLushort* v) { getPixelMap(map, v); })},

@@ -13,10 +13,13 @@ void component(std::uint8_t* p, float c, GLenum type, bool swapBytes) {
     switch (type) {
     case GL_UNSIGNED_BYTE: *p = static_cast<std::uint8_t>(std::nearbyint(unit * 255.0)); return;
     case GL_BYTE: *p = static_cast<std::uint8_t>(static_cast<std::int8_t>(std::nearbyint(unit * 127.0))); return;
-    case GL_UNSIGNED_SHORT: return writeClientComponent(p, static_cast<std::uint16_t>(std::nearbyint(unit * 65535.0)), swapBytes);
+    case GL_UNSIGNED_SHORT:
+        return writeClientComponent(p, static_cast<std::uint16_t>(std::nearbyint(unit * 65535.0)), swapBytes);
     case GL_SHORT: return writeClientComponent(p, static_cast<std::int16_t>(std::nearbyint(unit * 32767.0)), swapBytes);
-    case GL_UNSIGNED_INT: return writeClientComponent(p, static_cast<std::uint32_t>(std::nearbyint(unit * 4294967295.0)), swapBytes);
-    case GL_INT: return writeClientComponent(p, static_cast<std::int32_t>(std::nearbyint(unit * 2147483647.0)), swapBytes);
+    case GL_UNSIGNED_INT:
+        return writeClientComponent(p, static_cast<std::uint32_t>(std::nearbyint(unit * 4294967295.0)), swapBytes);
+    case GL_INT:
+        return writeClientComponent(p, static_cast<std::int32_t>(std::nearbyint(unit * 2147483647.0)), swapBytes);
     case GL_FLOAT: return writeClientComponent(p, c, swapBytes);
     default: return;
     }
@@ -66,8 +69,9 @@ void packImage(const std::vector<glm::vec4>& rgba, int width, int height, GLenum
         std::uint8_t* p = base + static_cast<std::size_t>(y) * layout.rowStride;
         for (int x = 0; x < width; ++x) {
             float c[4];
-            const int n = fromRgba(rgba[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)],
-                                   format, c);
+            const int n = fromRgba(
+                rgba[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)],
+                format, c);
             for (int i = 0; i < n; ++i, p += componentBytes) component(p, c[i], type, modes.swapBytes);
         }
     }

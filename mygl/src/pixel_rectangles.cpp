@@ -35,7 +35,8 @@ std::vector<glm::vec4> transferredImage(const Context::State& s, int width, int 
                    [&s](const glm::vec4& c) { return s.pixelModes.transferDrawnColor(c, s.pixelMaps); });
     if (!s.pixelModes.mapColor) return out;
     const auto texel = [](float c, int size) {
-        return static_cast<int>(std::clamp(std::floor(c * static_cast<float>(size)), 0.0f, static_cast<float>(size - 1)));
+        return static_cast<int>(
+            std::clamp(std::floor(c * static_cast<float>(size)), 0.0f, static_cast<float>(size - 1)));
     };
     for (glm::vec4& c : out) {
         const int column = texel(c.b, width), row = texel(c.a, height);
@@ -68,7 +69,8 @@ void drawColors(Context::State& s, int width, int height, const std::vector<glm:
     image.height = height;
     image.topRowFirst = topRowFirst;
     std::vector<glm::vec4> transferred;
-    if (transfer && s.pixelModes.transfersColor()) transferred = transferredImage(s, width, height, colors, topRowFirst);
+    if (transfer && s.pixelModes.transfersColor())
+        transferred = transferredImage(s, width, height, colors, topRowFirst);
     image.colors = transferred.empty() ? colors : transferred;
     drawImage(s, image);
 }
@@ -101,7 +103,8 @@ GLenum drawPixelsError(GLsizei width, GLsizei height, GLenum format, GLenum type
 
 // Draws width x height depth, stencil or index values (bottom row first, as extractValues
 // keeps them; `values` is turned into the image's words in place).
-void drawValues(Context::State& s, int width, int height, GLenum format, GLenum type, std::vector<std::uint32_t>& values) {
+void drawValues(Context::State& s, int width, int height, GLenum format, GLenum type,
+                std::vector<std::uint32_t>& values) {
     if (format == GL_COLOR_INDEX) {
         std::vector<glm::vec4> colors(values.size());
         std::transform(values.begin(), values.end(), colors.begin(),
@@ -174,7 +177,8 @@ CompiledCall keptDrawPixels(const Context::State& s, GLsizei width, GLsizei heig
 
 // The window's colours in a rectangle, bottom row first; parts outside the window read as 0
 // (the reference leaves them undefined: its new texture's zeros, measured).
-std::vector<glm::vec4> windowColors(const glrenderer::Framebuffer& fb, GLint x, GLint y, GLsizei width, GLsizei height) {
+std::vector<glm::vec4> windowColors(const glrenderer::Framebuffer& fb, GLint x, GLint y, GLsizei width,
+                                    GLsizei height) {
     std::vector<glm::vec4> colors(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
     for (std::int64_t row = 0; row < height; ++row) {
         const std::int64_t windowY = std::int64_t{y} + row;
@@ -210,7 +214,8 @@ void windowValues(std::span<const std::uint32_t> buffer, int fbWidth, int fbHeig
         for (std::int64_t column = 0; column < width; ++column) {
             const std::int64_t windowX = std::int64_t{x} + column;
             if (windowX < 0 || windowX >= fbWidth) continue;
-            values[static_cast<std::size_t>(row * width + column)] = buffer[static_cast<std::size_t>(windowY * fbWidth + windowX)];
+            values[static_cast<std::size_t>(row * width + column)] =
+                buffer[static_cast<std::size_t>(windowY * fbWidth + windowX)];
         }
     }
 }
@@ -242,7 +247,8 @@ bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei heig
     Run columns = insideWindow(x, width, fb.width()), rows = insideWindow(y, height, fb.height());
     std::int64_t toX = targetX + (columns.first - x), toY = targetY + (rows.first - y);
     // The target is cut to the window, and to the scissor box when it is on.
-    const auto targetRun = [](std::int64_t start, std::int64_t length, int limit, bool scissor, int boxStart, int boxLength) {
+    const auto targetRun = [](std::int64_t start, std::int64_t length, int limit, bool scissor, int boxStart,
+                              int boxLength) {
         Run run = insideWindow(start, length, limit);
         if (!scissor) return run;
         const std::int64_t first = std::max<std::int64_t>(run.first, boxStart);
@@ -326,7 +332,8 @@ const EntryPoint kEntryPoints[] = {
          }
          drawPixels(w, h, format, type, pixels);
      })},
-    {"glCopyPixels", compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { copyPixels(x, y, w, h, type); }>()},
+    {"glCopyPixels",
+     compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { copyPixels(x, y, w, h, type); }>()},
     {"glPixelZoom", compiled<+[](GLfloat x, GLfloat y) { pixelZoom(x, y); }>()},
 };
 

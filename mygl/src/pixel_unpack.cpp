@@ -13,9 +13,11 @@ float component(const std::uint8_t* p, GLenum type, bool swapBytes) {
     case GL_UNSIGNED_BYTE: return static_cast<float>(*p) / 255.0f;
     case GL_BYTE: return std::max(static_cast<float>(static_cast<std::int8_t>(*p)) / 127.0f, -1.0f);
     case GL_UNSIGNED_SHORT: return static_cast<float>(readClientComponent<std::uint16_t>(p, swapBytes)) / 65535.0f;
-    case GL_SHORT: return std::max(static_cast<float>(readClientComponent<std::int16_t>(p, swapBytes)) / 32767.0f, -1.0f);
+    case GL_SHORT:
+        return std::max(static_cast<float>(readClientComponent<std::int16_t>(p, swapBytes)) / 32767.0f, -1.0f);
     case GL_UNSIGNED_INT: return static_cast<float>(readClientComponent<std::uint32_t>(p, swapBytes) / 4294967295.0);
-    case GL_INT: return static_cast<float>(std::max(readClientComponent<std::int32_t>(p, swapBytes) / 2147483647.0, -1.0));
+    case GL_INT:
+        return static_cast<float>(std::max(readClientComponent<std::int32_t>(p, swapBytes) / 2147483647.0, -1.0));
     case GL_FLOAT: return readClientComponent<float>(p, swapBytes);
     default: return 0.0f;
     }
@@ -67,7 +69,8 @@ std::vector<glm::vec4> unpackWith(const void* pixels, int width, int height, GLe
         for (int x = 0; x < width; ++x) {
             float c[4] = {};
             for (int i = 0; i < components; ++i, p += componentBytes) c[i] = Component(p, type, modes.swapBytes);
-            out[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = toRgba(c, format);
+            out[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] =
+                toRgba(c, format);
         }
     }
     return out;

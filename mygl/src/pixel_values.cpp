@@ -14,7 +14,8 @@ std::uint32_t valueAt(const std::uint8_t* p, GLenum type, bool swapBytes) {
     case GL_UNSIGNED_BYTE: return *p;
     case GL_BYTE: return static_cast<std::uint32_t>(static_cast<std::int32_t>(static_cast<std::int8_t>(*p)));
     case GL_UNSIGNED_SHORT: return readClientComponent<std::uint16_t>(p, swapBytes);
-    case GL_SHORT: return static_cast<std::uint32_t>(static_cast<std::int32_t>(readClientComponent<std::int16_t>(p, swapBytes)));
+    case GL_SHORT:
+        return static_cast<std::uint32_t>(static_cast<std::int32_t>(readClientComponent<std::int16_t>(p, swapBytes)));
     default: return readClientComponent<std::uint32_t>(p, swapBytes);  // GL_UNSIGNED_INT, GL_INT, GL_FLOAT
     }
 }
@@ -93,7 +94,8 @@ void extractValues(const void* pixels, int width, int height, GLenum type, const
     for (int y = 0; y < height; ++y) {
         const std::uint8_t* row = base + static_cast<std::size_t>(y) * layout.rowStride;
         std::uint32_t* target = out.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width);
-        for (int x = 0; x < width; ++x) target[x] = valueAt(row + static_cast<std::size_t>(x) * bytes, type, modes.swapBytes);
+        for (int x = 0; x < width; ++x)
+            target[x] = valueAt(row + static_cast<std::size_t>(x) * bytes, type, modes.swapBytes);
     }
 }
 
@@ -119,7 +121,8 @@ std::uint32_t drawnDepth24(std::uint32_t value, GLenum type, const PixelModes& m
         return depth24Of(sampledUnorm32(texel));
     }
     case GL_FLOAT: return depth24Of(z);  // a float texture
-    default: return resampledDepth24(static_cast<std::uint32_t>(z * 16777215.0f));  // a 24-bit texture, truncated into it
+    default:
+        return resampledDepth24(static_cast<std::uint32_t>(z * 16777215.0f));  // a 24-bit texture, truncated into it
     }
 }
 

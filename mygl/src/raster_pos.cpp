@@ -134,8 +134,10 @@ CompiledCall keptBitmap(const Context::State& s, GLsizei w, GLsizei h, GLfloat x
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_POSITION_ENTRIES("glRasterPos", s, GLshort, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", i, GLint, rasterPosv),
-    MYGL_POSITION_ENTRIES("glRasterPos", f, GLfloat, rasterPosv), MYGL_POSITION_ENTRIES("glRasterPos", d, GLdouble, rasterPosv),
+    MYGL_POSITION_ENTRIES("glRasterPos", s, GLshort, rasterPosv),
+    MYGL_POSITION_ENTRIES("glRasterPos", i, GLint, rasterPosv),
+    MYGL_POSITION_ENTRIES("glRasterPos", f, GLfloat, rasterPosv),
+    MYGL_POSITION_ENTRIES("glRasterPos", d, GLdouble, rasterPosv),
     {"glBitmap", entry(+[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
          Context::State* s = currentState();
          if (!s) return;

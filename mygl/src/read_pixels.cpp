@@ -24,12 +24,13 @@ Span clipToWindow(GLint start, GLsizei length, int limit) {
 }
 
 bool isColorFormat(GLenum format) {
-    return isPixelFormat(format) && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX && format != GL_DEPTH_COMPONENT;
+    return isPixelFormat(format) && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX &&
+           format != GL_DEPTH_COMPONENT;
 }
 
 // The window's words (colour or depth) inside the clipped rectangle, bottom row first.
-std::vector<std::uint32_t> wordsInside(const std::uint32_t* window, int windowWidth,
-                                       std::int64_t x, std::int64_t y, const Span& columns, const Span& rows) {
+std::vector<std::uint32_t> wordsInside(const std::uint32_t* window, int windowWidth, std::int64_t x, std::int64_t y,
+                                       const Span& columns, const Span& rows) {
     std::vector<std::uint32_t> words(static_cast<std::size_t>(columns.count * rows.count));
     for (std::int64_t row = 0; row < rows.count; ++row) {
         const std::int64_t windowRow = y + rows.offset + row;
@@ -58,7 +59,8 @@ void readPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, 
     const auto& fb = s->framebuffer;
     const Span columns = clipToWindow(x, width, fb.width()), rows = clipToWindow(y, height, fb.height());
     if (columns.count == 0 || rows.count == 0) return;
-    const PackTarget target{pixels, width, static_cast<std::size_t>(columns.offset), static_cast<std::size_t>(rows.offset)};
+    const PackTarget target{pixels, width, static_cast<std::size_t>(columns.offset),
+                            static_cast<std::size_t>(rows.offset)};
     const int w = static_cast<int>(columns.count), h = static_cast<int>(rows.count);
     if (format == GL_STENCIL_INDEX) {
         const auto values = wordsInside(fb.stencil().data(), fb.width(), x, y, columns, rows);

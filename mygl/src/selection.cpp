@@ -98,9 +98,11 @@ const EntryPoint kEntryPoints[] = {
                      [name](std::vector<GLuint>& names) { names.back() = name; });
      }>()},
     {"glPushName", compiled<+[](GLuint name) {
-         changeNames([](Context::State& s) {
-             return unless(s, s.selection.names.size() >= Selection::kMaxNameStackDepth, GL_STACK_OVERFLOW);
-         }, [name](std::vector<GLuint>& names) { names.push_back(name); });
+         changeNames(
+             [](Context::State& s) {
+                 return unless(s, s.selection.names.size() >= Selection::kMaxNameStackDepth, GL_STACK_OVERFLOW);
+             },
+             [name](std::vector<GLuint>& names) { names.push_back(name); });
      }>()},
     {"glPopName", compiled<+[] {
          changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_STACK_UNDERFLOW); },

@@ -21,10 +21,13 @@ using glrenderer::PolygonMode;
 // Capabilities a course program may toggle that have no effect on this pipeline (yet): accepted
 // and remembered so that glIsEnabled answers, instead of failing with GL_INVALID_ENUM.
 constexpr GLenum kInertCapabilities[] = {
-    GL_DITHER, GL_POLYGON_SMOOTH,
+    GL_DITHER,
+    GL_POLYGON_SMOOTH,
 };
 
-bool isInert(GLenum cap) { return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities); }
+bool isInert(GLenum cap) {
+    return std::find(std::begin(kInertCapabilities), std::end(kInertCapabilities), cap) != std::end(kInertCapabilities);
+}
 
 void setCapability(GLenum cap, bool enabled) {
     Context::State* s = stateOutsideBeginEnd();
@@ -139,8 +142,9 @@ void pixelStore(GLenum name, GLint value) {
         return;
     default:
         if (value < 0) return setError(*s, GL_INVALID_VALUE);
-        (unpackName == GL_UNPACK_ROW_LENGTH ? modes.rowLength : unpackName == GL_UNPACK_SKIP_ROWS ? modes.skipRows
-                                                                                                : modes.skipPixels) = value;
+        (unpackName == GL_UNPACK_ROW_LENGTH  ? modes.rowLength
+         : unpackName == GL_UNPACK_SKIP_ROWS ? modes.skipRows
+                                             : modes.skipPixels) = value;
     }
 }
 
@@ -203,8 +207,8 @@ const EntryPoint kEntryPoints[] = {
 
 bool setCapability(Context::State& s, GLenum cap, bool enabled) {
     if (cap == GL_CULL_FACE || cap == GL_DEPTH_TEST || cap == GL_POINT_SMOOTH || cap == GL_LINE_SMOOTH) {
-        bool& flag = cap == GL_CULL_FACE ? s.draw.cullEnabled
-                     : cap == GL_DEPTH_TEST ? s.draw.depthTest
+        bool& flag = cap == GL_CULL_FACE      ? s.draw.cullEnabled
+                     : cap == GL_DEPTH_TEST   ? s.draw.depthTest
                      : cap == GL_POINT_SMOOTH ? s.draw.pointSmooth
                                               : s.draw.lineSmooth;
         if (flag != enabled) endBatch(s);

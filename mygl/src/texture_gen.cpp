@@ -30,8 +30,8 @@ void texGen(GLenum coord, GLenum name, const GLdouble* v, std::size_t count) {
         endBatch(*s);
         unit.genMode[index] = mode;
         unit.gen.mode[index] = mode == GL_OBJECT_LINEAR ? glrenderer::TexGenMode::ObjectLinear
-                             : sphere ? glrenderer::TexGenMode::SphereMap
-                                      : glrenderer::TexGenMode::EyeLinear;
+                               : sphere                 ? glrenderer::TexGenMode::SphereMap
+                                                        : glrenderer::TexGenMode::EyeLinear;
         return;
     }
     case GL_OBJECT_PLANE:
@@ -41,8 +41,8 @@ void texGen(GLenum coord, GLenum name, const GLdouble* v, std::size_t count) {
     case GL_EYE_PLANE:
         endBatch(*s);
         s->modelview.top().settleKind();
-        unit.gen.eyePlane[index] = timesMatrix({float(v[0]), float(v[1]), float(v[2]), float(v[3])},
-                                               s->modelview.top().inverse());
+        unit.gen.eyePlane[index] =
+            timesMatrix({float(v[0]), float(v[1]), float(v[2]), float(v[3])}, s->modelview.top().inverse());
         return;
     default: return setError(*s, GL_INVALID_ENUM);
     }
@@ -73,14 +73,18 @@ void getTexGen(GLenum coord, GLenum name, T* out) {
     for (int k = 0; k < 4; ++k) out[k] = static_cast<T>(plane[k]);
 }
 
+// clang-format off
 #define MYGL_TEXGEN(suffix, T)                                                                          \
     {"glTexGen" #suffix, compiled<+[](GLenum c, GLenum n, T v) { const GLdouble d = v; texGen(c, n, &d, 1); }>()}, \
     {"glTexGen" #suffix "v", compiled<+[](GLenum c, GLenum n, const T* v) { texGenv(c, n, v); },          \
                                       +[](GLenum, GLenum n, const T*) { return texGenCount(n); }>()},      \
     {"glGetTexGen" #suffix "v", entry(+[](GLenum c, GLenum n, T* out) { getTexGen(c, n, out); })}
+// clang-format on
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_TEXGEN(i, GLint), MYGL_TEXGEN(f, GLfloat), MYGL_TEXGEN(d, GLdouble),
+    MYGL_TEXGEN(i, GLint),
+    MYGL_TEXGEN(f, GLfloat),
+    MYGL_TEXGEN(d, GLdouble),
 };
 
 }  // namespace

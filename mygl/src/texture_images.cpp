@@ -10,29 +10,55 @@ using glrenderer::TextureBase;
 
 std::optional<TextureBase> textureBaseOf(GLint internalFormat) {
     switch (internalFormat) {
-    case 1: case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12: case GL_LUMINANCE16:
-        return TextureBase::Luminance;
-    case 2: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2: case GL_LUMINANCE8_ALPHA8:
-    case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16:
-        return TextureBase::LuminanceAlpha;
-    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: case GL_ALPHA12: case GL_ALPHA16: return TextureBase::Alpha;
-    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12: case GL_INTENSITY16:
-        return TextureBase::Intensity;
-    case 3: case GL_RGB: case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: case GL_RGB8: case GL_RGB10: case GL_RGB12:
-    case GL_RGB16:
-        return TextureBase::Rgb;
-    case 4: case GL_RGBA: case GL_RGBA2: case GL_RGBA4: case GL_RGB5_A1: case GL_RGBA8: case GL_RGB10_A2:
-    case GL_RGBA12: case GL_RGBA16:
-        return TextureBase::Rgba;
+    case 1:
+    case GL_LUMINANCE:
+    case GL_LUMINANCE4:
+    case GL_LUMINANCE8:
+    case GL_LUMINANCE12:
+    case GL_LUMINANCE16: return TextureBase::Luminance;
+    case 2:
+    case GL_LUMINANCE_ALPHA:
+    case GL_LUMINANCE4_ALPHA4:
+    case GL_LUMINANCE6_ALPHA2:
+    case GL_LUMINANCE8_ALPHA8:
+    case GL_LUMINANCE12_ALPHA4:
+    case GL_LUMINANCE12_ALPHA12:
+    case GL_LUMINANCE16_ALPHA16: return TextureBase::LuminanceAlpha;
+    case GL_ALPHA:
+    case GL_ALPHA4:
+    case GL_ALPHA8:
+    case GL_ALPHA12:
+    case GL_ALPHA16: return TextureBase::Alpha;
+    case GL_INTENSITY:
+    case GL_INTENSITY4:
+    case GL_INTENSITY8:
+    case GL_INTENSITY12:
+    case GL_INTENSITY16: return TextureBase::Intensity;
+    case 3:
+    case GL_RGB:
+    case GL_R3_G3_B2:
+    case GL_RGB4:
+    case GL_RGB5:
+    case GL_RGB8:
+    case GL_RGB10:
+    case GL_RGB12:
+    case GL_RGB16: return TextureBase::Rgb;
+    case 4:
+    case GL_RGBA:
+    case GL_RGBA2:
+    case GL_RGBA4:
+    case GL_RGB5_A1:
+    case GL_RGBA8:
+    case GL_RGB10_A2:
+    case GL_RGBA12:
+    case GL_RGBA16: return TextureBase::Rgba;
     default: return std::nullopt;
     }
 }
 
 namespace {
 
-std::uint32_t toByte(float c) {
-    return static_cast<std::uint32_t>(std::nearbyint(std::clamp(c, 0.0f, 1.0f) * 255.0f));
-}
+std::uint32_t toByte(float c) { return static_cast<std::uint32_t>(std::nearbyint(std::clamp(c, 0.0f, 1.0f) * 255.0f)); }
 
 // One colour as the texel of `base` stores it: luminance and intensity take R.
 std::uint32_t texel(const glm::vec4& c, TextureBase base) {

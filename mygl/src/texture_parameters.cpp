@@ -57,7 +57,8 @@ void texParameter(GLenum target, GLenum name, const GLfloat* v, int count) {
     switch (name) {
     case GL_TEXTURE_MIN_FILTER:
         if (value != GL_NEAREST && value != GL_LINEAR && value != GL_NEAREST_MIPMAP_NEAREST &&
-            value != GL_LINEAR_MIPMAP_NEAREST && value != GL_NEAREST_MIPMAP_LINEAR && value != GL_LINEAR_MIPMAP_LINEAR) {
+            value != GL_LINEAR_MIPMAP_NEAREST && value != GL_NEAREST_MIPMAP_LINEAR &&
+            value != GL_LINEAR_MIPMAP_LINEAR) {
             return setError(*s, GL_INVALID_ENUM);
         }
         t.minFilter = value;
@@ -66,7 +67,8 @@ void texParameter(GLenum target, GLenum name, const GLfloat* v, int count) {
         if (value != GL_NEAREST && value != GL_LINEAR) return setError(*s, GL_INVALID_ENUM);
         t.magFilter = value;
         return;
-    case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T:
+    case GL_TEXTURE_WRAP_S:
+    case GL_TEXTURE_WRAP_T:
         if (value != GL_REPEAT && value != GL_CLAMP && value != GL_CLAMP_TO_EDGE) return setError(*s, GL_INVALID_ENUM);
         (name == GL_TEXTURE_WRAP_S ? t.wrapS : t.wrapT) = value;
         return;
@@ -154,7 +156,9 @@ void getTexParameter(GLenum target, GLenum name, T* out) {
     case GL_TEXTURE_MAG_FILTER: a.values = {double(t.magFilter)}; break;
     case GL_TEXTURE_WRAP_S: a.values = {double(t.wrapS)}; break;
     case GL_TEXTURE_WRAP_T: a.values = {double(t.wrapT)}; break;
-    case GL_TEXTURE_BORDER_COLOR: a = {{t.borderColor.r, t.borderColor.g, t.borderColor.b, t.borderColor.a}, true}; break;
+    case GL_TEXTURE_BORDER_COLOR:
+        a = {{t.borderColor.r, t.borderColor.g, t.borderColor.b, t.borderColor.a}, true};
+        break;
     case GL_TEXTURE_PRIORITY: a.values = {t.priority}; break;
     case GL_TEXTURE_RESIDENT: a.values = {1.0}; break;
     default: return setError(*s, GL_INVALID_ENUM);
@@ -169,7 +173,9 @@ double componentBits(const TextureLevel& level, GLenum name) {
     const bool alpha = base == TextureBase::Alpha || base == TextureBase::LuminanceAlpha || base == TextureBase::Rgba;
     const bool luminance = base == TextureBase::Luminance || base == TextureBase::LuminanceAlpha;
     switch (name) {
-    case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: return color ? 8 : 0;
+    case GL_TEXTURE_RED_SIZE:
+    case GL_TEXTURE_GREEN_SIZE:
+    case GL_TEXTURE_BLUE_SIZE: return color ? 8 : 0;
     case GL_TEXTURE_ALPHA_SIZE: return alpha ? 8 : 0;
     case GL_TEXTURE_LUMINANCE_SIZE: return luminance ? 8 : 0;
     default: return base == TextureBase::Intensity ? 8 : 0;  // GL_TEXTURE_INTENSITY_SIZE
@@ -192,10 +198,12 @@ void getTexLevelParameter(GLenum target, GLint level, GLenum name, T* out) {
     case GL_TEXTURE_HEIGHT: a.values = {double(l.height)}; break;
     case GL_TEXTURE_BORDER: a.values = {double(l.border)}; break;
     case GL_TEXTURE_INTERNAL_FORMAT: a.values = {double(defined ? l.internalFormat : 1)}; break;
-    case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: case GL_TEXTURE_ALPHA_SIZE:
-    case GL_TEXTURE_LUMINANCE_SIZE: case GL_TEXTURE_INTENSITY_SIZE:
-        a.values = {defined ? componentBits(l, name) : 0.0};
-        break;
+    case GL_TEXTURE_RED_SIZE:
+    case GL_TEXTURE_GREEN_SIZE:
+    case GL_TEXTURE_BLUE_SIZE:
+    case GL_TEXTURE_ALPHA_SIZE:
+    case GL_TEXTURE_LUMINANCE_SIZE:
+    case GL_TEXTURE_INTENSITY_SIZE: a.values = {defined ? componentBits(l, name) : 0.0}; break;
     default: return setError(*s, GL_INVALID_ENUM);
     }
     if (out) answer(a, out);
@@ -233,19 +241,24 @@ const EntryPoint kEntryPoints[] = {
     {"glTexParameteri", compiled<+[](GLenum target, GLenum name, GLint v) { texParameteri(target, name, &v, 1); }>()},
     {"glTexParameterfv", compiled<+[](GLenum target, GLenum name, const GLfloat* v) {
          texParameter(target, name, v, static_cast<int>(texParameterCount(name)));
-     }, +[](GLenum, GLenum name, const GLfloat*) { return texParameterCount(name); }>()},
+     },
+                                  +[](GLenum, GLenum name, const GLfloat*) { return texParameterCount(name); }>()},
     {"glTexParameteriv", compiled<+[](GLenum target, GLenum name, const GLint* v) {
          texParameteri(target, name, v, static_cast<int>(texParameterCount(name)));
-     }, +[](GLenum, GLenum name, const GLint*) { return texParameterCount(name); }>()},
+     },
+                                  +[](GLenum, GLenum name, const GLint*) { return texParameterCount(name); }>()},
     {"glTexEnvf", compiled<+[](GLenum target, GLenum name, GLfloat v) { texEnv(target, name, &v, 1); }>()},
     {"glTexEnvi", compiled<+[](GLenum target, GLenum name, GLint v) { texEnvi(target, name, &v, 1); }>()},
     {"glTexEnvfv", compiled<+[](GLenum target, GLenum name, const GLfloat* v) {
          texEnv(target, name, v, static_cast<int>(texEnvCount(name)));
-     }, +[](GLenum, GLenum name, const GLfloat*) { return texEnvCount(name); }>()},
+     },
+                            +[](GLenum, GLenum name, const GLfloat*) { return texEnvCount(name); }>()},
     {"glTexEnviv", compiled<+[](GLenum target, GLenum name, const GLint* v) {
          texEnvi(target, name, v, static_cast<int>(texEnvCount(name)));
-     }, +[](GLenum, GLenum name, const GLint*) { return texEnvCount(name); }>()},
-    {"glGetTexParameterfv", entry(+[](GLenum target, GLenum name, GLfloat* out) { getTexParameter(target, name, out); })},
+     },
+                            +[](GLenum, GLenum name, const GLint*) { return texEnvCount(name); }>()},
+    {"glGetTexParameterfv",
+     entry(+[](GLenum target, GLenum name, GLfloat* out) { getTexParameter(target, name, out); })},
     {"glGetTexParameteriv", entry(+[](GLenum target, GLenum name, GLint* out) { getTexParameter(target, name, out); })},
     {"glGetTexLevelParameterfv", entry(+[](GLenum target, GLint level, GLenum name, GLfloat* out) {
          getTexLevelParameter(target, level, name, out);
@@ -285,9 +298,9 @@ glm::vec4 asBaseFormat(const glm::vec4& c, glrenderer::TextureBase base) {
 void updateTexturing(Context::State& s) {
     TextureUnit& unit = s.textures;
     glrenderer::TextureState next;
-    TextureObject* t = unit.enabled2D ? &boundTexture(unit, GL_TEXTURE_2D)
-                     : unit.enabled1D ? &boundTexture(unit, GL_TEXTURE_1D)
-                                      : nullptr;
+    TextureObject* t = unit.enabled2D   ? &boundTexture(unit, GL_TEXTURE_2D)
+                       : unit.enabled1D ? &boundTexture(unit, GL_TEXTURE_1D)
+                                        : nullptr;
     const std::size_t levels = t ? sampledLevels(*t) : 0;
     if (levels > 0) {
         if (!t->snapshot || t->snapshot->levelCount != static_cast<int>(levels)) {
@@ -303,9 +316,9 @@ void updateTexturing(Context::State& s) {
                              ? TextureFilter::Nearest
                              : TextureFilter::Linear;
         next.magFilter = t->magFilter == GL_LINEAR ? TextureFilter::Linear : TextureFilter::Nearest;
-        next.mipFilter = !isMipmapFilter(min) ? MipmapFilter::None
-                       : min == GL_NEAREST_MIPMAP_NEAREST || min == GL_LINEAR_MIPMAP_NEAREST ? MipmapFilter::Nearest
-                                                                                             : MipmapFilter::Linear;
+        next.mipFilter = !isMipmapFilter(min)                                                  ? MipmapFilter::None
+                         : min == GL_NEAREST_MIPMAP_NEAREST || min == GL_LINEAR_MIPMAP_NEAREST ? MipmapFilter::Nearest
+                                                                                               : MipmapFilter::Linear;
         // GL_CLAMP samples as GL_CLAMP_TO_EDGE when no filter reaches past a texel (the
         // reference's float sampler gives the same bits then); a 1D texture has no T.
         const bool blends = next.minFilter == TextureFilter::Linear || next.magFilter == TextureFilter::Linear ||

@@ -56,7 +56,7 @@ inline glrenderer::TextureGen defaultTextureGen() {
 // The one texture unit of GL 1.1.
 struct TextureUnit {
     std::map<GLuint, TextureObject> objects;  // the named ones; name 0 is each target's default
-    GLuint largestNameEver = 0;  // deleting does not lower it (Mesa's hash table MaxKey)
+    GLuint largestNameEver = 0;               // deleting does not lower it (Mesa's hash table MaxKey)
     TextureObject default1D{GL_TEXTURE_1D}, default2D{GL_TEXTURE_2D};
     GLuint bound1D = 0, bound2D = 0;
     bool enabled1D = false, enabled2D = false;

@@ -24,7 +24,8 @@ bool isProxy(GLenum target) { return target == GL_PROXY_TEXTURE_1D || target == 
 GLenum pixelFormatError(GLenum format, GLenum type) {
     if (!isPixelFormat(format) || !isPixelType(type)) return GL_INVALID_ENUM;
     if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return GL_INVALID_ENUM;
-    if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT) return GL_INVALID_OPERATION;
+    if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT)
+        return GL_INVALID_OPERATION;
     return GL_NO_ERROR;
 }
 
@@ -45,7 +46,8 @@ void defineLevel(TextureLevel& level, int width, int height, int border, GLint i
     } else {
         inner.reserve(static_cast<std::size_t>(level.imageWidth) * static_cast<std::size_t>(level.imageHeight));
         for (int y = height > 1 ? border : 0; y < (height > 1 ? height - border : 1); ++y) {
-            for (int x = border; x < width - border; ++x) inner.push_back(rgba[static_cast<std::size_t>(y * width + x)]);
+            for (int x = border; x < width - border; ++x)
+                inner.push_back(rgba[static_cast<std::size_t>(y * width + x)]);
         }
     }
     level.texels = textureTexels(inner, base);
@@ -122,7 +124,8 @@ void texSubImage(GLenum target, int dims, GLint level, GLint x, GLint y, GLsizei
     const int x1 = std::min(x + width, defined.imageWidth), y1 = std::min(y + height, defined.imageHeight);
     if (x0 >= x1 || y0 >= y1) return;
     for (int row = y0; row < y1; ++row) {
-        for (int column = x0; column < x1; ++column) inner.push_back(rgba[static_cast<std::size_t>((row - y) * width + column - x)]);
+        for (int column = x0; column < x1; ++column)
+            inner.push_back(rgba[static_cast<std::size_t>((row - y) * width + column - x)]);
     }
     endBatch(*s);  // the reference draws its pending vertices and forgets their format
     writeSubImage(defined, x0, y0, x1 - x0, y1 - y0, inner);
@@ -213,7 +216,8 @@ void genTextures(GLsizei n, GLuint* names) {
     // Consecutive names after the largest ever given or bound, deleted or not, as the reference
     // gives them (_mesa_HashFindFreeKeyBlock); after the largest in use when those would overflow.
     GLuint& largest = s->textures.largestNameEver;
-    GLuint next = largest < 0xFFFFFFFEu - static_cast<GLuint>(n) ? largest + 1 : (objects.empty() ? 1 : objects.rbegin()->first + 1);
+    GLuint next = largest < 0xFFFFFFFEu - static_cast<GLuint>(n) ? largest + 1
+                                                                 : (objects.empty() ? 1 : objects.rbegin()->first + 1);
     for (GLsizei i = 0; i < n; ++i) {
         objects.emplace(next, TextureObject{});
         names[i] = next++;
@@ -291,7 +295,9 @@ const EntryPoint kEntryPoints[] = {
          return areTexturesResident(n, names, residences);
      })},
     {"glPrioritizeTextures",
-     compiled<+[](GLsizei n, const GLuint* names, const GLclampf* priorities) { prioritizeTextures(n, names, priorities); },
+     compiled<+[](GLsizei n, const GLuint* names, const GLclampf* priorities) {
+         prioritizeTextures(n, names, priorities);
+     },
               +[](GLsizei n, const GLuint*, const GLclampf*) { return static_cast<std::size_t>(std::max(n, 0)); }>()},
     {"glTexImage1D", entry(+[](GLenum target, GLint level, GLint internalFormat, GLsizei width, GLint border,
                                GLenum format, GLenum type, const void* pixels) {
@@ -301,29 +307,26 @@ const EntryPoint kEntryPoints[] = {
                                GLint border, GLenum format, GLenum type, const void* pixels) {
          texImageCall(target, 2, level, internalFormat, width, height, border, format, type, pixels);
      })},
-    {"glTexSubImage1D", entry(+[](GLenum target, GLint level, GLint x, GLsizei width, GLenum format, GLenum type,
-                                  const void* pixels) {
+    {"glTexSubImage1D",
+     entry(+[](GLenum target, GLint level, GLint x, GLsizei width, GLenum format, GLenum type, const void* pixels) {
          texSubImageCall(target, 1, level, x, 0, width, 1, format, type, pixels);
      })},
-    {"glTexSubImage2D", entry(+[](GLenum target, GLint level, GLint x, GLint y, GLsizei width, GLsizei height,
-                                  GLenum format, GLenum type, const void* pixels) {
-         texSubImageCall(target, 2, level, x, y, width, height, format, type, pixels);
-     })},
-    {"glCopyTexImage1D", compiled<+[](GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y,
-                                      GLsizei width, GLint border) {
+    {"glTexSubImage2D",
+     entry(+[](GLenum target, GLint level, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
+               const void* pixels) { texSubImageCall(target, 2, level, x, y, width, height, format, type, pixels); })},
+    {"glCopyTexImage1D",
+     compiled<+[](GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y, GLsizei width, GLint border) {
          copyTexImage(target, 1, level, internalFormat, x, y, width, 1, border);
      }>()},
-    {"glCopyTexImage2D", compiled<+[](GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y,
-                                      GLsizei width, GLsizei height, GLint border) {
-         copyTexImage(target, 2, level, internalFormat, x, y, width, height, border);
-     }>()},
+    {"glCopyTexImage2D",
+     compiled<+[](GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y, GLsizei width, GLsizei height,
+                  GLint border) { copyTexImage(target, 2, level, internalFormat, x, y, width, height, border); }>()},
     {"glCopyTexSubImage1D", compiled<+[](GLenum target, GLint level, GLint xOffset, GLint x, GLint y, GLsizei width) {
          copyTexSubImage(target, 1, level, xOffset, 0, x, y, width, 1);
      }>()},
-    {"glCopyTexSubImage2D", compiled<+[](GLenum target, GLint level, GLint xOffset, GLint yOffset, GLint x, GLint y,
-                                         GLsizei width, GLsizei height) {
-         copyTexSubImage(target, 2, level, xOffset, yOffset, x, y, width, height);
-     }>()},
+    {"glCopyTexSubImage2D",
+     compiled<+[](GLenum target, GLint level, GLint xOffset, GLint yOffset, GLint x, GLint y, GLsizei width,
+                  GLsizei height) { copyTexSubImage(target, 2, level, xOffset, yOffset, x, y, width, height); }>()},
 };
 
 }  // namespace

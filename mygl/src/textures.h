@@ -26,5 +26,4 @@ std::optional<std::vector<double>> textureQuery(const Context::State& state, GLe
 bool setTexGenCapability(Context::State& state, GLenum cap, bool enabled);
 std::optional<bool> texGenCapability(const Context::State& state, GLenum cap);
 
-
 }  // namespace mygl

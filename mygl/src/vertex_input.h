@@ -76,7 +76,9 @@ inline float toFloat(GLuint v) { return static_cast<float>(static_cast<double>(v
 inline float toFloat(GLbyte v) { return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 255.0f); }
 inline float toFloat(GLshort v) { return (2.0f * static_cast<float>(v) + 1.0f) * (1.0f / 65535.0f); }
 // In float, then scaled in double, as the reference's INT_TO_FLOAT (not the exact (2c + 1) / (2^32 - 1)).
-inline float toFloat(GLint v) { return static_cast<float>((2.0f * static_cast<float>(v) + 1.0f) * (1.0 / 4294967294.0)); }
+inline float toFloat(GLint v) {
+    return static_cast<float>((2.0f * static_cast<float>(v) + 1.0f) * (1.0 / 4294967294.0));
+}
 inline float toFloat(GLfloat v) { return v; }
 inline float toFloat(GLdouble v) { return static_cast<float>(v); }
 

@@ -37,7 +37,8 @@ struct Kept<const void*> {
     std::vector<unsigned char> data;
     const void* pointer;
     Kept(const void* p, std::size_t bytes)
-        : data(p && bytes ? std::vector<unsigned char>(static_cast<const unsigned char*>(p), static_cast<const unsigned char*>(p) + bytes)
+        : data(p && bytes ? std::vector<unsigned char>(static_cast<const unsigned char*>(p),
+                                                       static_cast<const unsigned char*>(p) + bytes)
                           : std::vector<unsigned char>()),
           pointer(p) {}
     const void* get() const { return data.empty() ? pointer : data.data(); }
@@ -58,8 +59,10 @@ struct Kept<GLuint*> {
 // call's arguments.
 template <auto Count, class... Args>
 std::size_t elementCount(Args... args) {
-    if constexpr (std::is_invocable_v<decltype(Count), Args...>) return Count(args...);
-    else return Count;
+    if constexpr (std::is_invocable_v<decltype(Count), Args...>)
+        return Count(args...);
+    else
+        return Count;
 }
 
 // The wrapper for the table entry `Slot`: records the call, then forwards it to the backend
@@ -120,9 +123,14 @@ std::size_t polygonStippleBytes(const GLubyte*) {
 std::size_t bytesOf(GLenum type, GLsizei n) {
     const std::size_t count = n > 0 ? static_cast<std::size_t>(n) : 0;
     switch (type) {
-    case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_2_BYTES: return 2 * count;
+    case GL_SHORT:
+    case GL_UNSIGNED_SHORT:
+    case GL_2_BYTES: return 2 * count;
     case GL_3_BYTES: return 3 * count;
-    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: case GL_4_BYTES: return 4 * count;
+    case GL_INT:
+    case GL_UNSIGNED_INT:
+    case GL_FLOAT:
+    case GL_4_BYTES: return 4 * count;
     default: return count;
     }
 }
@@ -137,9 +145,13 @@ std::size_t lightParameterCount(GLenum name) {
     return four ? 4 : name == GL_SPOT_DIRECTION || name == GL_COLOR_INDEXES ? 3 : 1;
 }
 template <class T>
-std::size_t lightCount(GLenum, GLenum name, const T*) { return lightParameterCount(name); }
+std::size_t lightCount(GLenum, GLenum name, const T*) {
+    return lightParameterCount(name);
+}
 template <class T>
-std::size_t lightModelCount(GLenum name, const T*) { return lightParameterCount(name); }
+std::size_t lightModelCount(GLenum name, const T*) {
+    return lightParameterCount(name);
+}
 // Bytes of a client image of width x height x depth pixels under the unpack state in force
 // (asked of the backend: queries, not recorded), from the pointer to the last byte read.
 std::size_t imageBytes(GLsizei width, GLsizei height, GLenum format, GLenum type) {
@@ -150,10 +162,12 @@ std::size_t imageBytes(GLsizei width, GLsizei height, GLenum format, GLenum type
     glad_glGetIntegerv(GL_UNPACK_SKIP_PIXELS, &skipPixels);
     glad_glGetIntegerv(GL_UNPACK_SKIP_ROWS, &skipRows);
     const std::size_t components = format == GL_RGBA || format == 0x80E1 /* GL_BGRA */ ? 4
-                                 : format == GL_RGB || format == 0x80E0 /* GL_BGR */ ? 3
-                                 : format == GL_LUMINANCE_ALPHA ? 2 : 1;
-    const std::size_t component = type == GL_UNSIGNED_BYTE || type == GL_BYTE ? 1
-                                : type == GL_UNSIGNED_SHORT || type == GL_SHORT ? 2 : 4;
+                                   : format == GL_RGB || format == 0x80E0 /* GL_BGR */ ? 3
+                                   : format == GL_LUMINANCE_ALPHA                      ? 2
+                                                                                       : 1;
+    const std::size_t component = type == GL_UNSIGNED_BYTE || type == GL_BYTE     ? 1
+                                  : type == GL_UNSIGNED_SHORT || type == GL_SHORT ? 2
+                                                                                  : 4;
     const std::size_t pixel = components * component;
     const std::size_t rowPixels = static_cast<std::size_t>(rowLength > 0 ? rowLength : width);
     const std::size_t a = alignment > 0 ? static_cast<std::size_t>(alignment) : 1;
@@ -161,7 +175,8 @@ std::size_t imageBytes(GLsizei width, GLsizei height, GLenum format, GLenum type
         const std::size_t rowBytes = (rowPixels + 8 * a - 1) / (8 * a) * a;
         const std::size_t skipBits = static_cast<std::size_t>(std::max(skipPixels, 0));
         return static_cast<std::size_t>(std::max(skipRows, 0)) * rowBytes + skipBits / 8 +
-               static_cast<std::size_t>(height - 1) * rowBytes + (skipBits % 8 + static_cast<std::size_t>(width) + 7) / 8;
+               static_cast<std::size_t>(height - 1) * rowBytes +
+               (skipBits % 8 + static_cast<std::size_t>(width) + 7) / 8;
     }
     std::size_t stride = rowPixels * pixel;
     if (component < a) stride = (stride + a - 1) / a * a;
@@ -172,20 +187,24 @@ std::size_t imageBytes(GLsizei width, GLsizei height, GLenum format, GLenum type
 std::size_t texImage1DBytes(GLenum, GLint, GLint, GLsizei w, GLint, GLenum format, GLenum type, const void*) {
     return imageBytes(w, 1, format, type);
 }
-std::size_t texImage2DBytes(GLenum, GLint, GLint, GLsizei w, GLsizei h, GLint, GLenum format, GLenum type, const void*) {
+std::size_t texImage2DBytes(GLenum, GLint, GLint, GLsizei w, GLsizei h, GLint, GLenum format, GLenum type,
+                            const void*) {
     return imageBytes(w, h, format, type);
 }
 std::size_t texSubImage1DBytes(GLenum, GLint, GLint, GLsizei w, GLenum format, GLenum type, const void*) {
     return imageBytes(w, 1, format, type);
 }
-std::size_t texSubImage2DBytes(GLenum, GLint, GLint, GLint, GLsizei w, GLsizei h, GLenum format, GLenum type, const void*) {
+std::size_t texSubImage2DBytes(GLenum, GLint, GLint, GLint, GLsizei w, GLsizei h, GLenum format, GLenum type,
+                               const void*) {
     return imageBytes(w, h, format, type);
 }
 std::size_t drawPixelsBytes(GLsizei w, GLsizei h, GLenum format, GLenum type, const void*) {
     return imageBytes(w, h, format, type);
 }
 template <class T>
-std::size_t pixelMapCount(GLenum, GLsizei n, const T*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
+std::size_t pixelMapCount(GLenum, GLsizei n, const T*) {
+    return n > 0 ? static_cast<std::size_t>(n) : 0;
+}
 std::size_t namesCount(GLsizei n, const GLuint*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
 std::size_t generatedCount(GLsizei n, GLuint*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
 std::size_t priorityCount(GLsizei n, const GLuint*, const GLclampf*) { return n > 0 ? static_cast<std::size_t>(n) : 0; }
@@ -200,7 +219,9 @@ std::size_t textureParameterCount(GLenum, GLenum name, const T*) {
 
 // Values behind the pointer of glFog*v: 4 for the colour, 1 otherwise.
 template <class T>
-std::size_t fogCount(GLenum name, const T*) { return name == GL_FOG_COLOR ? 4 : 1; }
+std::size_t fogCount(GLenum name, const T*) {
+    return name == GL_FOG_COLOR ? 4 : 1;
+}
 
 // Values behind glMap1's and glMap2's pointers: the last point's offset plus its components
 // (1 for arguments the call rejects).
@@ -212,7 +233,8 @@ std::size_t mapComponents(GLenum target) {
 }
 std::size_t mapPoints(GLenum target, GLint ustride, GLint uorder, GLint vstride, GLint vorder) {
     const std::size_t size = mapComponents(target);
-    if (size == 0 || uorder < 1 || uorder > 30 || vorder < 1 || vorder > 30 || ustride < GLint(size) || vstride < GLint(size)) {
+    if (size == 0 || uorder < 1 || uorder > 30 || vorder < 1 || vorder > 30 || ustride < GLint(size) ||
+        vstride < GLint(size)) {
         return 1;
     }
     return std::size_t(uorder - 1) * std::size_t(ustride) + std::size_t(vorder - 1) * std::size_t(vstride) + size;
@@ -227,8 +249,11 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
 }
 
 // Recorded besides the shared list (recorded_calls.h): raster positions and bitmaps, display
-// lists, lighting, fog, polygon offset, stipple, the per-fragment operations, textures, pixel rectangles, accumulation, colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is
-// replayed: the program's arrays must still hold the frame's data then, as static arrays do).
+// lists, lighting, fog, polygon offset, stipple, the per-fragment operations, textures, pixel rectangles, accumulation,
+// colour index, buffer selection, selection and feedback (the program's hit or feedback buffer is written again by the
+// replay), and vertex arrays (their pointers are kept, so the arrays are read when the frame is replayed: the program's
+// arrays must still hold the frame's data then, as static arrays do).
+// clang-format off
 #define MYGL_FURTHER_CALLS(X)                                                                      \
     X(glad_glRasterPos2d, 0) X(glad_glRasterPos2f, 0) X(glad_glRasterPos2i, 0) X(glad_glRasterPos2s, 0) \
     X(glad_glRasterPos3d, 0) X(glad_glRasterPos3f, 0) X(glad_glRasterPos3i, 0) X(glad_glRasterPos3s, 0) \
@@ -285,6 +310,7 @@ std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GL
     X(glad_glIndexd, 0) X(glad_glIndexf, 0) X(glad_glIndexi, 0) X(glad_glIndexs, 0) X(glad_glIndexub, 0)   \
     X(glad_glIndexdv, 1) X(glad_glIndexfv, 1) X(glad_glIndexiv, 1) X(glad_glIndexsv, 1) X(glad_glIndexubv, 1) \
     X(glad_glClearIndex, 0) X(glad_glIndexMask, 0) X(glad_glFeedbackBuffer, 0) X(glad_glPassThrough, 0)
+// clang-format on
 
 void installAll() {
 #define MYGL_INSTALL(slot, count) Wrapper<slot, count>::install();

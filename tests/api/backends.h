@@ -85,7 +85,9 @@ inline std::string firstDifference(const std::vector<double>& ours, const std::v
         if (!(ours[i] == theirs[i]) && !(ours[i] != ours[i] && theirs[i] != theirs[i]))
             return std::to_string(i) + ": " + std::to_string(ours[i]) + " vs " + std::to_string(theirs[i]);
     }
-    return ours.size() == theirs.size() ? "" : "sizes " + std::to_string(ours.size()) + " vs " + std::to_string(theirs.size());
+    return ours.size() == theirs.size()
+               ? ""
+               : "sizes " + std::to_string(ours.size()) + " vs " + std::to_string(theirs.size());
 }
 
 }  // namespace testing_support

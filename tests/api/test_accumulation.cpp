@@ -54,7 +54,8 @@ struct Step {
 
 std::string describe(const std::vector<Step>& steps) {
     std::string text;
-    for (const Step& s : steps) text += (s.op ? std::to_string(s.op) : std::string("draw")) + "(" + std::to_string(s.value) + ") ";
+    for (const Step& s : steps)
+        text += (s.op ? std::to_string(s.op) : std::string("draw")) + "(" + std::to_string(s.value) + ") ";
     return text;
 }
 
@@ -64,8 +65,16 @@ const float kInf = std::numeric_limits<float>::infinity();
 TEST(Accumulation, OperationSequencesMatchTheReferenceBitForBit) {
     const std::vector<std::vector<Step>> sequences = {
         {{0, 0}, {GL_LOAD, 1}, {GL_RETURN, 1}},
-        {{GL_ACCUM_BUFFER_BIT, 0}, {0, 0}, {GL_ACCUM, 0.25f}, {0, 0.5f}, {GL_ACCUM, 0.25f}, {0, 0.25f}, {GL_ACCUM, 0.25f}, {0, 0.75f},
-         {GL_ACCUM, 0.25f}, {GL_RETURN, 1}},
+        {{GL_ACCUM_BUFFER_BIT, 0},
+         {0, 0},
+         {GL_ACCUM, 0.25f},
+         {0, 0.5f},
+         {GL_ACCUM, 0.25f},
+         {0, 0.25f},
+         {GL_ACCUM, 0.25f},
+         {0, 0.75f},
+         {GL_ACCUM, 0.25f},
+         {GL_RETURN, 1}},
         {{0, 0}, {GL_LOAD, 1.0f / 3}, {0, 0.3f}, {GL_ACCUM, 1.0f / 3}, {0, 0.6f}, {GL_ACCUM, 1.0f / 3}, {GL_RETURN, 1}},
         {{0, 0}, {GL_LOAD, 0.5f}, {GL_MULT, 0.7f}, {GL_ADD, 0.1f}, {GL_RETURN, 1.5f}},
         {{0, 0}, {GL_LOAD, 0.9f}, {0, 0.4f}, {GL_ACCUM, 0.9f}, {GL_RETURN, 0.5f}},  // the words overflow
@@ -79,14 +88,19 @@ TEST(Accumulation, OperationSequencesMatchTheReferenceBitForBit) {
         {{0, 0}, {GL_LOAD, 1}, {GL_RETURN, kNaN}},
     };
     for (const auto& steps : sequences) {
-        const auto frames = onBothBackends<Frame>([&] {
-            for (const Step& s : steps) {
-                if (s.op == 0) jitteredScene(s.value, s.value / 2);
-                else if (s.op == GL_ACCUM_BUFFER_BIT) glClear(GL_ACCUM_BUFFER_BIT);
-                else glAccum(s.op, s.value);
-            }
-            return readFrame(kWidth, kHeight);
-        }, kWidth, kHeight);
+        const auto frames = onBothBackends<Frame>(
+            [&] {
+                for (const Step& s : steps) {
+                    if (s.op == 0)
+                        jitteredScene(s.value, s.value / 2);
+                    else if (s.op == GL_ACCUM_BUFFER_BIT)
+                        glClear(GL_ACCUM_BUFFER_BIT);
+                    else
+                        glAccum(s.op, s.value);
+                }
+                return readFrame(kWidth, kHeight);
+            },
+            kWidth, kHeight);
         const auto d = difference(frames.mygl, frames.osmesa);
         EXPECT_EQ(d.pixels, 0) << describe(steps) << ": max channel difference " << d.maxChannel;
     }
@@ -94,43 +108,52 @@ TEST(Accumulation, OperationSequencesMatchTheReferenceBitForBit) {
 
 TEST(Accumulation, ClearValuesMatchTheReference) {
     const std::vector<std::array<float, 4>> values = {
-        {0, 0, 0, 0}, {1, 0.5f, 0.25f, 0.125f}, {-0.3f, 0.7f, 0.999f, 0.001f}, {2, -3, 1.5f, -0.5f},
-        {1.0f / 255, 0.5f / 255, 254.5f / 255, 0.3333f}, {kNaN, kInf, -kInf, 0.6f},
+        {0, 0, 0, 0},
+        {1, 0.5f, 0.25f, 0.125f},
+        {-0.3f, 0.7f, 0.999f, 0.001f},
+        {2, -3, 1.5f, -0.5f},
+        {1.0f / 255, 0.5f / 255, 254.5f / 255, 0.3333f},
+        {kNaN, kInf, -kInf, 0.6f},
     };
     for (const auto& v : values) {
-        const auto frames = onBothBackends<Frame>([&] {
-            glClearAccum(v[0], v[1], v[2], v[3]);
-            glClear(GL_ACCUM_BUFFER_BIT);
-            glAccum(GL_RETURN, 1);
-            glAccum(GL_ACCUM, 0.5f);  // adds the (black) colour buffer's half
-            glClearColor(0.5f, 0.2f, 0.9f, 1);
-            glClear(GL_COLOR_BUFFER_BIT);
-            glAccum(GL_ACCUM, -0.25f);
-            glAccum(GL_RETURN, 2);
-            return readFrame(kWidth, kHeight);
-        }, kWidth, kHeight);
-        EXPECT_EQ(difference(frames.mygl, frames.osmesa).pixels, 0) << v[0] << " " << v[1] << " " << v[2] << " " << v[3];
+        const auto frames = onBothBackends<Frame>(
+            [&] {
+                glClearAccum(v[0], v[1], v[2], v[3]);
+                glClear(GL_ACCUM_BUFFER_BIT);
+                glAccum(GL_RETURN, 1);
+                glAccum(GL_ACCUM, 0.5f);  // adds the (black) colour buffer's half
+                glClearColor(0.5f, 0.2f, 0.9f, 1);
+                glClear(GL_COLOR_BUFFER_BIT);
+                glAccum(GL_ACCUM, -0.25f);
+                glAccum(GL_RETURN, 2);
+                return readFrame(kWidth, kHeight);
+            },
+            kWidth, kHeight);
+        EXPECT_EQ(difference(frames.mygl, frames.osmesa).pixels, 0)
+            << v[0] << " " << v[1] << " " << v[2] << " " << v[3];
     }
 }
 
 // The scissor box narrows every operation and the accumulation buffer's clear; GL_RETURN writes
 // through the colour mask.
 TEST(Accumulation, ScissorAndColorMaskApplyAsInTheReference) {
-    const auto frames = onBothBackends<Frame>([&] {
-        jitteredScene(0, 0);
-        glClearAccum(0.1f, 0.5f, 0.9f, 0.3f);
-        glClear(GL_ACCUM_BUFFER_BIT);
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(5, 9, 40, 20);
-        glAccum(GL_ACCUM, 0.5f);
-        glClearAccum(0.7f, 0.1f, 0.2f, 0.5f);
-        glScissor(20, 2, 30, 40);
-        glClear(GL_ACCUM_BUFFER_BIT);
-        glScissor(3, 6, 50, 30);
-        glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
-        glAccum(GL_RETURN, 1.0f);
-        return readFrame(kWidth, kHeight);
-    }, kWidth, kHeight);
+    const auto frames = onBothBackends<Frame>(
+        [&] {
+            jitteredScene(0, 0);
+            glClearAccum(0.1f, 0.5f, 0.9f, 0.3f);
+            glClear(GL_ACCUM_BUFFER_BIT);
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(5, 9, 40, 20);
+            glAccum(GL_ACCUM, 0.5f);
+            glClearAccum(0.7f, 0.1f, 0.2f, 0.5f);
+            glScissor(20, 2, 30, 40);
+            glClear(GL_ACCUM_BUFFER_BIT);
+            glScissor(3, 6, 50, 30);
+            glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+            glAccum(GL_RETURN, 1.0f);
+            return readFrame(kWidth, kHeight);
+        },
+        kWidth, kHeight);
     EXPECT_EQ(difference(frames.mygl, frames.osmesa).pixels, 0);
 }
 
@@ -149,7 +172,8 @@ std::vector<double> accumStateWalk() {
         for (int k = 0; k < count; ++k) out.insert(out.end(), {f[k], double(i[k]), double(b[k])});
         error();
     };
-    for (GLenum bits : {GL_ACCUM_RED_BITS, GL_ACCUM_GREEN_BITS, GL_ACCUM_BLUE_BITS, GL_ACCUM_ALPHA_BITS}) getAll(bits, 1);
+    for (GLenum bits : {GL_ACCUM_RED_BITS, GL_ACCUM_GREEN_BITS, GL_ACCUM_BLUE_BITS, GL_ACCUM_ALPHA_BITS})
+        getAll(bits, 1);
     getAll(GL_ACCUM_CLEAR_VALUE, 4);
     glClearAccum(0.5f, -0.25f, 3, -7);
     getAll(GL_ACCUM_CLEAR_VALUE, 4);

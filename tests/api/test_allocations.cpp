@@ -52,8 +52,8 @@ TEST_P(SteadyStateAllocations, AFrameAllocatesNothing) {
 INSTANTIATE_TEST_SUITE_P(BenchAndCourseScenes, SteadyStateAllocations,
                          testing::Values("bench-torus", "bench-fill", "bench-cubes", "bench-tiny", "bench-gears",
                                          "bench-gears-lists", "bench-mesh", "bench-lit-torus", "bench-fog-terrain",
-                                         "bench-textured-cubes", "bench-fog-textured-terrain",
-                                         "course-f4", "near-plane", "wireframe-cube", "lines-points"),
+                                         "bench-textured-cubes", "bench-fog-textured-terrain", "course-f4",
+                                         "near-plane", "wireframe-cube", "lines-points"),
                          [](const testing::TestParamInfo<const char*>& param) {
                              std::string name = param.param;
                              for (char& c : name) c = c == '-' ? '_' : c;

@@ -19,9 +19,9 @@ constexpr int kSize = 16;
 // Capabilities MyGL accepts but does not render yet (the queries compare them). Not GL_LIGHTi:
 // OSMesa's pop of GL_ENABLE_BIT alone leaves a light enabled after the push as it is (the spec
 // restores it; GL_LIGHTING_BIT does restore it there too).
-constexpr GLenum kNotRendered[] = {GL_ALPHA_TEST,   GL_BLEND,          GL_FOG,          GL_LIGHTING,  GL_LINE_SMOOTH,
-                                   GL_NORMALIZE,    GL_POINT_SMOOTH,   GL_POLYGON_SMOOTH, GL_SCISSOR_TEST,
-                                   GL_TEXTURE_2D};
+constexpr GLenum kNotRendered[] = {GL_ALPHA_TEST,   GL_BLEND,     GL_FOG,          GL_LIGHTING,
+                                   GL_LINE_SMOOTH,  GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_SMOOTH,
+                                   GL_SCISSOR_TEST, GL_TEXTURE_2D};
 
 // Every state value a group can hold that MyGL keeps, changed away from its default.
 void changeEverything() {
@@ -79,19 +79,40 @@ Frame drawScene() {
 // The answers of every query the groups touch.
 std::vector<double> queryEverything() {
     std::vector<double> out;
-    for (GLenum name : {GL_CURRENT_COLOR, GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_EDGE_FLAG,
-                        GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_POSITION_VALID,
-                        GL_COLOR_CLEAR_VALUE, GL_DEPTH_CLEAR_VALUE, GL_DEPTH_FUNC, GL_DEPTH_WRITEMASK, GL_SHADE_MODEL,
-                        GL_LINE_WIDTH, GL_POINT_SIZE, GL_CULL_FACE_MODE, GL_FRONT_FACE, GL_POLYGON_MODE,
-                        GL_MATRIX_MODE, GL_VIEWPORT, GL_DEPTH_RANGE, GL_PERSPECTIVE_CORRECTION_HINT, GL_FOG_HINT,
-                        GL_LIST_BASE, GL_ATTRIB_STACK_DEPTH, GL_CLIENT_ATTRIB_STACK_DEPTH, GL_PACK_ALIGNMENT,
+    for (GLenum name : {GL_CURRENT_COLOR,
+                        GL_CURRENT_NORMAL,
+                        GL_CURRENT_TEXTURE_COORDS,
+                        GL_EDGE_FLAG,
+                        GL_CURRENT_RASTER_POSITION,
+                        GL_CURRENT_RASTER_COLOR,
+                        GL_CURRENT_RASTER_POSITION_VALID,
+                        GL_COLOR_CLEAR_VALUE,
+                        GL_DEPTH_CLEAR_VALUE,
+                        GL_DEPTH_FUNC,
+                        GL_DEPTH_WRITEMASK,
+                        GL_SHADE_MODEL,
+                        GL_LINE_WIDTH,
+                        GL_POINT_SIZE,
+                        GL_CULL_FACE_MODE,
+                        GL_FRONT_FACE,
+                        GL_POLYGON_MODE,
+                        GL_MATRIX_MODE,
+                        GL_VIEWPORT,
+                        GL_DEPTH_RANGE,
+                        GL_PERSPECTIVE_CORRECTION_HINT,
+                        GL_FOG_HINT,
+                        GL_LIST_BASE,
+                        GL_ATTRIB_STACK_DEPTH,
+                        GL_CLIENT_ATTRIB_STACK_DEPTH,
+                        GL_PACK_ALIGNMENT,
                         GL_UNPACK_ALIGNMENT}) {
         GLdouble values[4] = {-9, -9, -9, -9};
         glGetDoublev(name, values);
         out.insert(out.end(), values, values + 4);
     }
     for (GLenum cap : kNotRendered) out.push_back(glIsEnabled(cap));
-    for (GLenum cap : {GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_VERTEX_ARRAY, GL_COLOR_ARRAY}) out.push_back(glIsEnabled(cap));
+    for (GLenum cap : {GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_VERTEX_ARRAY, GL_COLOR_ARRAY})
+        out.push_back(glIsEnabled(cap));
     out.push_back(glGetError());
     return out;
 }
@@ -126,12 +147,28 @@ Outcome pushChangePop(GLbitfield mask) {
 }  // namespace
 
 TEST(AttribStack, EachGroupRestoresWhatTheReferenceRestores) {
-    const GLbitfield groups[] = {GL_CURRENT_BIT,     GL_POINT_BIT,        GL_LINE_BIT,      GL_POLYGON_BIT,
-                                 GL_POLYGON_STIPPLE_BIT, GL_PIXEL_MODE_BIT, GL_LIGHTING_BIT, GL_FOG_BIT,
-                                 GL_DEPTH_BUFFER_BIT, GL_ACCUM_BUFFER_BIT, GL_STENCIL_BUFFER_BIT, GL_VIEWPORT_BIT,
-                                 GL_TRANSFORM_BIT,   GL_ENABLE_BIT,       GL_COLOR_BUFFER_BIT, GL_HINT_BIT,
-                                 GL_EVAL_BIT,        GL_LIST_BIT,         GL_TEXTURE_BIT,   GL_SCISSOR_BIT,
-                                 GL_ALL_ATTRIB_BITS, 0u};
+    const GLbitfield groups[] = {GL_CURRENT_BIT,
+                                 GL_POINT_BIT,
+                                 GL_LINE_BIT,
+                                 GL_POLYGON_BIT,
+                                 GL_POLYGON_STIPPLE_BIT,
+                                 GL_PIXEL_MODE_BIT,
+                                 GL_LIGHTING_BIT,
+                                 GL_FOG_BIT,
+                                 GL_DEPTH_BUFFER_BIT,
+                                 GL_ACCUM_BUFFER_BIT,
+                                 GL_STENCIL_BUFFER_BIT,
+                                 GL_VIEWPORT_BIT,
+                                 GL_TRANSFORM_BIT,
+                                 GL_ENABLE_BIT,
+                                 GL_COLOR_BUFFER_BIT,
+                                 GL_HINT_BIT,
+                                 GL_EVAL_BIT,
+                                 GL_LIST_BIT,
+                                 GL_TEXTURE_BIT,
+                                 GL_SCISSOR_BIT,
+                                 GL_ALL_ATTRIB_BITS,
+                                 0u};
     for (GLbitfield mask : groups) {
         const auto outcomes = onBothBackends<Outcome>([&] { return pushChangePop(mask); });
         expectSameAnswers(outcomes.mygl.queries, outcomes.osmesa.queries, mask);

@@ -62,9 +62,9 @@ TEST(BadInput, ReadPixelsClipsAnyRectangleWithoutOverflow) {
     context.makeCurrent();
     glClearColor(1, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
-    const GLint rectangles[][4] = {{0, INT_MIN, 1, 1},       {INT_MIN, 0, 1, 1}, {INT_MAX, 0, 1, 1},
-                                   {0, INT_MAX, 1, 1},       {INT_MIN, INT_MIN, 2, 2},
-                                   {INT_MAX - 1, 3, 2, 1},   {-INT_MAX, 0, 1, 1}};
+    const GLint rectangles[][4] = {{0, INT_MIN, 1, 1}, {INT_MIN, 0, 1, 1},       {INT_MAX, 0, 1, 1},
+                                   {0, INT_MAX, 1, 1}, {INT_MIN, INT_MIN, 2, 2}, {INT_MAX - 1, 3, 2, 1},
+                                   {-INT_MAX, 0, 1, 1}};
     for (const auto& r : rectangles) {
         std::array<GLubyte, 16> pixels;
         pixels.fill(0xAB);
@@ -78,7 +78,8 @@ TEST(BadInput, ReadPixelsClipsAnyRectangleWithoutOverflow) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(kSize - 2, 0, INT_MAX, 1, GL_RGBA, GL_UNSIGNED_BYTE, row.data());
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-    EXPECT_EQ((std::vector<GLubyte>(row.begin(), row.begin() + 8)), (std::vector<GLubyte>{255, 0, 0, 255, 255, 0, 0, 255}));
+    EXPECT_EQ((std::vector<GLubyte>(row.begin(), row.begin() + 8)),
+              (std::vector<GLubyte>{255, 0, 0, 255, 255, 0, 0, 255}));
     EXPECT_EQ(row[8], 0xAB);
 }
 

@@ -125,17 +125,20 @@ TEST(ClipPlanes, PlanesCutFilledPrimitivesAsTheReferenceDoes) {
 
 TEST(ClipPlanes, PlanesCutUnfilledPolygonsAndFollowTheProjection) {
     expectSameFrames({
-        {"line mode", [] {
+        {"line mode",
+         [] {
              plane(GL_CLIP_PLANE0, 1, 0.3, 0, 0.2);
              glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
          },
          sphere},
-        {"point mode", [] {
+        {"point mode",
+         [] {
              plane(GL_CLIP_PLANE4, -0.5, 1, 0.2, 0.1);
              glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
          },
          sphere},
-        {"projection changed after the plane", [] {
+        {"projection changed after the plane",
+         [] {
              plane(GL_CLIP_PLANE0, 1, 0.3, 0, 0.2);
              glMatrixMode(GL_PROJECTION);
              glLoadIdentity();
@@ -143,7 +146,8 @@ TEST(ClipPlanes, PlanesCutUnfilledPolygonsAndFollowTheProjection) {
              glMatrixMode(GL_MODELVIEW);
          },
          sphere},
-        {"plane in a display list, restored by glPopAttrib", [] {
+        {"plane in a display list, restored by glPopAttrib",
+         [] {
              const GLuint list = glGenLists(1);
              glNewList(list, GL_COMPILE);
              plane(GL_CLIP_PLANE1, 0, -1, 0.3, 0.25);
@@ -204,7 +208,8 @@ TEST(ClipPlanes, ANanPlaneDrawsNothing) {
         const auto frames = onBothBackends<Frame>([&] {
             glClearColor(0, 0, 0, 0);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-            const GLfloat infinite[16] = {1, 1, 0, 0, 1, 0, 1, 1, std::numeric_limits<float>::infinity(), 0, 0, 0, 0, 1, 1, 0};
+            const GLfloat infinite[16] = {1, 1, 0, 0, 1, 0, 1, 1, std::numeric_limits<float>::infinity(),
+                                          0, 0, 0, 0, 1, 1, 0};
             glLoadMatrixf(infinite);
             const GLdouble plane[] = {0.0, 0.0, 0.0, 1.0};
             glClipPlane(GL_CLIP_PLANE3, plane);

@@ -36,7 +36,8 @@ struct Walk {
 
 std::vector<double> colorIndexWalk() {
     Walk w;
-    const GLenum names[] = {GL_CURRENT_INDEX, GL_INDEX_CLEAR_VALUE, GL_INDEX_WRITEMASK, GL_INDEX_BITS, GL_INDEX_MODE, GL_RGBA_MODE};
+    const GLenum names[] = {GL_CURRENT_INDEX, GL_INDEX_CLEAR_VALUE, GL_INDEX_WRITEMASK,
+                            GL_INDEX_BITS,    GL_INDEX_MODE,        GL_RGBA_MODE};
     for (GLenum name : names) w.get(name);
     // (Not beyond the integer range: there glGetIntegerv answers the nearest integer, where the
     // reference keeps the low 32 bits of its lroundf; see BadInput.HugeLineWidth...)
@@ -47,15 +48,29 @@ std::vector<double> colorIndexWalk() {
         glClearIndex(v);
         w.get(GL_INDEX_CLEAR_VALUE);
     }
-    glIndexd(3.25); w.get(GL_CURRENT_INDEX);
-    glIndexi(-4); w.get(GL_CURRENT_INDEX);
-    glIndexs(300); w.get(GL_CURRENT_INDEX);
-    glIndexub(200); w.get(GL_CURRENT_INDEX);
-    const GLdouble dv = 5.5; glIndexdv(&dv); w.get(GL_CURRENT_INDEX);
-    const GLfloat fv = 6.5f; glIndexfv(&fv); w.get(GL_CURRENT_INDEX);
-    const GLint iv = 9; glIndexiv(&iv); w.get(GL_CURRENT_INDEX);
-    const GLshort sv = -2; glIndexsv(&sv); w.get(GL_CURRENT_INDEX);
-    const GLubyte ubv = 17; glIndexubv(&ubv); w.get(GL_CURRENT_INDEX);
+    glIndexd(3.25);
+    w.get(GL_CURRENT_INDEX);
+    glIndexi(-4);
+    w.get(GL_CURRENT_INDEX);
+    glIndexs(300);
+    w.get(GL_CURRENT_INDEX);
+    glIndexub(200);
+    w.get(GL_CURRENT_INDEX);
+    const GLdouble dv = 5.5;
+    glIndexdv(&dv);
+    w.get(GL_CURRENT_INDEX);
+    const GLfloat fv = 6.5f;
+    glIndexfv(&fv);
+    w.get(GL_CURRENT_INDEX);
+    const GLint iv = 9;
+    glIndexiv(&iv);
+    w.get(GL_CURRENT_INDEX);
+    const GLshort sv = -2;
+    glIndexsv(&sv);
+    w.get(GL_CURRENT_INDEX);
+    const GLubyte ubv = 17;
+    glIndexubv(&ubv);
+    w.get(GL_CURRENT_INDEX);
     for (GLuint mask : {0u, 5u, 0xFFFFFFFFu, 0x80000000u}) {
         glIndexMask(mask);
         w.get(GL_INDEX_WRITEMASK);
@@ -71,12 +86,15 @@ std::vector<double> colorIndexWalk() {
     // Attribute groups: the current index with GL_CURRENT_BIT, the clear index and mask with
     // GL_COLOR_BUFFER_BIT.
     glPushAttrib(GL_CURRENT_BIT | GL_COLOR_BUFFER_BIT);
-    glIndexf(1); glClearIndex(2); glIndexMask(7);
+    glIndexf(1);
+    glClearIndex(2);
+    glIndexMask(7);
     glPopAttrib();
     for (GLenum name : names) w.get(name);
     // (glClearIndex in a list: see ClearIndexInAListKeepsItsValue.)
     glNewList(1, GL_COMPILE);
-    glIndexf(21); glIndexMask(23);
+    glIndexf(21);
+    glIndexMask(23);
     glEndList();
     for (GLenum name : names) w.get(name);
     glCallList(1);
@@ -126,9 +144,11 @@ std::vector<double> bufferWalk() {
     Walk w;
     const GLenum names[] = {GL_DRAW_BUFFER, GL_READ_BUFFER, GL_DOUBLEBUFFER, GL_STEREO, GL_AUX_BUFFERS};
     for (GLenum name : names) w.get(name);
-    const GLenum buffers[] = {GL_NONE, GL_FRONT_LEFT, GL_FRONT_RIGHT, GL_BACK_LEFT, GL_BACK_RIGHT, GL_FRONT, GL_BACK,
-                              GL_LEFT, GL_RIGHT, GL_FRONT_AND_BACK, GL_AUX0, GL_AUX1, GL_AUX2, GL_AUX3,
-                              GL_COLOR_INDEX, GL_TEXTURE_2D, 0x040D, 0x03FF, 0x8CE0, 0x8CE7, 0x8CEF, 0x8CFF /* GL_COLOR_ATTACHMENT0, 7, 15, 31 */};
+    const GLenum buffers[] = {GL_NONE,       GL_FRONT_LEFT, GL_FRONT_RIGHT, GL_BACK_LEFT, GL_BACK_RIGHT,
+                              GL_FRONT,      GL_BACK,       GL_LEFT,        GL_RIGHT,     GL_FRONT_AND_BACK,
+                              GL_AUX0,       GL_AUX1,       GL_AUX2,        GL_AUX3,      GL_COLOR_INDEX,
+                              GL_TEXTURE_2D, 0x040D,        0x03FF,         0x8CE0,       0x8CE7,
+                              0x8CEF,        0x8CFF /* GL_COLOR_ATTACHMENT0, 7, 15, 31 */};
     for (GLenum b : buffers) {
         glDrawBuffer(b);
         w.error();

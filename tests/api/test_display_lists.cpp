@@ -95,17 +95,43 @@ TEST(DisplayLists, EveryModeFromAListMatchesTheReference) {
         glEnd();
     };
     const std::pair<const char*, std::function<void()>> variants[] = {
-        {"quads", [] { glRotatef(35, 1, 1, 0); glScalef(0.5f, 0.5f, 0.5f); cube(); }},
-        {"quads, clipped", [] { glRotatef(35, 1, 1, 0); glScalef(1.9f, 1.9f, 1.9f); cube(); }},
-        {"quads, flat", [] { glShadeModel(GL_FLAT); glRotatef(35, 1, 1, 0); glScalef(0.5f, 0.5f, 0.5f); cube(); }},
-        {"quads, lines", [] { glPolygonMode(GL_FRONT_AND_BACK, GL_LINE); glRotatef(35, 1, 1, 0); cube(); }},
+        {"quads",
+         [] {
+             glRotatef(35, 1, 1, 0);
+             glScalef(0.5f, 0.5f, 0.5f);
+             cube();
+         }},
+        {"quads, clipped",
+         [] {
+             glRotatef(35, 1, 1, 0);
+             glScalef(1.9f, 1.9f, 1.9f);
+             cube();
+         }},
+        {"quads, flat",
+         [] {
+             glShadeModel(GL_FLAT);
+             glRotatef(35, 1, 1, 0);
+             glScalef(0.5f, 0.5f, 0.5f);
+             cube();
+         }},
+        {"quads, lines",
+         [] {
+             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+             glRotatef(35, 1, 1, 0);
+             cube();
+         }},
         {"quad strip", [] { ring(0.6f, 1.2f, 24); }},
         {"polygon", [&] { fan(GL_POLYGON); }},
         {"triangle fan", [&] { fan(GL_TRIANGLE_FAN); }},
         {"line loop", [&] { fan(GL_LINE_LOOP); }},
         {"line strip", [&] { fan(GL_LINE_STRIP); }},
-        {"points", [&] { glPointSize(3); fan(GL_POINTS); }},
-        {"quads then a rectangle", [] {
+        {"points",
+         [&] {
+             glPointSize(3);
+             fan(GL_POINTS);
+         }},
+        {"quads then a rectangle",
+         [] {
              glBegin(GL_QUADS);
              glVertex2f(-1, -1), glVertex2f(0, -1), glVertex2f(0, 0.2f), glVertex2f(-1, 0);
              glEnd();

@@ -63,8 +63,9 @@ TEST(EntryPoints, TheStubReportsItsFunctionOnceAndRecordsInvalidOperation) {
     EXPECT_EQ(isList(1), GL_FALSE);  // a value-returning one returns zero
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
     const std::string said = testing::internal::GetCapturedStderr();
-    EXPECT_EQ(said, "MyGL: glAccum is not implemented yet (GL_INVALID_OPERATION)\n"
-                    "MyGL: glIsList is not implemented yet (GL_INVALID_OPERATION)\n");
+    EXPECT_EQ(said,
+              "MyGL: glAccum is not implemented yet (GL_INVALID_OPERATION)\n"
+              "MyGL: glIsList is not implemented yet (GL_INVALID_OPERATION)\n");
     // The program goes on drawing.
     glClearColor(0, 1, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);

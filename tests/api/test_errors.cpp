@@ -25,13 +25,43 @@ struct Misuse {
 std::vector<Misuse> misuses() {
     return {
         {"glBegin with a bad mode", GL_INVALID_ENUM, [] { glBegin(0x20); }},
-        {"glBegin inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_TRIANGLES); glBegin(GL_TRIANGLES); glEnd(); }},
-        {"glBegin with a bad mode inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_TRIANGLES); glBegin(0x20); glEnd(); }},
+        {"glBegin inside glBegin", GL_INVALID_OPERATION,
+         [] {
+             glBegin(GL_TRIANGLES);
+             glBegin(GL_TRIANGLES);
+             glEnd();
+         }},
+        {"glBegin with a bad mode inside glBegin", GL_INVALID_OPERATION,
+         [] {
+             glBegin(GL_TRIANGLES);
+             glBegin(0x20);
+             glEnd();
+         }},
         {"glEnd without glBegin", GL_INVALID_OPERATION, [] { glEnd(); }},
-        {"glClear inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_POINTS); glClear(GL_COLOR_BUFFER_BIT); glEnd(); }},
-        {"glEnable inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_LINES); glEnable(GL_CULL_FACE); glEnd(); }},
-        {"glLoadIdentity inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_QUADS); glLoadIdentity(); glEnd(); }},
-        {"glFinish inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_QUADS); glFinish(); glEnd(); }},
+        {"glClear inside glBegin", GL_INVALID_OPERATION,
+         [] {
+             glBegin(GL_POINTS);
+             glClear(GL_COLOR_BUFFER_BIT);
+             glEnd();
+         }},
+        {"glEnable inside glBegin", GL_INVALID_OPERATION,
+         [] {
+             glBegin(GL_LINES);
+             glEnable(GL_CULL_FACE);
+             glEnd();
+         }},
+        {"glLoadIdentity inside glBegin", GL_INVALID_OPERATION,
+         [] {
+             glBegin(GL_QUADS);
+             glLoadIdentity();
+             glEnd();
+         }},
+        {"glFinish inside glBegin", GL_INVALID_OPERATION,
+         [] {
+             glBegin(GL_QUADS);
+             glFinish();
+             glEnd();
+         }},
         {"glEnable of an unknown capability", GL_INVALID_ENUM, [] { glEnable(0x1234); }},
         {"glCullFace with a bad face", GL_INVALID_ENUM, [] { glCullFace(GL_TRIANGLES); }},
         {"glFrontFace with a bad mode", GL_INVALID_ENUM, [] { glFrontFace(GL_LINE); }},
@@ -39,37 +69,92 @@ std::vector<Misuse> misuses() {
         {"glShadeModel with a bad mode", GL_INVALID_ENUM, [] { glShadeModel(GL_FILL); }},
         {"glPolygonMode with a bad mode", GL_INVALID_ENUM, [] { glPolygonMode(GL_FRONT_AND_BACK, GL_TRIANGLES); }},
         {"glMatrixMode with a bad mode", GL_INVALID_ENUM, [] { glMatrixMode(GL_LINE); }},
-        {"glGetIntegerv of an unknown name", GL_INVALID_ENUM, [] { GLint v[16]; glGetIntegerv(0x9999, v); }},
-        {"glReadPixels with a bad format", GL_INVALID_ENUM, [] { GLubyte p[64]; glReadPixels(0, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, p); }},
+        {"glGetIntegerv of an unknown name", GL_INVALID_ENUM,
+         [] {
+             GLint v[16];
+             glGetIntegerv(0x9999, v);
+         }},
+        {"glReadPixels with a bad format", GL_INVALID_ENUM,
+         [] {
+             GLubyte p[64];
+             glReadPixels(0, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, p);
+         }},
         {"glViewport with a negative width", GL_INVALID_VALUE, [] { glViewport(0, 0, -1, 5); }},
         {"glLineWidth of zero", GL_INVALID_VALUE, [] { glLineWidth(0.0f); }},
         {"glPointSize below zero", GL_INVALID_VALUE, [] { glPointSize(-1.0f); }},
         {"glFrustum with near = 0", GL_INVALID_VALUE, [] { glFrustum(-1, 1, -1, 1, 0, 10); }},
         {"glFrustum with left = right", GL_INVALID_VALUE, [] { glFrustum(1, 1, -1, 1, 1, 10); }},
         {"glOrtho with near = far", GL_INVALID_VALUE, [] { glOrtho(-1, 1, -1, 1, 2, 2); }},
-        {"glFrustum with a near plane that is 0 in float", GL_INVALID_VALUE, [] { glFrustum(-1, 1, -1, 1, 1e-50, 10); }},
+        {"glFrustum with a near plane that is 0 in float", GL_INVALID_VALUE,
+         [] { glFrustum(-1, 1, -1, 1, 1e-50, 10); }},
         {"glOrtho with left = right in float", GL_INVALID_VALUE, [] { glOrtho(0, 1e-46, -1, 1, -1, 1); }},
         {"glClear with unknown bits", GL_INVALID_VALUE, [] { glClear(0x1); }},
-        {"glReadPixels with a negative size", GL_INVALID_VALUE, [] { GLubyte p[64]; glReadPixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p); }},
-        {"glReadPixels with a negative size and a bad format", GL_INVALID_VALUE, [] { GLubyte p[64]; glReadPixels(0, 0, 1, -1, 0x1234, GL_UNSIGNED_BYTE, p); }},
-        {"glReadPixels of colour indices from an RGBA buffer", GL_INVALID_OPERATION, [] { GLubyte p[64]; glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, p); }},
-        {"glReadPixels of colour indices from an RGBA buffer", GL_INVALID_OPERATION, [] { GLubyte p[64]; glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, p); }},
+        {"glReadPixels with a negative size", GL_INVALID_VALUE,
+         [] {
+             GLubyte p[64];
+             glReadPixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+         }},
+        {"glReadPixels with a negative size and a bad format", GL_INVALID_VALUE,
+         [] {
+             GLubyte p[64];
+             glReadPixels(0, 0, 1, -1, 0x1234, GL_UNSIGNED_BYTE, p);
+         }},
+        {"glReadPixels of colour indices from an RGBA buffer", GL_INVALID_OPERATION,
+         [] {
+             GLubyte p[64];
+             glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, p);
+         }},
+        {"glReadPixels of colour indices from an RGBA buffer", GL_INVALID_OPERATION,
+         [] {
+             GLubyte p[64];
+             glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, p);
+         }},
         {"glLineWidth of NaN is stored, not an error", GL_NO_ERROR, [] { glLineWidth(std::nanf("")); }},
         {"glPointSize of NaN is stored, not an error", GL_NO_ERROR, [] { glPointSize(std::nanf("")); }},
         {"glPixelStorei with alignment 3", GL_INVALID_VALUE, [] { glPixelStorei(GL_PACK_ALIGNMENT, 3); }},
         {"glPopMatrix on an empty stack", GL_STACK_UNDERFLOW, [] { glPopMatrix(); }},
-        {"glPushMatrix past the modelview depth", GL_STACK_OVERFLOW, [] { for (int i = 0; i < 32; ++i) glPushMatrix(); }},
+        {"glPushMatrix past the modelview depth", GL_STACK_OVERFLOW,
+         [] {
+             for (int i = 0; i < 32; ++i) glPushMatrix();
+         }},
         {"glNewList with name 0", GL_INVALID_VALUE, [] { glNewList(0, GL_COMPILE); }},
         {"glNewList with a bad mode", GL_INVALID_ENUM, [] { glNewList(1, GL_FILL); }},
-        {"glNewList while compiling", GL_INVALID_OPERATION, [] { glNewList(1, GL_COMPILE); glNewList(2, GL_COMPILE); glEndList(); }},
-        {"glNewList with name 0 while compiling", GL_INVALID_OPERATION, [] { glNewList(1, GL_COMPILE); glNewList(0, GL_COMPILE); glEndList(); }},
-        {"glNewList inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_POINTS); glNewList(1, GL_COMPILE); glEnd(); }},
+        {"glNewList while compiling", GL_INVALID_OPERATION,
+         [] {
+             glNewList(1, GL_COMPILE);
+             glNewList(2, GL_COMPILE);
+             glEndList();
+         }},
+        {"glNewList with name 0 while compiling", GL_INVALID_OPERATION,
+         [] {
+             glNewList(1, GL_COMPILE);
+             glNewList(0, GL_COMPILE);
+             glEndList();
+         }},
+        {"glNewList inside glBegin", GL_INVALID_OPERATION,
+         [] {
+             glBegin(GL_POINTS);
+             glNewList(1, GL_COMPILE);
+             glEnd();
+         }},
         {"glEndList without glNewList", GL_INVALID_OPERATION, [] { glEndList(); }},
         {"glGenLists of a negative range", GL_INVALID_VALUE, [] { glGenLists(-1); }},
         {"glDeleteLists of a negative range", GL_INVALID_VALUE, [] { glDeleteLists(1, -1); }},
-        {"glCallLists with a bad type", GL_INVALID_ENUM, [] { const GLuint n[1] = {1}; glCallLists(1, GL_DOUBLE, n); }},
-        {"glCallLists with a negative count", GL_INVALID_VALUE, [] { const GLuint n[1] = {1}; glCallLists(-1, GL_UNSIGNED_INT, n); }},
-        {"glCallLists with a negative count and a bad type", GL_INVALID_ENUM, [] { const GLuint n[1] = {1}; glCallLists(-1, GL_DOUBLE, n); }},
+        {"glCallLists with a bad type", GL_INVALID_ENUM,
+         [] {
+             const GLuint n[1] = {1};
+             glCallLists(1, GL_DOUBLE, n);
+         }},
+        {"glCallLists with a negative count", GL_INVALID_VALUE,
+         [] {
+             const GLuint n[1] = {1};
+             glCallLists(-1, GL_UNSIGNED_INT, n);
+         }},
+        {"glCallLists with a negative count and a bad type", GL_INVALID_ENUM,
+         [] {
+             const GLuint n[1] = {1};
+             glCallLists(-1, GL_DOUBLE, n);
+         }},
         {"glVertexPointer of size 1", GL_INVALID_VALUE, [] { glVertexPointer(1, GL_FLOAT, 0, nullptr); }},
         {"glVertexPointer of bytes", GL_INVALID_ENUM, [] { glVertexPointer(3, GL_UNSIGNED_BYTE, 0, nullptr); }},
         {"glColorPointer with a negative stride", GL_INVALID_VALUE, [] { glColorPointer(4, GL_FLOAT, -4, nullptr); }},
@@ -80,19 +165,52 @@ std::vector<Misuse> misuses() {
         {"glDrawArrays with a bad mode", GL_INVALID_ENUM, [] { glDrawArrays(0x20, 0, 3); }},
         {"glDrawArrays with a negative count", GL_INVALID_VALUE, [] { glDrawArrays(GL_TRIANGLES, 0, -3); }},
         // Compiled into a list, a draw's error is the list's when it runs (none at compile time).
-        {"glDrawArrays with a bad mode run from a list", GL_INVALID_ENUM, [] {
-             glNewList(1, GL_COMPILE); glDrawArrays(0x20, 0, 3); glEndList(); glGetError(); glCallList(1); }},
-        {"glDrawElements with a negative count run from a list", GL_INVALID_VALUE, [] {
-             const GLubyte i[1] = {0}; glNewList(1, GL_COMPILE); glDrawElements(GL_POINTS, -1, GL_UNSIGNED_BYTE, i); glEndList();
-             glGetError(); glCallList(1); }},
-        {"glDrawArrays inside glBegin", GL_INVALID_OPERATION, [] { glBegin(GL_POINTS); glDrawArrays(GL_POINTS, 0, 1); glEnd(); }},
-        {"glDrawElements with signed indices", GL_INVALID_ENUM, [] { const GLint i[3] = {0, 1, 2}; glDrawElements(GL_TRIANGLES, 3, GL_INT, i); }},
-        {"glDrawElements with a negative count", GL_INVALID_VALUE, [] { const GLuint i[3] = {0, 1, 2}; glDrawElements(GL_TRIANGLES, -1, GL_UNSIGNED_INT, i); }},
+        {"glDrawArrays with a bad mode run from a list", GL_INVALID_ENUM,
+         [] {
+             glNewList(1, GL_COMPILE);
+             glDrawArrays(0x20, 0, 3);
+             glEndList();
+             glGetError();
+             glCallList(1);
+         }},
+        {"glDrawElements with a negative count run from a list", GL_INVALID_VALUE,
+         [] {
+             const GLubyte i[1] = {0};
+             glNewList(1, GL_COMPILE);
+             glDrawElements(GL_POINTS, -1, GL_UNSIGNED_BYTE, i);
+             glEndList();
+             glGetError();
+             glCallList(1);
+         }},
+        {"glDrawArrays inside glBegin", GL_INVALID_OPERATION,
+         [] {
+             glBegin(GL_POINTS);
+             glDrawArrays(GL_POINTS, 0, 1);
+             glEnd();
+         }},
+        {"glDrawElements with signed indices", GL_INVALID_ENUM,
+         [] {
+             const GLint i[3] = {0, 1, 2};
+             glDrawElements(GL_TRIANGLES, 3, GL_INT, i);
+         }},
+        {"glDrawElements with a negative count", GL_INVALID_VALUE,
+         [] {
+             const GLuint i[3] = {0, 1, 2};
+             glDrawElements(GL_TRIANGLES, -1, GL_UNSIGNED_INT, i);
+         }},
         {"glInterleavedArrays with a bad format", GL_INVALID_ENUM, [] { glInterleavedArrays(GL_RGBA, 0, nullptr); }},
-        {"glGetPointerv of an unknown name", GL_INVALID_ENUM, [] { void* p; glGetPointerv(GL_VERTEX_ARRAY, &p); }},
+        {"glGetPointerv of an unknown name", GL_INVALID_ENUM,
+         [] {
+             void* p;
+             glGetPointerv(GL_VERTEX_ARRAY, &p);
+         }},
         {"glHint of an unknown target", GL_INVALID_ENUM, [] { glHint(0, GL_NICEST); }},
         {"glHint with an unknown mode", GL_INVALID_ENUM, [] { glHint(GL_FOG_HINT, GL_FOG); }},
-        {"the first error is kept", GL_INVALID_ENUM, [] { glEnable(0x1234); glViewport(0, 0, -1, -1); }},
+        {"the first error is kept", GL_INVALID_ENUM,
+         [] {
+             glEnable(0x1234);
+             glViewport(0, 0, -1, -1);
+         }},
     };
 }
 

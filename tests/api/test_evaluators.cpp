@@ -82,17 +82,20 @@ void surface(int uorder, int vorder, int dim, GLenum mode, bool autoNormal) {
 }  // namespace
 
 TEST(Evaluators, CurvesMatchTheReference) {
-    static const GLfloat control[4][3] = {{-1.5f, -1.2f, 0.0f}, {-0.5f, 1.6f, 0.3f}, {0.6f, -1.4f, -0.2f}, {1.5f, 1.1f, 0.0f}};
+    static const GLfloat control[4][3] = {
+        {-1.5f, -1.2f, 0.0f}, {-0.5f, 1.6f, 0.3f}, {0.6f, -1.4f, -0.2f}, {1.5f, 1.1f, 0.0f}};
     static const GLfloat colors[3][4] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0.2f, 0.3f, 1, 1}};
     expectSameFrames({
-        {"glEvalCoord1f in a line strip", [] {
+        {"glEvalCoord1f in a line strip",
+         [] {
              glMap1f(GL_MAP1_VERTEX_3, 0.0f, 1.0f, 3, 4, &control[0][0]);
              glEnable(GL_MAP1_VERTEX_3);
              glBegin(GL_LINE_STRIP);
              for (int i = 0; i <= 30; ++i) glEvalCoord1f(static_cast<GLfloat>(i) / 30.0f);
              glEnd();
          }},
-        {"glEvalMesh1 with a colour map and a shifted domain", [] {
+        {"glEvalMesh1 with a colour map and a shifted domain",
+         [] {
              glMap1f(GL_MAP1_VERTEX_3, 2.0f, 5.0f, 3, 4, &control[0][0]);
              glMap1f(GL_MAP1_COLOR_4, 2.0f, 5.0f, 4, 3, &colors[0][0]);
              glEnable(GL_MAP1_VERTEX_3);
@@ -102,8 +105,10 @@ TEST(Evaluators, CurvesMatchTheReference) {
              glPointSize(3.0f);
              glEvalMesh1(GL_POINT, 3, 20);
          }},
-        {"glEvalPoint1 and a list", [] {
-             glMap1d(GL_MAP1_VERTEX_3, 0.0, 1.0, 3, 4, std::vector<GLdouble>(&control[0][0], &control[0][0] + 12).data());
+        {"glEvalPoint1 and a list",
+         [] {
+             glMap1d(GL_MAP1_VERTEX_3, 0.0, 1.0, 3, 4,
+                     std::vector<GLdouble>(&control[0][0], &control[0][0] + 12).data());
              glEnable(GL_MAP1_VERTEX_3);
              glMapGrid1d(17, 0.1, 0.9);
              const GLuint list = glGenLists(1);
@@ -130,7 +135,8 @@ TEST(Evaluators, SurfacesMatchTheReference) {
         {"2x2, filled, GL_AUTO_NORMAL", [] { surface(2, 2, 3, GL_FILL, true); }},
         {"rational 4x4, filled, GL_AUTO_NORMAL", [] { surface(4, 4, 4, GL_FILL, true); }},
         {"rational 3x5, Horner", [] { surface(3, 5, 4, GL_FILL, false); }},
-        {"normal and colour maps, single coordinates", [] {
+        {"normal and colour maps, single coordinates",
+         [] {
              const std::vector<GLfloat> points = net(4, 3, 3);
              static const GLfloat normals[2][2][3] = {{{0, 0, 1}, {0.3f, 0, 1}}, {{0, 0.4f, 1}, {-0.2f, 0.2f, 1}}};
              static const GLfloat colors[2][2][4] = {{{1, 0, 0, 1}, {0, 1, 0, 1}}, {{0, 0, 1, 1}, {1, 1, 0, 1}}};

@@ -82,17 +82,33 @@ struct Case {
 std::vector<Case> cases() {
     return {
         {"triangles", smoothTriangles},
-        {"flat triangles", [] { glShadeModel(GL_FLAT); smoothTriangles(); }},
-        {"quads and a polygon", [] {
+        {"flat triangles",
+         [] {
+             glShadeModel(GL_FLAT);
+             smoothTriangles();
+         }},
+        {"quads and a polygon",
+         [] {
              glBegin(GL_QUADS);
-             glVertex2f(-1, -1); glVertex2f(1, -1); glVertex2f(1, 1); glVertex2f(-1, 1);
-             glVertex2f(-0.5f, -0.5f); glVertex2f(0.5f, -0.4f); glVertex2f(0.6f, 0.5f); glVertex2f(-0.4f, 0.6f);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glVertex2f(1, 1);
+             glVertex2f(-1, 1);
+             glVertex2f(-0.5f, -0.5f);
+             glVertex2f(0.5f, -0.4f);
+             glVertex2f(0.6f, 0.5f);
+             glVertex2f(-0.4f, 0.6f);
              glEnd();
              glBegin(GL_POLYGON);
-             glVertex2f(-1, -1); glVertex2f(1, -1); glVertex2f(1.2f, 0.3f); glVertex2f(0, 1); glVertex2f(-1, 0.5f);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glVertex2f(1.2f, 0.3f);
+             glVertex2f(0, 1);
+             glVertex2f(-1, 0.5f);
              glEnd();
          }},
-        {"strips and fans", [] {
+        {"strips and fans",
+         [] {
              glBegin(GL_TRIANGLE_STRIP);
              for (int i = 0; i < 6; ++i) glVertex3f(-1.0f + 0.4f * float(i), i % 2 ? 0.5f : -0.5f, 0.1f * float(i));
              glEnd();
@@ -104,122 +120,193 @@ std::vector<Case> cases() {
              for (int i = 0; i < 6; ++i) glVertex2f(-1.0f + 0.4f * float(i / 2), i % 2 ? 0.9f : 0.6f);
              glEnd();
          }},
-        {"clipped triangles", [] {
+        {"clipped triangles",
+         [] {
              glBegin(GL_TRIANGLES);
-             glColor3f(1, 0, 0); glVertex2f(-3, -0.5f);
-             glColor3f(0, 1, 0); glVertex2f(0.5f, -0.5f);
-             glColor3f(0, 0, 1); glVertex2f(0, 3);
-             glVertex3f(-0.5f, -0.5f, 1.5f); glVertex3f(0.5f, -0.5f, -9.0f); glVertex3f(0, 0.5f, 0.5f);
+             glColor3f(1, 0, 0);
+             glVertex2f(-3, -0.5f);
+             glColor3f(0, 1, 0);
+             glVertex2f(0.5f, -0.5f);
+             glColor3f(0, 0, 1);
+             glVertex2f(0, 3);
+             glVertex3f(-0.5f, -0.5f, 1.5f);
+             glVertex3f(0.5f, -0.5f, -9.0f);
+             glVertex3f(0, 0.5f, 0.5f);
              glEnd();
          }},
-        {"lines, strips and loops, clipped", [] {
+        {"lines, strips and loops, clipped",
+         [] {
              glBegin(GL_LINES);
-             glColor3f(1, 0.5f, 0); glVertex2f(-1, -1); glVertex2f(1, -1);
-             glColor3f(0, 0.5f, 1); glVertex2f(-3, 0.2f); glVertex2f(3, 0.4f);
+             glColor3f(1, 0.5f, 0);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glColor3f(0, 0.5f, 1);
+             glVertex2f(-3, 0.2f);
+             glVertex2f(3, 0.4f);
              glEnd();
              glBegin(GL_LINE_STRIP);
-             glVertex2f(-1, -1); glVertex2f(1, -1); glVertex2f(1, 1); glVertex2f(4, 2);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glVertex2f(1, 1);
+             glVertex2f(4, 2);
              glEnd();
              glBegin(GL_LINE_LOOP);
-             glVertex2f(-1, -1); glVertex2f(1, -1); glVertex2f(1, 1);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glVertex2f(1, 1);
              glEnd();
          }},
-        {"points, some outside", [] {
+        {"points, some outside",
+         [] {
              glPointSize(4);
              glBegin(GL_POINTS);
-             glColor3f(1, 1, 0); glVertex2f(0.5f, 0.25f); glVertex2f(5, 0);
-             glColor3f(0, 1, 1); glVertex3f(-0.5f, -0.25f, 0.7f); glVertex3f(0, 0, -20);
+             glColor3f(1, 1, 0);
+             glVertex2f(0.5f, 0.25f);
+             glVertex2f(5, 0);
+             glColor3f(0, 1, 1);
+             glVertex3f(-0.5f, -0.25f, 0.7f);
+             glVertex3f(0, 0, -20);
              glEnd();
          }},
-        {"culling", [] {
+        {"culling",
+         [] {
              glEnable(GL_CULL_FACE);
              glBegin(GL_TRIANGLES);
-             glVertex2f(-1, -1); glVertex2f(0, 1); glVertex2f(1, -1);
-             glVertex2f(-1, -1); glVertex2f(1, -1); glVertex2f(0, 1);
-             glVertex2f(-1, -1); glVertex2f(1, -1); glVertex2f(3, -1);  // no area
+             glVertex2f(-1, -1);
+             glVertex2f(0, 1);
+             glVertex2f(1, -1);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glVertex2f(0, 1);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glVertex2f(3, -1);  // no area
              glEnd();
              glCullFace(GL_FRONT);
              smoothTriangles();
          }},
-        {"lighting and two-sided lighting", [] {
+        {"lighting and two-sided lighting",
+         [] {
              glEnable(GL_LIGHTING);
              glEnable(GL_LIGHT0);
              smoothTriangles();
              glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
              glBegin(GL_TRIANGLES);
-             glVertex2f(-1, -1); glVertex2f(0, 1); glVertex2f(1, -1);
+             glVertex2f(-1, -1);
+             glVertex2f(0, 1);
+             glVertex2f(1, -1);
              glEnd();
          }},
-        {"point polygon mode", [] {
+        {"point polygon mode",
+         [] {
              glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
              glBegin(GL_TRIANGLES);
-             glVertex2f(-1, -1); glVertex2f(1, -1); glVertex2f(0, 1);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glVertex2f(0, 1);
              glEnd();
              glBegin(GL_QUADS);
-             glVertex2f(-0.5f, -0.5f); glVertex2f(0.5f, -0.4f); glVertex2f(0.6f, 0.5f); glVertex2f(-0.4f, 0.6f);
+             glVertex2f(-0.5f, -0.5f);
+             glVertex2f(0.5f, -0.4f);
+             glVertex2f(0.6f, 0.5f);
+             glVertex2f(-0.4f, 0.6f);
              glEnd();
          }},
-        {"line polygon mode, every decomposition", [] {
+        {"line polygon mode, every decomposition",
+         [] {
              glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
              smoothTriangles();
              glBegin(GL_QUADS);
-             glVertex2f(-0.5f, -0.5f); glVertex2f(0.5f, -0.4f); glVertex2f(0.6f, 0.5f); glVertex2f(-0.4f, 0.6f);
+             glVertex2f(-0.5f, -0.5f);
+             glVertex2f(0.5f, -0.4f);
+             glVertex2f(0.6f, 0.5f);
+             glVertex2f(-0.4f, 0.6f);
              glEnd();
              glBegin(GL_POLYGON);
-             glVertex2f(-1, -1); glVertex2f(1, -1); glVertex2f(1.2f, 0.3f); glVertex2f(0, 1); glVertex2f(-1, 0.5f);
+             glVertex2f(-1, -1);
+             glVertex2f(1, -1);
+             glVertex2f(1.2f, 0.3f);
+             glVertex2f(0, 1);
+             glVertex2f(-1, 0.5f);
              glEnd();
              glBegin(GL_TRIANGLE_STRIP);
              for (int i = 0; i < 5; ++i) glVertex3f(-1.0f + 0.4f * float(i), i % 2 ? 0.5f : -0.5f, 0.1f * float(i));
              glEnd();
              glBegin(GL_TRIANGLE_FAN);
-             glVertex2f(0, 0); glVertex2f(0.5f, 0); glVertex2f(0.4f, 0.4f); glVertex2f(0, 0.5f);
+             glVertex2f(0, 0);
+             glVertex2f(0.5f, 0);
+             glVertex2f(0.4f, 0.4f);
+             glVertex2f(0, 0.5f);
              glEnd();
              glBegin(GL_QUAD_STRIP);
              for (int i = 0; i < 6; ++i) glVertex2f(-1.0f + 0.4f * float(i / 2), i % 2 ? 0.9f : 0.6f);
              glEnd();
          }},
-        {"line polygon mode, clipped and culled, lines after", [] {
+        {"line polygon mode, clipped and culled, lines after",
+         [] {
              glPolygonMode(GL_FRONT, GL_LINE);
              glPolygonMode(GL_BACK, GL_FILL);
              glBegin(GL_TRIANGLES);
-             glColor3f(1, 0, 0); glVertex2f(-3, -0.5f);
-             glColor3f(0, 1, 0); glVertex2f(0.5f, -0.5f);
-             glColor3f(0, 0, 1); glVertex2f(0, 3);
-             glVertex2f(-1, -1); glVertex2f(0, 1); glVertex2f(1, -1);  // back: filled
+             glColor3f(1, 0, 0);
+             glVertex2f(-3, -0.5f);
+             glColor3f(0, 1, 0);
+             glVertex2f(0.5f, -0.5f);
+             glColor3f(0, 0, 1);
+             glVertex2f(0, 3);
+             glVertex2f(-1, -1);
+             glVertex2f(0, 1);
+             glVertex2f(1, -1);  // back: filled
              glEnd();
              glBegin(GL_POLYGON);
-             glVertex2f(-2, -2); glVertex2f(2, -2); glVertex2f(2, 2); glVertex2f(-2, 2);
+             glVertex2f(-2, -2);
+             glVertex2f(2, -2);
+             glVertex2f(2, 2);
+             glVertex2f(-2, 2);
              glEnd();
              glEnable(GL_CULL_FACE);
              glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
              glBegin(GL_TRIANGLES);
-             glVertex2f(-1, -1); glVertex2f(0, 1); glVertex2f(1, -1);  // culled
+             glVertex2f(-1, -1);
+             glVertex2f(0, 1);
+             glVertex2f(1, -1);  // culled
              glEnd();
              glBegin(GL_LINES);
-             glVertex2f(-1, -1); glVertex2f(1, 1);
+             glVertex2f(-1, -1);
+             glVertex2f(1, 1);
              glEnd();
              glShadeModel(GL_FLAT);
              glBegin(GL_QUADS);
-             glColor3f(1, 0, 0); glVertex2f(-0.5f, -0.5f);
-             glColor3f(0, 1, 0); glVertex2f(0.5f, -0.4f);
-             glColor3f(0, 0, 1); glVertex2f(0.6f, 0.5f);
-             glColor3f(1, 1, 1); glVertex2f(-0.4f, 0.6f);
+             glColor3f(1, 0, 0);
+             glVertex2f(-0.5f, -0.5f);
+             glColor3f(0, 1, 0);
+             glVertex2f(0.5f, -0.4f);
+             glColor3f(0, 0, 1);
+             glVertex2f(0.6f, 0.5f);
+             glColor3f(1, 1, 1);
+             glVertex2f(-0.4f, 0.6f);
              glEnd();
              glPolygonMode(GL_BACK, GL_FILL);
              glDisable(GL_CULL_FACE);
              glBegin(GL_TRIANGLES);  // a back face filled, flat, beside the unfilled stage
-             glColor3f(1, 0, 0); glVertex2f(-1, -1);
-             glColor3f(0, 1, 0); glVertex2f(0, 1);
-             glColor3f(0, 0, 1); glVertex2f(1, -1);
+             glColor3f(1, 0, 0);
+             glVertex2f(-1, -1);
+             glColor3f(0, 1, 0);
+             glVertex2f(0, 1);
+             glColor3f(0, 0, 1);
+             glVertex2f(1, -1);
              glEnd();
              glPolygonMode(GL_FRONT, GL_POINT);
              glBegin(GL_TRIANGLES);  // flat points
-             glColor3f(1, 0, 0); glVertex2f(-1, -1);
-             glColor3f(0, 1, 0); glVertex2f(1, -1);
-             glColor3f(0, 0, 1); glVertex2f(0, 1);
+             glColor3f(1, 0, 0);
+             glVertex2f(-1, -1);
+             glColor3f(0, 1, 0);
+             glVertex2f(1, -1);
+             glColor3f(0, 0, 1);
+             glVertex2f(0, 1);
              glEnd();
          }},
-        {"pass-through, bitmaps and a display list", [] {
+        {"pass-through, bitmaps and a display list",
+         [] {
              glPassThrough(42.5f);
              glColor3f(0.5f, 0.25f, 1);
              glRasterPos2f(0.25f, 0.5f);
@@ -230,12 +317,15 @@ std::vector<Case> cases() {
              glBitmap(8, 2, 0, 0, 3, 1, bits);
              glNewList(1, GL_COMPILE);
              glPassThrough(-3);
-             glBegin(GL_POINTS); glVertex2f(0, 0); glEnd();
+             glBegin(GL_POINTS);
+             glVertex2f(0, 0);
+             glEnd();
              glEndList();
              glCallList(1);
              glPassThrough(7);
          }},
-        {"a gluSphere", [] {
+        {"a gluSphere",
+         [] {
              GLUquadric* q = gluNewQuadric();
              gluSphere(q, 0.8, 6, 4);
              gluDeleteQuadric(q);
@@ -247,19 +337,19 @@ TEST(Feedback, EveryTypeWritesTheReferencesValues) {
     for (const Case& c : cases()) {
         for (GLenum type : {GL_2D, GL_3D, GL_3D_COLOR, GL_3D_COLOR_TEXTURE, GL_4D_COLOR_TEXTURE}) {
             const auto results = onBothBackends<Result>([&] { return feedback(type, c.draw); }, kWidth, kHeight);
-            EXPECT_TRUE(results.mygl == results.osmesa) << c.name << ", type " << type << "\n MyGL:   "
-                                                         << describe(results.mygl) << "\n OSMesa: "
-                                                         << describe(results.osmesa);
+            EXPECT_TRUE(results.mygl == results.osmesa)
+                << c.name << ", type " << type << "\n MyGL:   " << describe(results.mygl)
+                << "\n OSMesa: " << describe(results.osmesa);
         }
     }
 }
 
 TEST(Feedback, OverflowFillsTheBufferAndAnswersMinusOne) {
     for (int size : {1, 10, 23, 24}) {
-        const auto results = onBothBackends<Result>([&] { return feedback(GL_3D_COLOR, smoothTriangles, size); },
-                                                    kWidth, kHeight);
-        EXPECT_TRUE(results.mygl == results.osmesa) << size << "\n MyGL:   " << describe(results.mygl)
-                                                     << "\n OSMesa: " << describe(results.osmesa);
+        const auto results =
+            onBothBackends<Result>([&] { return feedback(GL_3D_COLOR, smoothTriangles, size); }, kWidth, kHeight);
+        EXPECT_TRUE(results.mygl == results.osmesa)
+            << size << "\n MyGL:   " << describe(results.mygl) << "\n OSMesa: " << describe(results.osmesa);
     }
 }
 

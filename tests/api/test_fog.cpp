@@ -88,8 +88,10 @@ Frame fogFrame(bool perspective, const std::function<void()>& setup) {
     glEnable(GL_DEPTH_TEST);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
-    if (perspective) glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 40.0);
-    else glOrtho(-4.0, 4.0, -3.0, 3.0, 1.0, 40.0);
+    if (perspective)
+        glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 40.0);
+    else
+        glOrtho(-4.0, 4.0, -3.0, 3.0, 1.0, 40.0);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     glTranslatef(0.0f, -0.2f, -2.0f);
@@ -116,8 +118,8 @@ TEST(Fog, GeneratedModesDensitiesAndRangesMatchTheReference) {
         settings.push_back({GL_EXP, density, 0.0f, 1.0f});
         settings.push_back({GL_EXP2, density, 0.0f, 1.0f});
     }
-    for (const auto& [start, end] : std::vector<std::pair<float, float>>{{0.0f, 1.0f}, {2.0f, 20.0f}, {5.0f, 9.5f},
-                                                                          {-3.0f, 60.0f}, {15.0f, 4.0f}, {6.0f, 6.0f}}) {
+    for (const auto& [start, end] : std::vector<std::pair<float, float>>{
+             {0.0f, 1.0f}, {2.0f, 20.0f}, {5.0f, 9.5f}, {-3.0f, 60.0f}, {15.0f, 4.0f}, {6.0f, 6.0f}}) {
         settings.push_back({GL_LINEAR, 1.0f, start, end});
     }
     for (bool perspective : {true, false}) {
@@ -144,8 +146,8 @@ TEST(Fog, LitScenesMatchTheReference) {
     const GLfloat positional[] = {1.0f, 2.0f, 1.0f, 1.0f}, directional[] = {0.3f, 1.0f, 0.5f, 0.0f};
     for (const GLfloat* position : {positional, directional}) {
         for (bool localViewer : {false, true}) {
-            const std::string name = std::string(position[3] != 0.0f ? "positional" : "directional") +
-                                     (localViewer ? ", local viewer" : "");
+            const std::string name =
+                std::string(position[3] != 0.0f ? "positional" : "directional") + (localViewer ? ", local viewer" : "");
             expectSameFrame(name, true, [=] {
                 applyFog({GL_LINEAR, 1.0f, 2.0f, 2.0001f + 14.0f});
                 glEnable(GL_LIGHTING);
@@ -270,21 +272,24 @@ TEST(Fog, BitmapsMatchTheReference) {
     const GLubyte bits[] = {0xF0, 0x3C, 0x0F, 0xFF, 0x81, 0x7E, 0x18, 0xA5};
     for (const FogSetting& f : {FogSetting{GL_LINEAR, 1.0f, 10.0f, 2.0f}, FogSetting{GL_LINEAR, 1.0f, -4.0f, 6.0f},
                                 FogSetting{GL_EXP, 0.3f, 0.0f, 1.0f}, FogSetting{GL_EXP2, 0.3f, 0.0f, 1.0f}}) {
-        const auto frames = onBothBackends<Frame>([&] {
-            glClearColor(0, 0, 0, 0);
-            glClear(GL_COLOR_BUFFER_BIT);
-            applyFog(f);
-            glMatrixMode(GL_PROJECTION);
-            glLoadIdentity();
-            glOrtho(-1.0, 1.0, -1.0, 1.0, -20.0, 20.0);
-            glColor3f(0.9f, 0.3f, 0.1f);
-            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows of one byte
-            for (int i = 0; i < 6; ++i) {
-                glRasterPos3f(-0.8f + 0.3f * static_cast<float>(i), 0.1f * static_cast<float>(i), -3.0f * static_cast<float>(i));
-                glBitmap(8, 8, 0.0f, 0.0f, 0.0f, 0.0f, bits);
-            }
-            return readFrame(kWidth, kHeight);
-        }, kWidth, kHeight);
+        const auto frames = onBothBackends<Frame>(
+            [&] {
+                glClearColor(0, 0, 0, 0);
+                glClear(GL_COLOR_BUFFER_BIT);
+                applyFog(f);
+                glMatrixMode(GL_PROJECTION);
+                glLoadIdentity();
+                glOrtho(-1.0, 1.0, -1.0, 1.0, -20.0, 20.0);
+                glColor3f(0.9f, 0.3f, 0.1f);
+                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows of one byte
+                for (int i = 0; i < 6; ++i) {
+                    glRasterPos3f(-0.8f + 0.3f * static_cast<float>(i), 0.1f * static_cast<float>(i),
+                                  -3.0f * static_cast<float>(i));
+                    glBitmap(8, 8, 0.0f, 0.0f, 0.0f, 0.0f, bits);
+                }
+                return readFrame(kWidth, kHeight);
+            },
+            kWidth, kHeight);
         const ColorDifference d = difference(frames.mygl, frames.osmesa);
         EXPECT_EQ(d.pixels, 0) << describe(f) << ": max channel difference " << d.maxChannel;
     }

@@ -93,38 +93,42 @@ TEST(FuzzFindings, GeneratedTextureNamesFollowTheLargestNameEverUsed) {
 // write mask) rounds the clear value through float (the fuzzer's seed 42: glStencilMask(1), then
 // glClear of depth and stencil at depth 0.51744331 gave 8681257, MyGL 8681258).
 TEST(FuzzFindings, DepthClearedWithAQuadTakesTheFloatPath) {
-    const auto results = onBothBackends<std::vector<GLuint>>([] {
-        std::vector<GLuint> depths;
-        for (int mode = 0; mode < 3; ++mode) {
-            for (double d : {0.51744331097978524, 0.3, 0.123456789, 0.9999, 0.00001, 0.7}) {
-                glClearDepth(d);
-                glStencilMask(mode == 0 ? 1 : 0xFF);
-                if (mode == 1) glEnable(GL_SCISSOR_TEST);
-                glScissor(0, 0, mode == 2 ? 4 : 2, mode == 2 ? 4 : 2);  // mode 2: the whole window
-                glClear(GL_DEPTH_BUFFER_BIT | (mode == 0 ? GL_STENCIL_BUFFER_BIT : 0));
-                GLuint z = 0;
-                glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &z);
-                depths.push_back(z);
+    const auto results = onBothBackends<std::vector<GLuint>>(
+        [] {
+            std::vector<GLuint> depths;
+            for (int mode = 0; mode < 3; ++mode) {
+                for (double d : {0.51744331097978524, 0.3, 0.123456789, 0.9999, 0.00001, 0.7}) {
+                    glClearDepth(d);
+                    glStencilMask(mode == 0 ? 1 : 0xFF);
+                    if (mode == 1) glEnable(GL_SCISSOR_TEST);
+                    glScissor(0, 0, mode == 2 ? 4 : 2, mode == 2 ? 4 : 2);  // mode 2: the whole window
+                    glClear(GL_DEPTH_BUFFER_BIT | (mode == 0 ? GL_STENCIL_BUFFER_BIT : 0));
+                    GLuint z = 0;
+                    glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &z);
+                    depths.push_back(z);
+                }
             }
-        }
-        return depths;
-    }, 4, 4);
+            return depths;
+        },
+        4, 4);
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
 // A lit glRasterPos before the first lit draw (the fuzzer's seed 78: the raster position prepared
 // the lighting without handing it to the pipeline, so the point after it was drawn unlit).
 TEST(FuzzFindings, LitRasterPositionLeavesTheNextDrawLit) {
-    const auto results = onBothBackends<std::vector<GLubyte>>([] {
-        glEnable(GL_LIGHTING);
-        glRasterPos4i(1, 1, 0, 1);
-        glBegin(GL_POINTS);
-        glVertex4i(0, 0, 0, 1);
-        glEnd();
-        std::vector<GLubyte> pixels(2 * 2 * 4);
-        glReadPixels(0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-        return pixels;
-    }, 2, 2);
+    const auto results = onBothBackends<std::vector<GLubyte>>(
+        [] {
+            glEnable(GL_LIGHTING);
+            glRasterPos4i(1, 1, 0, 1);
+            glBegin(GL_POINTS);
+            glVertex4i(0, 0, 0, 1);
+            glEnd();
+            std::vector<GLubyte> pixels(2 * 2 * 4);
+            glReadPixels(0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+            return pixels;
+        },
+        2, 2);
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
@@ -177,19 +181,21 @@ TEST(FuzzFindings, TextureBytesReadAsFloatsAreTimesOneOver255) {
 // flush forgot the image's texture, which the empty block's state then freed while its quad was
 // still queued (the pixel took freed memory's colour).
 TEST(FuzzFindings, ImageDrawnAfterAPointKeepsItsTextureUntilDrawn) {
-    const auto results = onBothBackends<std::vector<GLubyte>>([] {
-        glClear(GL_COLOR_BUFFER_BIT);
-        glBegin(GL_POINTS);
-        glVertex2d(0.0, 0.0);
-        glEnd();
-        const GLubyte image[4] = {10, 200, 30, 255};
-        glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, image);
-        glBegin(GL_POINTS);
-        glEnd();
-        std::vector<GLubyte> pixel(4);
-        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel.data());
-        return pixel;
-    }, 1, 1);
+    const auto results = onBothBackends<std::vector<GLubyte>>(
+        [] {
+            glClear(GL_COLOR_BUFFER_BIT);
+            glBegin(GL_POINTS);
+            glVertex2d(0.0, 0.0);
+            glEnd();
+            const GLubyte image[4] = {10, 200, 30, 255};
+            glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, image);
+            glBegin(GL_POINTS);
+            glEnd();
+            std::vector<GLubyte> pixel(4);
+            glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel.data());
+            return pixel;
+        },
+        1, 1);
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 

@@ -79,18 +79,28 @@ const GLfloat kPositional[] = {1.5f, 1.0f, 2.0f, 1.0f};
 TEST(Lighting, DirectionalAndPositionalLightsMatchTheReference) {
     expectSameFrames(
         {
-            {"directional, diffuse only", [] { whiteLight(GL_LIGHT0, kDirectional); material(0); }},
+            {"directional, diffuse only",
+             [] {
+                 whiteLight(GL_LIGHT0, kDirectional);
+                 material(0);
+             }},
             {"default light 0", [] { glEnable(GL_LIGHT0); }},
             {"no light enabled", [] { material(10); }},
-            {"positional", [] { whiteLight(GL_LIGHT0, kPositional); material(0); }},
-            {"positional, attenuated", [] {
+            {"positional",
+             [] {
+                 whiteLight(GL_LIGHT0, kPositional);
+                 material(0);
+             }},
+            {"positional, attenuated",
+             [] {
                  whiteLight(GL_LIGHT0, kPositional);
                  glLightf(GL_LIGHT0, GL_CONSTANT_ATTENUATION, 0.5f);
                  glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, 0.2f);
                  glLightf(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, 0.05f);
                  material(0);
              }},
-            {"emission and model ambient", [] {
+            {"emission and model ambient",
+             [] {
                  const GLfloat emission[] = {0.1f, 0.2f, 0.05f, 1}, ambient[] = {0.3f, 0.2f, 0.4f, 1};
                  glMaterialfv(GL_FRONT, GL_EMISSION, emission);
                  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
@@ -169,7 +179,8 @@ TEST(Lighting, ColorMaterialNormalizeAndEightLightsMatchTheReference) {
         for (int i = 0; i < 8; ++i) {
             const float a = 0.8f * static_cast<float>(i);
             const GLfloat position[] = {std::cos(a), std::sin(a), 1.0f, i % 2 ? 1.0f : 0.0f};
-            const GLfloat color[] = {0.3f + 0.08f * static_cast<float>(i), 0.2f, 0.5f - 0.05f * static_cast<float>(i), 1};
+            const GLfloat color[] = {0.3f + 0.08f * static_cast<float>(i), 0.2f, 0.5f - 0.05f * static_cast<float>(i),
+                                     1};
             glLightfv(GL_LIGHT0 + static_cast<GLenum>(i), GL_POSITION, position);
             glLightfv(GL_LIGHT0 + static_cast<GLenum>(i), GL_DIFFUSE, color);
             glLightfv(GL_LIGHT0 + static_cast<GLenum>(i), GL_SPECULAR, color);
@@ -199,11 +210,13 @@ TEST(Lighting, PerVertexMaterialsAndFlatShadingMatchTheReference) {
     expectSameFrames(
         {
             {"glMaterial inside glBegin/glEnd", [] { whiteLight(GL_LIGHT0, kPositional); }},
-            {"colour material per vertex", [] {
+            {"colour material per vertex",
+             [] {
                  whiteLight(GL_LIGHT0, kPositional);
                  glEnable(GL_COLOR_MATERIAL);
              }},
-            {"flat", [] {
+            {"flat",
+             [] {
                  whiteLight(GL_LIGHT0, kPositional);
                  material(20);
                  glShadeModel(GL_FLAT);
@@ -242,7 +255,8 @@ TEST(Lighting, MaterialChangedAfterVerticesMatchesTheReference) {
         glEnd();
     };
     expectSameFrames({{"one-sided", [] { whiteLight(GL_LIGHT0, kPositional); }},
-                      {"two-sided", [] {
+                      {"two-sided",
+                       [] {
                            whiteLight(GL_LIGHT0, kPositional);
                            glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
                        }}},
@@ -255,7 +269,9 @@ TEST(Lighting, StateAndErrorsMatchTheReference) {
     const auto answers = onBothBackends<std::vector<double>>([] {
         std::vector<double> out;
         const auto error = [&] { out.push_back(static_cast<double>(glGetError())); };
-        const auto floats = [&](std::initializer_list<GLfloat> values) { out.insert(out.end(), values.begin(), values.end()); };
+        const auto floats = [&](std::initializer_list<GLfloat> values) {
+            out.insert(out.end(), values.begin(), values.end());
+        };
         const GLfloat v[] = {0.25f, -0.5f, 2.0f, 0.75f};
         const GLint iv[] = {1 << 30, -(1 << 29), 7, 2147483647};
         glLightfv(GL_LIGHT0 + 8, GL_DIFFUSE, v), error();
@@ -321,23 +337,26 @@ TEST(Lighting, StateAndErrorsMatchTheReference) {
         glGetLightfv(GL_LIGHT0, GL_SHININESS, f), error();
         glGetMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, f), error();
         glGetMaterialfv(GL_FRONT, GL_POSITION, f), error();
-        for (GLenum name : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT0, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_COLOR_MATERIAL,
-                            GL_MAX_LIGHTS, GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE,
-                            GL_LIGHT_MODEL_COLOR_CONTROL, GL_COLOR_MATERIAL_FACE, GL_COLOR_MATERIAL_PARAMETER, GL_SHADE_MODEL}) {
+        for (GLenum name : std::initializer_list<GLenum>{
+                 GL_LIGHTING, GL_LIGHT0, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_COLOR_MATERIAL, GL_MAX_LIGHTS,
+                 GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE,
+                 GL_LIGHT_MODEL_COLOR_CONTROL, GL_COLOR_MATERIAL_FACE, GL_COLOR_MATERIAL_PARAMETER, GL_SHADE_MODEL}) {
             GLfloat g[4] = {-9, -9, -9, -9};
             glGetFloatv(name, g);
             floats({g[0], g[1], g[2], g[3]});
             error();
         }
         glEnable(GL_LIGHTING), glEnable(GL_LIGHT7), glEnable(GL_NORMALIZE), glEnable(GL_RESCALE_NORMAL);
-        for (GLenum cap : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL, GL_COLOR_MATERIAL}) {
+        for (GLenum cap : std::initializer_list<GLenum>{GL_LIGHTING, GL_LIGHT7, GL_NORMALIZE, GL_RESCALE_NORMAL,
+                                                        GL_COLOR_MATERIAL}) {
             out.push_back(glIsEnabled(cap));
         }
         error();
         return out;
     });
     ASSERT_EQ(answers.mygl.size(), answers.osmesa.size());
-    for (std::size_t i = 0; i < answers.mygl.size(); ++i) EXPECT_EQ(answers.mygl[i], answers.osmesa[i]) << "answer " << i;
+    for (std::size_t i = 0; i < answers.mygl.size(); ++i)
+        EXPECT_EQ(answers.mygl[i], answers.osmesa[i]) << "answer " << i;
 }
 
 // Modelviews whose inverse the reference computes by its general methods: a shear (the
@@ -388,7 +407,8 @@ TEST(Lighting, ListsAndArraysMatchTheReference) {
     }
     expectSameFrames(
         {
-            {"display list", [] {
+            {"display list",
+             [] {
                  glNewList(1, GL_COMPILE);
                  whiteLight(GL_LIGHT1, kPositional);
                  glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 40.0f);
@@ -397,7 +417,8 @@ TEST(Lighting, ListsAndArraysMatchTheReference) {
                  glEndList();
                  glCallList(1);
              }},
-            {"vertex arrays", [] {
+            {"vertex arrays",
+             [] {
                  whiteLight(GL_LIGHT0, kPositional);
                  material(25);
                  glEnableClientState(GL_VERTEX_ARRAY);
@@ -409,8 +430,10 @@ TEST(Lighting, ListsAndArraysMatchTheReference) {
         [] {
             GLboolean arrays = GL_FALSE;
             glGetBooleanv(GL_VERTEX_ARRAY, &arrays);
-            if (arrays) glDrawArrays(GL_QUAD_STRIP, 0, static_cast<GLsizei>(vertices.size() / 3));
-            else sphere();
+            if (arrays)
+                glDrawArrays(GL_QUAD_STRIP, 0, static_cast<GLsizei>(vertices.size() / 3));
+            else
+                sphere();
         });
 }
 
@@ -442,16 +465,19 @@ TEST(Lighting, TwoSidedLightingMatchesTheReference) {
         {
             {"two-sided", [=] { twoSided(20, 40); }},
             {"two-sided, front shininess 0", [=] { twoSided(0, 10); }},
-            {"two-sided, flat, clockwise front", [=] {
+            {"two-sided, flat, clockwise front",
+             [=] {
                  twoSided(20, 5);
                  glShadeModel(GL_FLAT);
                  glFrontFace(GL_CW);
              }},
-            {"two-sided, clipped by the near plane", [=] {
+            {"two-sided, clipped by the near plane",
+             [=] {
                  twoSided(20, 40);
                  glTranslatef(0.0f, 0.0f, 2.6f);
              }},
-            {"two-sided, back faces culled", [=] {
+            {"two-sided, back faces culled",
+             [=] {
                  twoSided(20, 40);
                  glEnable(GL_CULL_FACE);
              }},
@@ -486,9 +512,18 @@ TEST(Lighting, LitQuadsAreSplitAsTheReferenceSplitsThem) {
     expectSameFrames(
         {
             {"smooth", lit},
-            {"flat", [=] { lit(); glShadeModel(GL_FLAT); }},
-            {"two-sided, smooth", [=] { lit(); glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE); }},
-            {"two-sided, flat", [=] {
+            {"flat",
+             [=] {
+                 lit();
+                 glShadeModel(GL_FLAT);
+             }},
+            {"two-sided, smooth",
+             [=] {
+                 lit();
+                 glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+             }},
+            {"two-sided, flat",
+             [=] {
                  lit();
                  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
                  glShadeModel(GL_FLAT);
@@ -529,36 +564,50 @@ TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
             {"shininess 10", [=] { separate(10); }},
             {"shininess 60", [=] { separate(60); }},
             {"shininess 0", [=] { separate(0); }},
-            {"flat", [=] { separate(20); glShadeModel(GL_FLAT); }},
-            {"single colour again", [=] {
+            {"flat",
+             [=] {
+                 separate(20);
+                 glShadeModel(GL_FLAT);
+             }},
+            {"single colour again",
+             [=] {
                  separate(20);
                  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
              }},
-            {"spot, attenuated", [=] {
+            {"spot, attenuated",
+             [=] {
                  separate(30);
                  glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 35.0f);
                  glLightf(GL_LIGHT1, GL_SPOT_EXPONENT, 2.0f);
                  glLightf(GL_LIGHT1, GL_QUADRATIC_ATTENUATION, 0.1f);
              }},
-            {"modulated texture", [=] { separate(15); checker(); }},
-            {"replaced texture", [=] {
+            {"modulated texture",
+             [=] {
+                 separate(15);
+                 checker();
+             }},
+            {"replaced texture",
+             [=] {
                  separate(15);
                  checker();
                  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
              }},
-            {"decal texture", [=] {
+            {"decal texture",
+             [=] {
                  separate(15);
                  checker();
                  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
              }},
-            {"blend texture", [=] {
+            {"blend texture",
+             [=] {
                  separate(15);
                  checker();
                  const GLfloat envColor[] = {0.3f, 0.9f, 0.6f, 0.5f};
                  glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, envColor);
                  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);
              }},
-            {"added texture under fog", [=] {
+            {"added texture under fog",
+             [=] {
                  separate(15);
                  checker();
                  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
@@ -566,7 +615,8 @@ TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
                  glFogi(GL_FOG_MODE, GL_EXP);
                  glFogf(GL_FOG_DENSITY, 0.2f);
              }},
-            {"added texture under fog, single colour", [=] {
+            {"added texture under fog, single colour",
+             [=] {
                  separate(15);
                  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
                  checker();
@@ -575,13 +625,15 @@ TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
                  glFogi(GL_FOG_MODE, GL_EXP);
                  glFogf(GL_FOG_DENSITY, 0.2f);
              }},
-            {"decal texture, flat", [=] {
+            {"decal texture, flat",
+             [=] {
                  separate(15);
                  checker();
                  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
                  glShadeModel(GL_FLAT);
              }},
-            {"fog", [=] {
+            {"fog",
+             [=] {
                  separate(15);
                  const GLfloat fogColor[] = {0.2f, 0.6f, 0.3f, 1};
                  glEnable(GL_FOG);
@@ -590,26 +642,39 @@ TEST(Lighting, SeparateSpecularColorMatchesTheReference) {
                  glFogf(GL_FOG_END, 5.5f);
                  glFogfv(GL_FOG_COLOR, fogColor);
              }},
-            {"blended", [=] {
+            {"blended",
+             [=] {
                  separate(15);
                  glEnable(GL_BLEND);
                  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
              }},
-            {"two-sided, clipped by the near plane", [=] {
+            {"two-sided, clipped by the near plane",
+             [=] {
                  separate(25);
                  const GLfloat backSpecular[] = {0.2f, 0.9f, 0.5f, 1};
                  glMaterialfv(GL_BACK, GL_SPECULAR, backSpecular);
                  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
                  glTranslatef(0.0f, 0.0f, 2.7f);
              }},
-            {"lines", [=] { separate(20); glPolygonMode(GL_FRONT_AND_BACK, GL_LINE); }},
-            {"points", [=] { separate(20); glPolygonMode(GL_FRONT_AND_BACK, GL_POINT); glPointSize(3.0f); }},
-            {"lines, flat", [=] {
+            {"lines",
+             [=] {
+                 separate(20);
+                 glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+             }},
+            {"points",
+             [=] {
+                 separate(20);
+                 glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+                 glPointSize(3.0f);
+             }},
+            {"lines, flat",
+             [=] {
                  separate(20);
                  glShadeModel(GL_FLAT);
                  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
              }},
-            {"material inside glBegin", [=] {
+            {"material inside glBegin",
+             [=] {
                  separate(20);
                  glBegin(GL_TRIANGLES);
                  glMaterialf(GL_FRONT, GL_SHININESS, 5.0f);
@@ -637,10 +702,9 @@ TEST(Lighting, BitmapsAndImagesUnderSeparateSpecularMatchTheReference) {
             whiteLight(GL_LIGHT0, kDirectional);
             material(8);
             glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
-            static const GLubyte bits[8 * 4] = {0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
-                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
-                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81,
-                                                0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81};
+            static const GLubyte bits[8 * 4] = {0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81, 0xFF, 0x0F, 0xF0,
+                                                0xAA, 0x55, 0x3C, 0xC3, 0x81, 0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C,
+                                                0xC3, 0x81, 0xFF, 0x0F, 0xF0, 0xAA, 0x55, 0x3C, 0xC3, 0x81};
             glNormal3f(0.2f, 0.3f, 1.0f);
             glRasterPos2f(-0.5f, -0.5f);
             glBitmap(32, 8, 0.0f, 0.0f, 0.0f, 0.0f, bits);

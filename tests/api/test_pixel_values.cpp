@@ -46,8 +46,8 @@ std::string firstDifference(const Buffers& ours, const Buffers& theirs) {
         const int x = static_cast<int>(i) % kWidth, y = static_cast<int>(i) / kWidth;
         const std::string at = " at " + std::to_string(x) + "," + std::to_string(y) + ": ";
         if (std::memcmp(&ours.color[4 * i], &theirs.color[4 * i], 4) != 0) {
-            return "colour" + at + std::to_string(ours.color[4 * i]) + "," + std::to_string(ours.color[4 * i + 1]) + "," +
-                   std::to_string(ours.color[4 * i + 2]) + "," + std::to_string(ours.color[4 * i + 3]) + " vs " +
+            return "colour" + at + std::to_string(ours.color[4 * i]) + "," + std::to_string(ours.color[4 * i + 1]) +
+                   "," + std::to_string(ours.color[4 * i + 2]) + "," + std::to_string(ours.color[4 * i + 3]) + " vs " +
                    std::to_string(theirs.color[4 * i]) + "," + std::to_string(theirs.color[4 * i + 1]) + "," +
                    std::to_string(theirs.color[4 * i + 2]) + "," + std::to_string(theirs.color[4 * i + 3]);
         }
@@ -62,10 +62,12 @@ std::string firstDifference(const Buffers& ours, const Buffers& theirs) {
 }
 
 void expectSameBuffers(const std::function<void()>& calls, const std::string& what) {
-    const auto frames = onBothBackends<Buffers>([&] {
-        calls();
-        return readBuffers();
-    }, kWidth, kHeight);
+    const auto frames = onBothBackends<Buffers>(
+        [&] {
+            calls();
+            return readBuffers();
+        },
+        kWidth, kHeight);
     EXPECT_EQ(firstDifference(frames.mygl, frames.osmesa), "") << what;
 }
 
@@ -104,12 +106,14 @@ std::vector<std::uint8_t> valueImage(int width, int height, GLenum type) {
         switch (type) {
         case GL_UNSIGNED_BYTE: p[i] = static_cast<std::uint8_t>(extreme ? (i % 2 ? 255 : 0) : r); break;
         case GL_BYTE: p[i] = static_cast<std::uint8_t>(extreme ? (i % 2 ? 127 : 0x80) : r); break;
-        case GL_UNSIGNED_SHORT: case GL_SHORT: {
+        case GL_UNSIGNED_SHORT:
+        case GL_SHORT: {
             const auto v = static_cast<std::uint16_t>(extreme ? (i % 2 ? 0x7FFF : 0xFFFF) : r);
             std::memcpy(p + 2 * i, &v, 2);
             break;
         }
-        case GL_UNSIGNED_INT: case GL_INT: {
+        case GL_UNSIGNED_INT:
+        case GL_INT: {
             const std::uint32_t v = extreme ? (i % 2 ? 0x7FFFFFFFu : 0xFFFFFFFFu) : r;
             std::memcpy(p + 4 * i, &v, 4);
             break;
@@ -130,14 +134,16 @@ TEST(PixelValues, DepthImagesOfEveryTypeWriteTheReferencesDepths) {
     for (GLenum type : kTypes) {
         const auto image = valueImage(13, 9, type);
         for (const GLenum func : {GL_ALWAYS, GL_LESS, GL_GEQUAL}) {
-            expectSameBuffers([&] {
-                sceneBehind();
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(func);
-                glColor4f(0.2f, 0.9f, 0.4f, 0.7f);
-                glRasterPos3f(5.5f, 4.5f, 0.3f);
-                glDrawPixels(13, 9, GL_DEPTH_COMPONENT, type, image.data());
-            }, "type " + std::to_string(type) + " func " + std::to_string(func));
+            expectSameBuffers(
+                [&] {
+                    sceneBehind();
+                    glEnable(GL_DEPTH_TEST);
+                    glDepthFunc(func);
+                    glColor4f(0.2f, 0.9f, 0.4f, 0.7f);
+                    glRasterPos3f(5.5f, 4.5f, 0.3f);
+                    glDrawPixels(13, 9, GL_DEPTH_COMPONENT, type, image.data());
+                },
+                "type " + std::to_string(type) + " func " + std::to_string(func));
         }
     }
 }
@@ -147,15 +153,17 @@ TEST(PixelValues, DepthScaleAndBiasApplyToEveryType) {
     for (GLenum type : kTypes) {
         const auto image = valueImage(11, 7, type);
         for (const auto& t : transfers) {
-            expectSameBuffers([&] {
-                sceneBehind();
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(GL_ALWAYS);
-                glPixelTransferf(GL_DEPTH_SCALE, t[0]);
-                glPixelTransferf(GL_DEPTH_BIAS, t[1]);
-                glRasterPos2i(3, 2);
-                glDrawPixels(11, 7, GL_DEPTH_COMPONENT, type, image.data());
-            }, "type " + std::to_string(type) + " scale " + std::to_string(t[0]) + " bias " + std::to_string(t[1]));
+            expectSameBuffers(
+                [&] {
+                    sceneBehind();
+                    glEnable(GL_DEPTH_TEST);
+                    glDepthFunc(GL_ALWAYS);
+                    glPixelTransferf(GL_DEPTH_SCALE, t[0]);
+                    glPixelTransferf(GL_DEPTH_BIAS, t[1]);
+                    glRasterPos2i(3, 2);
+                    glDrawPixels(11, 7, GL_DEPTH_COMPONENT, type, image.data());
+                },
+                "type " + std::to_string(type) + " scale " + std::to_string(t[0]) + " bias " + std::to_string(t[1]));
         }
     }
 }
@@ -165,30 +173,32 @@ TEST(PixelValues, DepthImagesGoThroughZoomsMasksAndFragmentOperations) {
     const float zooms[][2] = {{1, 1}, {2, 3}, {-1.5f, 1}, {0.5f, -0.5f}, {2.5f, 1.25f}};
     for (const auto& zoom : zooms) {
         for (int state = 0; state < 5; ++state) {
-            expectSameBuffers([&] {
-                sceneBehind();
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(GL_LEQUAL);
-                if (state == 1) glDepthMask(GL_FALSE);
-                if (state == 2) glDisable(GL_DEPTH_TEST);
-                if (state == 3) {  // blending, fog (the depth program draws no fog), alpha test
-                    glEnable(GL_BLEND);
-                    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-                    glEnable(GL_FOG);
-                    glFogi(GL_FOG_MODE, GL_LINEAR);
-                    glEnable(GL_ALPHA_TEST);
-                    glAlphaFunc(GL_GREATER, 0.5f);
-                }
-                if (state == 4) {  // the stencil test and a stencil operation
-                    glEnable(GL_STENCIL_TEST);
-                    glStencilFunc(GL_EQUAL, 0xC3, 0xFF);
-                    glStencilOp(GL_KEEP, GL_INCR, GL_INVERT);
-                }
-                glPixelZoom(zoom[0], zoom[1]);
-                glColor4f(0.9f, 0.3f, 0.6f, 0.75f);
-                glRasterPos3f(15.3f, 12.7f, 0.9f);
-                glDrawPixels(9, 8, GL_DEPTH_COMPONENT, GL_FLOAT, image.data());
-            }, "zoom " + std::to_string(zoom[0]) + "," + std::to_string(zoom[1]) + " state " + std::to_string(state));
+            expectSameBuffers(
+                [&] {
+                    sceneBehind();
+                    glEnable(GL_DEPTH_TEST);
+                    glDepthFunc(GL_LEQUAL);
+                    if (state == 1) glDepthMask(GL_FALSE);
+                    if (state == 2) glDisable(GL_DEPTH_TEST);
+                    if (state == 3) {  // blending, fog (the depth program draws no fog), alpha test
+                        glEnable(GL_BLEND);
+                        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                        glEnable(GL_FOG);
+                        glFogi(GL_FOG_MODE, GL_LINEAR);
+                        glEnable(GL_ALPHA_TEST);
+                        glAlphaFunc(GL_GREATER, 0.5f);
+                    }
+                    if (state == 4) {  // the stencil test and a stencil operation
+                        glEnable(GL_STENCIL_TEST);
+                        glStencilFunc(GL_EQUAL, 0xC3, 0xFF);
+                        glStencilOp(GL_KEEP, GL_INCR, GL_INVERT);
+                    }
+                    glPixelZoom(zoom[0], zoom[1]);
+                    glColor4f(0.9f, 0.3f, 0.6f, 0.75f);
+                    glRasterPos3f(15.3f, 12.7f, 0.9f);
+                    glDrawPixels(9, 8, GL_DEPTH_COMPONENT, GL_FLOAT, image.data());
+                },
+                "zoom " + std::to_string(zoom[0]) + "," + std::to_string(zoom[1]) + " state " + std::to_string(state));
         }
     }
 }
@@ -199,26 +209,28 @@ TEST(PixelValues, StencilImagesOfEveryTypeWriteUnderTheWriteMaskAndMap) {
     for (GLenum type : kTypes) {
         const auto image = valueImage(12, 9, type);
         for (int state = 0; state < 4; ++state) {
-            expectSameBuffers([&] {
-                sceneBehind();
-                // Depth and stencil tests that would fail: the image writes its values anyway.
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(GL_NEVER);
-                glEnable(GL_STENCIL_TEST);
-                glStencilFunc(GL_NEVER, 0, 0xFF);
-                if (state == 1) glStencilMask(0x3C);
-                if (state == 2) {
-                    glPixelTransferi(GL_INDEX_SHIFT, 2);
-                    glPixelTransferi(GL_INDEX_OFFSET, 7);
-                }
-                if (state == 3) {
-                    glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 16, map.data());
-                    glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
-                }
-                glPixelZoom(state == 3 ? 1.5f : 1.0f, state == 3 ? -2.0f : 1.0f);
-                glRasterPos2f(6.4f, 20.5f);
-                glDrawPixels(12, 9, GL_STENCIL_INDEX, type, image.data());
-            }, "type " + std::to_string(type) + " state " + std::to_string(state));
+            expectSameBuffers(
+                [&] {
+                    sceneBehind();
+                    // Depth and stencil tests that would fail: the image writes its values anyway.
+                    glEnable(GL_DEPTH_TEST);
+                    glDepthFunc(GL_NEVER);
+                    glEnable(GL_STENCIL_TEST);
+                    glStencilFunc(GL_NEVER, 0, 0xFF);
+                    if (state == 1) glStencilMask(0x3C);
+                    if (state == 2) {
+                        glPixelTransferi(GL_INDEX_SHIFT, 2);
+                        glPixelTransferi(GL_INDEX_OFFSET, 7);
+                    }
+                    if (state == 3) {
+                        glPixelMapfv(GL_PIXEL_MAP_S_TO_S, 16, map.data());
+                        glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+                    }
+                    glPixelZoom(state == 3 ? 1.5f : 1.0f, state == 3 ? -2.0f : 1.0f);
+                    glRasterPos2f(6.4f, 20.5f);
+                    glDrawPixels(12, 9, GL_STENCIL_INDEX, type, image.data());
+                },
+                "type " + std::to_string(type) + " state " + std::to_string(state));
         }
     }
 }
@@ -232,15 +244,17 @@ TEST(PixelValues, ColorIndexBitmapsReadTheirRowsAsTheReferenceDoes) {
     const GLfloat red[2] = {0.25f, 1.0f}, alpha[2] = {1.0f, 0.5f};
     for (const int width : {13, 16}) {
         for (const bool lsbFirst : {false, true}) {
-            expectSameBuffers([&] {
-                sceneBehind();
-                glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 2, red);
-                glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 2, alpha);
-                glPixelStorei(GL_UNPACK_LSB_FIRST, lsbFirst);
-                glPixelZoom(1.5f, 2.0f);
-                glRasterPos2i(5, 5);
-                glDrawPixels(width, 4, GL_COLOR_INDEX, GL_BITMAP, bits);
-            }, "width " + std::to_string(width) + (lsbFirst ? " lsb first" : ""));
+            expectSameBuffers(
+                [&] {
+                    sceneBehind();
+                    glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 2, red);
+                    glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 2, alpha);
+                    glPixelStorei(GL_UNPACK_LSB_FIRST, lsbFirst);
+                    glPixelZoom(1.5f, 2.0f);
+                    glRasterPos2i(5, 5);
+                    glDrawPixels(width, 4, GL_COLOR_INDEX, GL_BITMAP, bits);
+                },
+                "width " + std::to_string(width) + (lsbFirst ? " lsb first" : ""));
         }
     }
 }
@@ -248,15 +262,17 @@ TEST(PixelValues, ColorIndexBitmapsReadTheirRowsAsTheReferenceDoes) {
 TEST(PixelValues, ScissoredStencilImagesUnderAWriteMask) {
     const auto stencil = valueImage(16, 10, GL_UNSIGNED_BYTE);
     for (const GLuint mask : {0xF0u, 0x81u}) {
-        expectSameBuffers([&] {
-            sceneBehind();
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(8, 6, 20, 12);
-            glStencilMask(mask);
-            glPixelZoom(1.5f, 1.25f);
-            glRasterPos2i(4, 12);
-            glDrawPixels(16, 10, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
-        }, "mask " + std::to_string(mask));
+        expectSameBuffers(
+            [&] {
+                sceneBehind();
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(8, 6, 20, 12);
+                glStencilMask(mask);
+                glPixelZoom(1.5f, 1.25f);
+                glRasterPos2i(4, 12);
+                glDrawPixels(16, 10, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
+            },
+            "mask " + std::to_string(mask));
     }
 }
 
@@ -271,24 +287,26 @@ TEST(PixelValues, ColorIndexImagesOfEveryTypeTakeTheIndexMaps) {
     for (GLenum type : kTypes) {
         const auto image = valueImage(10, 8, type);
         for (int state = 0; state < 3; ++state) {
-            expectSameBuffers([&] {
-                sceneBehind();
-                if (state > 0) {
-                    glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 8, red.data());
-                    glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, green.data());
-                    glPixelMapfv(GL_PIXEL_MAP_I_TO_B, 16, blue.data());
-                    glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 2, alpha.data());
-                }
-                if (state == 2) {  // shift, offset, colour scale and map: none applies to indices
-                    glPixelTransferi(GL_INDEX_SHIFT, 1);
-                    glPixelTransferi(GL_INDEX_OFFSET, 3);
-                    glPixelTransferf(GL_RED_SCALE, 0.5f);
-                    glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
-                    glPixelZoom(2, -1.5f);
-                }
-                glRasterPos2f(4.5f, 18.5f);
-                glDrawPixels(10, 8, GL_COLOR_INDEX, type, image.data());
-            }, "type " + std::to_string(type) + " state " + std::to_string(state));
+            expectSameBuffers(
+                [&] {
+                    sceneBehind();
+                    if (state > 0) {
+                        glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 8, red.data());
+                        glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, green.data());
+                        glPixelMapfv(GL_PIXEL_MAP_I_TO_B, 16, blue.data());
+                        glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 2, alpha.data());
+                    }
+                    if (state == 2) {  // shift, offset, colour scale and map: none applies to indices
+                        glPixelTransferi(GL_INDEX_SHIFT, 1);
+                        glPixelTransferi(GL_INDEX_OFFSET, 3);
+                        glPixelTransferf(GL_RED_SCALE, 0.5f);
+                        glPixelTransferi(GL_MAP_COLOR, GL_TRUE);
+                        glPixelZoom(2, -1.5f);
+                    }
+                    glRasterPos2f(4.5f, 18.5f);
+                    glDrawPixels(10, 8, GL_COLOR_INDEX, type, image.data());
+                },
+                "type " + std::to_string(type) + " state " + std::to_string(state));
         }
     }
 }
@@ -298,31 +316,33 @@ TEST(PixelValues, CopiesOfDepthAndStencilEqualTheReference) {
         int x, y, w, h;
         float toX, toY, zoomX, zoomY;
     };
-    const Copy copies[] = {{2, 2, 12, 10, 20, 15, 1, 1},       {5, 3, 15, 12, 9, 7, 1, 1},   // apart, overlapping
-                           {-4, -3, 14, 11, 22, 14, 1, 1},      {30, 20, 16, 14, 3, 4, 1, 1},  // outside the window
-                           {4, 4, 10, 8, 12, 6, 2, 1.5f},       {6, 5, 9, 9, 30, 25, -1, -1}}; // zoomed
+    const Copy copies[] = {{2, 2, 12, 10, 20, 15, 1, 1},   {5, 3, 15, 12, 9, 7, 1, 1},     // apart, overlapping
+                           {-4, -3, 14, 11, 22, 14, 1, 1}, {30, 20, 16, 14, 3, 4, 1, 1},   // outside the window
+                           {4, 4, 10, 8, 12, 6, 2, 1.5f},  {6, 5, 9, 9, 30, 25, -1, -1}};  // zoomed
     for (const GLenum type : {GL_DEPTH, GL_STENCIL}) {
         for (const Copy& c : copies) {
             for (int state = 0; state < 3; ++state) {
-                expectSameBuffers([&] {
-                    sceneBehind();
-                    glEnable(GL_DEPTH_TEST);
-                    glDepthFunc(state == 1 ? GL_GREATER : GL_ALWAYS);
-                    if (state == 2) {
-                        glStencilMask(0x0F);
-                        glDepthMask(GL_FALSE);
-                        glEnable(GL_SCISSOR_TEST);
-                        glScissor(6, 4, 25, 20);
-                        glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
-                        glPixelTransferi(GL_INDEX_OFFSET, 3);
-                    }
-                    glColor4f(0.3f, 0.8f, 0.1f, 1.0f);
-                    glPixelZoom(c.zoomX, c.zoomY);
-                    glRasterPos2f(c.toX, c.toY);
-                    glColor4f(0.7f, 0.2f, 0.9f, 1.0f);  // copies of depth take the current colour
-                    glCopyPixels(c.x, c.y, c.w, c.h, type);
-                }, "type " + std::to_string(type) + " from " + std::to_string(c.x) + "," + std::to_string(c.y) +
-                       " zoom " + std::to_string(c.zoomX) + " state " + std::to_string(state));
+                expectSameBuffers(
+                    [&] {
+                        sceneBehind();
+                        glEnable(GL_DEPTH_TEST);
+                        glDepthFunc(state == 1 ? GL_GREATER : GL_ALWAYS);
+                        if (state == 2) {
+                            glStencilMask(0x0F);
+                            glDepthMask(GL_FALSE);
+                            glEnable(GL_SCISSOR_TEST);
+                            glScissor(6, 4, 25, 20);
+                            glPixelTransferf(GL_DEPTH_SCALE, 0.5f);
+                            glPixelTransferi(GL_INDEX_OFFSET, 3);
+                        }
+                        glColor4f(0.3f, 0.8f, 0.1f, 1.0f);
+                        glPixelZoom(c.zoomX, c.zoomY);
+                        glRasterPos2f(c.toX, c.toY);
+                        glColor4f(0.7f, 0.2f, 0.9f, 1.0f);  // copies of depth take the current colour
+                        glCopyPixels(c.x, c.y, c.w, c.h, type);
+                    },
+                    "type " + std::to_string(type) + " from " + std::to_string(c.x) + "," + std::to_string(c.y) +
+                        " zoom " + std::to_string(c.zoomX) + " state " + std::to_string(state));
             }
         }
     }
@@ -332,27 +352,29 @@ TEST(PixelValues, DisplayListsKeepValuesUnpackedAtCompileTimeAndTransferAtExecut
     const auto depths = valueImage(8, 6, GL_UNSIGNED_SHORT);
     const auto indices = valueImage(8, 6, GL_UNSIGNED_BYTE);
     const GLfloat map[4] = {0.0f, 0.4f, 0.8f, 1.0f};
-    expectSameBuffers([&] {
-        sceneBehind();
-        glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
-        glPixelStorei(GL_UNPACK_ROW_LENGTH, 8);
-        const GLuint list = glGenLists(1);
-        glNewList(list, GL_COMPILE);
-        glRasterPos2i(3, 3);
-        glDrawPixels(6, 6, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, depths.data());
-        glRasterPos2i(20, 3);
-        glDrawPixels(6, 6, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, indices.data());
-        glRasterPos2i(20, 15);
-        glDrawPixels(6, 6, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, indices.data());
-        glEndList();
-        glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_ALWAYS);
-        glPixelTransferf(GL_DEPTH_BIAS, 0.2f);
-        glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, map);
-        glCallList(list);
-        glDeleteLists(list, 1);
-    }, "list");
+    expectSameBuffers(
+        [&] {
+            sceneBehind();
+            glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
+            glPixelStorei(GL_UNPACK_ROW_LENGTH, 8);
+            const GLuint list = glGenLists(1);
+            glNewList(list, GL_COMPILE);
+            glRasterPos2i(3, 3);
+            glDrawPixels(6, 6, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, depths.data());
+            glRasterPos2i(20, 3);
+            glDrawPixels(6, 6, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, indices.data());
+            glRasterPos2i(20, 15);
+            glDrawPixels(6, 6, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, indices.data());
+            glEndList();
+            glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_ALWAYS);
+            glPixelTransferf(GL_DEPTH_BIAS, 0.2f);
+            glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, map);
+            glCallList(list);
+            glDeleteLists(list, 1);
+        },
+        "list");
 }
 
 TEST(PixelValues, DrawAndCopyErrorsOfValueFormatsEqualTheReference) {

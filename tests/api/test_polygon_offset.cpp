@@ -55,8 +55,9 @@ Frame offsetFrame(Offset offset, GLenum mode, unsigned seed) {
     };
     glColor3f(0.8f, 0.2f, 0.2f);
     draw();
-    const GLenum enable = mode == GL_FILL ? GL_POLYGON_OFFSET_FILL : mode == GL_LINE ? GL_POLYGON_OFFSET_LINE
-                                                                                      : GL_POLYGON_OFFSET_POINT;
+    const GLenum enable = mode == GL_FILL   ? GL_POLYGON_OFFSET_FILL
+                          : mode == GL_LINE ? GL_POLYGON_OFFSET_LINE
+                                            : GL_POLYGON_OFFSET_POINT;
     glEnable(enable);
     glPolygonOffset(offset.factor, offset.units);
     glPolygonMode(GL_FRONT_AND_BACK, mode);
@@ -68,13 +69,12 @@ Frame offsetFrame(Offset offset, GLenum mode, unsigned seed) {
 }  // namespace
 
 TEST(PolygonOffset, GeneratedFactorsAndUnitsMatchTheReference) {
-    const Offset offsets[] = {{0.0f, 1.0f}, {0.0f, -1.0f}, {0.0f, 50.0f}, {1.0f, 0.0f}, {-1.0f, 0.0f},
+    const Offset offsets[] = {{0.0f, 1.0f}, {0.0f, -1.0f}, {0.0f, 50.0f},  {1.0f, 0.0f},   {-1.0f, 0.0f},
                               {1.0f, 1.0f}, {2.5f, -3.0f}, {-1.0f, -1.0f}, {0.5f, 1000.0f}};
     for (GLenum mode : {GL_FILL, GL_LINE, GL_POINT}) {
         for (const Offset& o : offsets) {
             for (unsigned seed : {1u, 2u, 3u}) {
-                const auto frames =
-                    onBothBackends<Frame>([&] { return offsetFrame(o, mode, seed); }, kWidth, kHeight);
+                const auto frames = onBothBackends<Frame>([&] { return offsetFrame(o, mode, seed); }, kWidth, kHeight);
                 EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0)
                     << "mode " << mode << " factor " << o.factor << " units " << o.units << " seed " << seed;
             }

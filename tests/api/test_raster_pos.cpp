@@ -41,7 +41,8 @@ struct Frame {
 };
 
 Frame readFrame() {
-    Frame frame{std::vector<GLubyte>(kWidth * kHeight * 4), std::vector<GLuint>(kWidth * kHeight), rasterState(), glGetError()};
+    Frame frame{std::vector<GLubyte>(kWidth * kHeight * 4), std::vector<GLuint>(kWidth * kHeight), rasterState(),
+                glGetError()};
     glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, frame.color.data());
     glReadPixels(0, 0, kWidth, kHeight, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, frame.depth.data());
     return frame;
@@ -50,10 +51,10 @@ Frame readFrame() {
 // 11 x 7 bits, an irregular pattern so that a flipped or shifted bitmap shows.
 const GLubyte kGlyph[7 * 2] = {0xF1, 0x20, 0x80, 0xE0, 0x41, 0x40, 0x22, 0x00, 0x14, 0x20, 0x08, 0xA0, 0xFF, 0x60};
 // The same glyph with its rows 8-byte aligned.
-const GLubyte kGlyphAligned8[7 * 8] = {0xF1, 0x20, 0, 0, 0, 0, 0, 0, 0x80, 0xE0, 0, 0, 0, 0, 0, 0,
-                                       0x41, 0x40, 0, 0, 0, 0, 0, 0, 0x22, 0x00, 0, 0, 0, 0, 0, 0,
-                                       0x14, 0x20, 0, 0, 0, 0, 0, 0, 0x08, 0xA0, 0, 0, 0, 0, 0, 0,
-                                       0xFF, 0x60, 0, 0, 0, 0, 0, 0};
+const GLubyte kGlyphAligned8[7 * 8] = {0xF1, 0x20, 0,    0,    0,    0, 0, 0, 0x80, 0xE0, 0,    0,    0, 0, 0,
+                                       0,    0x41, 0x40, 0,    0,    0, 0, 0, 0,    0x22, 0x00, 0,    0, 0, 0,
+                                       0,    0,    0x14, 0x20, 0,    0, 0, 0, 0,    0,    0x08, 0xA0, 0, 0, 0,
+                                       0,    0,    0,    0xFF, 0x60, 0, 0, 0, 0,    0,    0};
 
 void perspectiveView() {
     glMatrixMode(GL_PROJECTION);
@@ -84,49 +85,58 @@ TEST(RasterPos, PositionColorDistanceAndTexCoordsAsTheReference) {
         {"identity, 3d", [] { glRasterPos3d(-0.33, 0.41, 0.77); }},
         {"identity, 4f with w", [] { glRasterPos4f(0.3f, 0.2f, 0.1f, 2.0f); }},
         {"identity, 2i corner", [] { glRasterPos2i(1, 1); }},
-        {"identity, 3sv", [] {
+        {"identity, 3sv",
+         [] {
              const GLshort v[3] = {0, 0, 1};
              glRasterPos3sv(v);
          }},
-        {"perspective, 3fv", [] {
+        {"perspective, 3fv",
+         [] {
              perspectiveView();
              const GLfloat v[3] = {0.3f, 0.45f, -0.2f};
              glRasterPos3fv(v);
          }},
-        {"perspective, 4dv", [] {
+        {"perspective, 4dv",
+         [] {
              perspectiveView();
              const GLdouble v[4] = {0.5, -0.25, 0.125, 1.5};
              glRasterPos4dv(v);
          }},
-        {"viewport and depth range", [] {
+        {"viewport and depth range",
+         [] {
              glViewport(5, 3, 30, 21);
              glDepthRange(0.2, 0.7);
              glRasterPos3f(0.6f, -0.3f, 0.45f);
          }},
-        {"texture matrix and texcoord", [] {
+        {"texture matrix and texcoord",
+         [] {
              glMatrixMode(GL_TEXTURE);
              glScalef(2.0f, 0.5f, 1.0f);
              glTexCoord2f(0.3f, 0.8f);
              glRasterPos2f(0.0f, 0.0f);
          }},
-        {"colour taken at glRasterPos, not later", [] {
+        {"colour taken at glRasterPos, not later",
+         [] {
              glColor4f(0.2f, 0.9f, 0.45f, 0.6f);
              glRasterPos2f(0.1f, 0.1f);
              glColor3f(1.0f, 0.0f, 0.0f);
          }},
-        {"outside left: invalid, the rest kept", [] {
+        {"outside left: invalid, the rest kept",
+         [] {
              glColor3f(0.5f, 0.5f, 0.5f);
              glRasterPos2f(0.5f, 0.5f);
              glColor3f(0.1f, 0.2f, 0.3f);
              glRasterPos2f(-1.01f, 0.0f);
          }},
         {"on the right edge: valid", [] { glRasterPos2f(1.0f, 0.0f); }},
-        {"behind the near plane: invalid", [] {
+        {"behind the near plane: invalid",
+         [] {
              perspectiveView();
              glRasterPos3f(0.0f, 0.0f, 10.0f);
          }},
         {"beyond the far plane: invalid", [] { glRasterPos3f(0.0f, 0.0f, -1.001f); }},
-        {"valid again after invalid", [] {
+        {"valid again after invalid",
+         [] {
              glRasterPos2f(3.0f, 0.0f);
              glRasterPos2f(0.2f, 0.3f);
          }},
@@ -157,13 +167,15 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
     };
     static void (*setUp)() = ortho;
     const Case cases[] = {
-        {"at integer positions, moved along a line", [] {
+        {"at integer positions, moved along a line",
+         [] {
              setUp();
              glColor3f(0.9f, 0.3f, 0.1f);
              glRasterPos2i(3, 4);
              for (int i = 0; i < 4; ++i) glBitmap(11, 7, 0.0f, 0.0f, 12.0f, 1.0f, kGlyph);
          }},
-        {"fractional positions and origins (the 1e-4 rule)", [] {
+        {"fractional positions and origins (the 1e-4 rule)",
+         [] {
              setUp();
              const float xs[] = {2.0f, 2.4999f, 2.99995f, 1.99995f, 2.5f, 7.99989f};
              for (int i = 0; i < 6; ++i) {
@@ -172,7 +184,8 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
                  glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);  // and without an origin
              }
          }},
-        {"cut at every edge of the window", [] {
+        {"cut at every edge of the window",
+         [] {
              setUp();
              glRasterPos2i(0, 0);
              glBitmap(11, 7, 5.0f, 3.0f, 0.0f, 0.0f, kGlyph);
@@ -181,24 +194,27 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
              glRasterPos2i(kWidth - 3, 10);
              glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);
          }},
-        {"moved outside the window: still valid, drawing nothing", [] {
+        {"moved outside the window: still valid, drawing nothing",
+         [] {
              setUp();
              glRasterPos2i(40, 20);
              glBitmap(0, 0, 0.0f, 0.0f, 30.0f, -50.0f, nullptr);
              glBitmap(11, 7, 0.0f, 0.0f, -40.0f, 0.0f, kGlyph);
              glBitmap(11, 7, 0.0f, -50.0f, 0.0f, 0.0f, kGlyph);
          }},
-        {"unpack alignment 4 and 8", [] {
+        {"unpack alignment 4 and 8",
+         [] {
              setUp();
              glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
              glRasterPos2i(2, 2);
              glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyphAligned8);
              glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-             const GLubyte four[7 * 4] = {0xF1, 0x20, 0, 0, 0x80, 0xE0, 0, 0, 0x41, 0x40, 0, 0, 0x22, 0x00, 0, 0,
-                                          0x14, 0x20, 0, 0, 0x08, 0xA0, 0, 0, 0xFF, 0x60, 0, 0};
+             const GLubyte four[7 * 4] = {0xF1, 0x20, 0,    0, 0x80, 0xE0, 0,    0, 0x41, 0x40, 0,    0, 0x22, 0x00, 0,
+                                          0,    0x14, 0x20, 0, 0,    0x08, 0xA0, 0, 0,    0xFF, 0x60, 0, 0};
              glBitmap(11, 7, -15.0f, 0.0f, 0.0f, 0.0f, four);
          }},
-        {"compiled into a list: unpacked when compiled, drawn when called", [] {
+        {"compiled into a list: unpacked when compiled, drawn when called",
+         [] {
              setUp();
              glRasterPos2i(2, 2);
              glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
@@ -217,7 +233,8 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
              glEndList();
              glCallList(6);
          }},
-        {"colours, including conversion ties and values out of range", [] {
+        {"colours, including conversion ties and values out of range",
+         [] {
              setUp();
              const float values[] = {145.5f / 255.0f, 0.5f, 1.0f / 3.0f, 0.9f, 100.5f / 255.0f, 1.7f, -0.2f};
              for (int i = 0; i < 7; ++i) {
@@ -227,7 +244,8 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
                  glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);
              }
          }},
-        {"depth written at the raster z and tested", [] {
+        {"depth written at the raster z and tested",
+         [] {
              setUp();
              glClearDepth(0.5);
              glClear(GL_DEPTH_BUFFER_BIT);
@@ -244,7 +262,8 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
              glRasterPos3f(4.0f, 5.0f, 0.05f);
              glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);
          }},
-        {"between triangles: drawn in call order", [] {
+        {"between triangles: drawn in call order",
+         [] {
              setUp();
              glEnable(GL_DEPTH_TEST);
              glClear(GL_DEPTH_BUFFER_BIT);
@@ -260,7 +279,8 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
              glVertex3f(10.0f, 18.0f, -0.2f);
              glEnd();
          }},
-        {"a bitmap too big to cache is drawn before the cached ones", [] {
+        {"a bitmap too big to cache is drawn before the cached ones",
+         [] {
              setUp();
              static GLubyte tall[36];
              for (int i = 0; i < 36; ++i) tall[i] = static_cast<GLubyte>(i % 3 == 0 ? 0xFF : 0x3C);
@@ -271,7 +291,8 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
              glRasterPos2i(6, 1);
              glBitmap(8, 36, 0.0f, 0.0f, 0.0f, 0.0f, tall);
          }},
-        {"the cache ends at 512 x 32 pixels and at a new colour", [] {
+        {"the cache ends at 512 x 32 pixels and at a new colour",
+         [] {
              setUp();
              glRasterPos2i(-500, 30);
              glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);
@@ -283,23 +304,27 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
              glRasterPos2i(8, 4);
              glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);
          }},
-        {"perspective raster position", [] {
+        {"perspective raster position",
+         [] {
              perspectiveView();
              glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
              glRasterPos3f(-0.2f, 0.1f, 0.3f);
              glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);
          }},
-        {"invalid raster position: no pixels, no move", [] {
+        {"invalid raster position: no pixels, no move",
+         [] {
              setUp();
              glRasterPos2f(-3.0f, 5.0f);
              glBitmap(11, 7, 0.0f, 0.0f, 4.0f, 4.0f, kGlyph);
          }},
-        {"negative size: GL_INVALID_VALUE, no move", [] {
+        {"negative size: GL_INVALID_VALUE, no move",
+         [] {
              setUp();
              glRasterPos2i(5, 5);
              glBitmap(-1, 7, 0.0f, 0.0f, 4.0f, 4.0f, kGlyph);
          }},
-        {"huge moves and origins: nothing drawn (no pixels), no crash", [] {
+        {"huge moves and origins: nothing drawn (no pixels), no crash",
+         [] {
              setUp();
              glRasterPos2i(5, 5);
              glBitmap(11, 7, 3.0e9f, -3.0e9f, 0.0f, 0.0f, kGlyph);
@@ -307,7 +332,8 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
              glBitmap(11, 7, 0.0f, 0.0f, 1.0e38f, 0.0f, kGlyph);
              glBitmap(11, 7, 0.0f, 0.0f, 0.0f, 0.0f, kGlyph);
          }},
-        {"inside glBegin/glEnd: GL_INVALID_OPERATION", [] {
+        {"inside glBegin/glEnd: GL_INVALID_OPERATION",
+         [] {
              setUp();
              glRasterPos2i(5, 5);
              glBegin(GL_POINTS);
@@ -342,32 +368,35 @@ TEST(Bitmap, PixelsMovesDepthAndErrorsAsTheReference) {
 // 3e-8); the bytes a bitmap draws with it are the same.
 TEST(RasterPos, LitColorAsTheReference) {
     constexpr int kSize = 24;
-    const auto results = onBothBackends<std::vector<float>>([] {
-        std::vector<float> out;
-        glEnable(GL_LIGHTING);
-        glEnable(GL_LIGHT0);
-        const GLfloat position[] = {1, 2, 3, 0}, specular[] = {0.6f, 0.5f, 0.4f, 1}, diffuse[] = {0.3f, 0.9f, 0.2f, 0.7f};
-        glLightfv(GL_LIGHT0, GL_POSITION, position);
-        glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
-        glMaterialf(GL_FRONT, GL_SHININESS, 20);
-        glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
-        glNormal3f(0.2f, 0.5f, 0.8f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        GLubyte bits[16];  // 8 x 4 bits, rows of 4 bytes under the default unpack alignment
-        std::fill(std::begin(bits), std::end(bits), GLubyte{0xff});
-        for (int i = 0; i < 2; ++i) {
-            if (i == 1) glEnable(GL_COLOR_MATERIAL), glColor4f(2.0f, -1.0f, 0.5f, 0.3f);
-            glRasterPos3f(-0.5f + 0.6f * static_cast<float>(i), 0.2f, 0.3f);
-            GLfloat c[4];
-            glGetFloatv(GL_CURRENT_RASTER_COLOR, c);
-            out.insert(out.end(), c, c + 4);
-            glBitmap(8, 4, 0, 0, 0, 0, bits);
-        }
-        std::vector<GLubyte> pixels(kSize * kSize * 4);
-        glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-        out.insert(out.end(), pixels.begin(), pixels.end());
-        return out;
-    }, kSize, kSize);
+    const auto results = onBothBackends<std::vector<float>>(
+        [] {
+            std::vector<float> out;
+            glEnable(GL_LIGHTING);
+            glEnable(GL_LIGHT0);
+            const GLfloat position[] = {1, 2, 3, 0}, specular[] = {0.6f, 0.5f, 0.4f, 1},
+                          diffuse[] = {0.3f, 0.9f, 0.2f, 0.7f};
+            glLightfv(GL_LIGHT0, GL_POSITION, position);
+            glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
+            glMaterialf(GL_FRONT, GL_SHININESS, 20);
+            glMaterialfv(GL_FRONT, GL_DIFFUSE, diffuse);
+            glNormal3f(0.2f, 0.5f, 0.8f);
+            glClear(GL_COLOR_BUFFER_BIT);
+            GLubyte bits[16];  // 8 x 4 bits, rows of 4 bytes under the default unpack alignment
+            std::fill(std::begin(bits), std::end(bits), GLubyte{0xff});
+            for (int i = 0; i < 2; ++i) {
+                if (i == 1) glEnable(GL_COLOR_MATERIAL), glColor4f(2.0f, -1.0f, 0.5f, 0.3f);
+                glRasterPos3f(-0.5f + 0.6f * static_cast<float>(i), 0.2f, 0.3f);
+                GLfloat c[4];
+                glGetFloatv(GL_CURRENT_RASTER_COLOR, c);
+                out.insert(out.end(), c, c + 4);
+                glBitmap(8, 4, 0, 0, 0, 0, bits);
+            }
+            std::vector<GLubyte> pixels(kSize * kSize * 4);
+            glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+            out.insert(out.end(), pixels.begin(), pixels.end());
+            return out;
+        },
+        kSize, kSize);
     ASSERT_EQ(results.mygl.size(), results.osmesa.size());
     for (std::size_t i = 0; i < 8; ++i) EXPECT_NEAR(results.mygl[i], results.osmesa[i], 1e-7f) << "raster colour " << i;
     int lit = 0;

@@ -58,9 +58,18 @@ struct Case {
 };
 
 const Case kCases[] = {
-    {"a triangle", [] { glLoadName(1); triangle(-2.0f); }},
-    {"clipped by the near plane", [] { glLoadName(2); triangle(-0.5f); }},
-    {"back face culled, then drawn without culling", [] {
+    {"a triangle",
+     [] {
+         glLoadName(1);
+         triangle(-2.0f);
+     }},
+    {"clipped by the near plane",
+     [] {
+         glLoadName(2);
+         triangle(-0.5f);
+     }},
+    {"back face culled, then drawn without culling",
+     [] {
          glEnable(GL_CULL_FACE);
          glLoadName(3);
          glBegin(GL_TRIANGLES);
@@ -76,7 +85,8 @@ const Case kCases[] = {
          glVertex3f(0.5f, -0.5f, -3.0f);
          glEnd();
      }},
-    {"no area: a hit without culling, none with it", [] {
+    {"no area: a hit without culling, none with it",
+     [] {
          glLoadName(5);
          glBegin(GL_TRIANGLES);
          glVertex3f(-0.5f, -0.5f, -2.0f);
@@ -91,7 +101,8 @@ const Case kCases[] = {
          glVertex3f(0.5f, 0.5f, -2.5f);
          glEnd();
      }},
-    {"points at the far and near planes (depth 1 wraps to 0)", [] {
+    {"points at the far and near planes (depth 1 wraps to 0)",
+     [] {
          glLoadName(7);
          glBegin(GL_POINTS);
          glVertex3f(0.0f, 0.0f, -10.0f);
@@ -103,7 +114,8 @@ const Case kCases[] = {
          glVertex3f(0.1f, 0.0f, -2.5f);
          glEnd();
      }},
-    {"lines and strips, clipped", [] {
+    {"lines and strips, clipped",
+     [] {
          glLoadName(9);
          glBegin(GL_LINES);
          glVertex3f(-5.0f, 0.0f, -2.0f);
@@ -116,7 +128,8 @@ const Case kCases[] = {
          glVertex3f(0.0f, 0.7f, -12.0f);
          glEnd();
      }},
-    {"quads, strips and fans under a rotation", [] {
+    {"quads, strips and fans under a rotation",
+     [] {
          glRotatef(30.0f, 0.3f, 1.0f, 0.2f);
          glLoadName(11);
          glBegin(GL_QUADS);
@@ -127,26 +140,31 @@ const Case kCases[] = {
          glEnd();
          glLoadName(12);
          glBegin(GL_TRIANGLE_FAN);
-         for (int i = 0; i < 8; ++i) glVertex3f(0.3f * static_cast<float>(i % 3), 0.2f * static_cast<float>(i), -2.0f - 0.7f * static_cast<float>(i));
+         for (int i = 0; i < 8; ++i)
+             glVertex3f(0.3f * static_cast<float>(i % 3), 0.2f * static_cast<float>(i),
+                        -2.0f - 0.7f * static_cast<float>(i));
          glEnd();
      }},
-    {"raster positions: a valid one hits, an invalid one does not", [] {
+    {"raster positions: a valid one hits, an invalid one does not",
+     [] {
          glLoadName(13);
          glRasterPos3f(0.0f, 0.0f, -3.0f);
          glLoadName(14);
          glRasterPos3f(50.0f, 0.0f, -3.0f);
      }},
-    {"nested names, then popped past the bottom", [] {
+    {"nested names, then popped past the bottom",
+     [] {
          glPushName(15);
          glPushName(16);
          triangle(-2.0f);
          glPopName();
          glPopName();
          glPopName();
-         glPopName();  // GL_STACK_UNDERFLOW
+         glPopName();    // GL_STACK_UNDERFLOW
          glLoadName(3);  // GL_INVALID_OPERATION: the stack is empty
      }},
-    {"no hit at all", [] {
+    {"no hit at all",
+     [] {
          glLoadName(17);
          glBegin(GL_TRIANGLES);
          glVertex3f(5.0f, 5.0f, -2.0f);

@@ -96,20 +96,24 @@ std::vector<Variant> variants() {
         {"blend", blendOver},
         {"flat blend", [] { blendOver(), glShadeModel(GL_FLAT); }},
         {"depth", [] { glEnable(GL_DEPTH_TEST); }},
-        {"depth blend additive", [] {
+        {"depth blend additive",
+         [] {
              glEnable(GL_DEPTH_TEST);
              glEnable(GL_BLEND);
              glBlendFunc(GL_SRC_ALPHA, GL_ONE);
          }},
-        {"alpha test", [] {
+        {"alpha test",
+         [] {
              glEnable(GL_ALPHA_TEST);
              glAlphaFunc(GL_GREATER, 0.4f);
          }},
-        {"scissor", [] {
+        {"scissor",
+         [] {
              glEnable(GL_SCISSOR_TEST);
              glScissor(7, 5, 31, 22);
          }},
-        {"fog", [] {
+        {"fog",
+         [] {
              blendOver();
              glEnable(GL_FOG);
              glFogi(GL_FOG_MODE, GL_LINEAR);
@@ -123,7 +127,8 @@ std::vector<Variant> variants() {
         textured("texture replace intensity", GL_INTENSITY, GL_REPLACE),
         textured("texture decal", GL_RGBA, GL_DECAL),
         textured("texture blend", GL_LUMINANCE_ALPHA, GL_BLEND),
-        {"lighting", [] {
+        {"lighting",
+         [] {
              glEnable(GL_LIGHTING);
              glEnable(GL_LIGHT0);
          }},
@@ -180,7 +185,8 @@ TEST(SmoothPointsAndLines, CoverageBlendsTheEdges) {
 
 TEST(SmoothPointsAndLines, PerspectiveStipplePolygonModesAndLoopsMatchTheReference) {
     const std::vector<std::pair<std::string, std::function<void()>>> cases = {
-        {"perspective", [] {
+        {"perspective",
+         [] {
              glMatrixMode(GL_PROJECTION);
              glLoadIdentity();
              glFrustum(-1, 1, -0.75, 0.75, 1, 10);
@@ -195,7 +201,8 @@ TEST(SmoothPointsAndLines, PerspectiveStipplePolygonModesAndLoopsMatchTheReferen
              randomPrimitives(GL_LINE_LOOP, 3);
              randomPrimitives(GL_POINTS, 4);
          }},
-        {"stipple", [] {
+        {"stipple",
+         [] {
              glEnable(GL_LINE_SMOOTH);
              glEnable(GL_LINE_STIPPLE);
              glLineStipple(2, 0x0F3F);
@@ -206,18 +213,21 @@ TEST(SmoothPointsAndLines, PerspectiveStipplePolygonModesAndLoopsMatchTheReferen
         // One unfilled mode a draw: with GL_LINE and GL_POINT faces in one draw, the reference's
         // first smooth primitive binds its coverage shader for the rest of the draw
         // (docs/reference-rules.md, not reproduced).
-        {"polygon mode line", [] {
+        {"polygon mode line",
+         [] {
              glEnable(GL_LINE_SMOOTH);
              glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
              randomPrimitives(GL_TRIANGLES, 7);
          }},
-        {"polygon mode point", [] {
+        {"polygon mode point",
+         [] {
              glEnable(GL_POINT_SMOOTH);
              glPointSize(4.0f);
              glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
              randomPrimitives(GL_TRIANGLES, 7);
          }},
-        {"zero length and axis-aligned", [] {
+        {"zero length and axis-aligned",
+         [] {
              glEnable(GL_LINE_SMOOTH);
              glBegin(GL_LINES);
              glVertex2f(5, 5), glVertex2f(5, 5);

@@ -67,10 +67,13 @@ TEST(StatsCrossCheck, TrianglesThatProduceFragmentsMatchOcclusionQueries) {
         {
             reference::OsmesaContext context(64, 64);
             context.makeCurrent();
-            const auto genQueries = reinterpret_cast<GenQueries>(reference::OsmesaContext::getProcAddress("glGenQueries"));
-            const auto beginQuery = reinterpret_cast<BeginQuery>(reference::OsmesaContext::getProcAddress("glBeginQuery"));
+            const auto genQueries =
+                reinterpret_cast<GenQueries>(reference::OsmesaContext::getProcAddress("glGenQueries"));
+            const auto beginQuery =
+                reinterpret_cast<BeginQuery>(reference::OsmesaContext::getProcAddress("glBeginQuery"));
             const auto endQuery = reinterpret_cast<EndQuery>(reference::OsmesaContext::getProcAddress("glEndQuery"));
-            const auto queryResult = reinterpret_cast<GetQueryObjectuiv>(reference::OsmesaContext::getProcAddress("glGetQueryObjectuiv"));
+            const auto queryResult =
+                reinterpret_cast<GetQueryObjectuiv>(reference::OsmesaContext::getProcAddress("glGetQueryObjectuiv"));
             ASSERT_TRUE(genQueries && beginQuery && endQuery && queryResult);
             GLuint query = 0;
             genQueries(1, &query);
@@ -94,8 +97,9 @@ TEST(StatsCrossCheck, TrianglesThatProduceFragmentsMatchOcclusionQueries) {
                 const mygl::Stats drawn = context.stats() - before;
                 ours.push_back(drawn.fragments > 0);
                 EXPECT_EQ(drawn.triangles, 1u);
-                EXPECT_EQ(drawn.triangles + drawn.clipCreated,
-                          drawn.clippedAway + drawn.culledBack + drawn.culledFront + drawn.culledZeroArea + drawn.rasterized);
+                EXPECT_EQ(
+                    drawn.triangles + drawn.clipCreated,
+                    drawn.clippedAway + drawn.culledBack + drawn.culledFront + drawn.culledZeroArea + drawn.rasterized);
                 if (drawn.rasterized == 0) {
                     EXPECT_EQ(drawn.fragments, 0u);
                 }
@@ -125,7 +129,8 @@ TEST(Stats, CountsResetAtClearAndAddUpForAScene) {
     glTranslatef(0, 0, -4);
     glRotatef(30, 1, 1, 0);
     glBegin(GL_QUADS);  // a cube: 6 quads, 12 triangles, half of them facing away
-    const float c[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+    const float c[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                           {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
     const int faces[6][4] = {{4, 5, 6, 7}, {1, 0, 3, 2}, {5, 1, 2, 6}, {0, 4, 7, 3}, {7, 6, 2, 3}, {0, 1, 5, 4}};
     for (const auto& f : faces)
         for (int i : f) glVertex3fv(c[i]);

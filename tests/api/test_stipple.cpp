@@ -44,7 +44,8 @@ void perspectiveView() {
 
 int litPixels(const Frame& f) {
     int lit = 0;
-    for (std::size_t p = 0; p < f.color.size(); p += 4) lit += f.color[p] != 0 || f.color[p + 1] != 0 || f.color[p + 2] != 0;
+    for (std::size_t p = 0; p < f.color.size(); p += 4)
+        lit += f.color[p] != 0 || f.color[p + 1] != 0 || f.color[p + 2] != 0;
     return lit;
 }
 
@@ -81,7 +82,8 @@ std::array<GLubyte, 128> randomPattern(unsigned seed) {
     std::array<GLubyte, 128> bytes{};
     std::mt19937 random(seed);
     for (GLubyte& b : bytes) b = static_cast<GLubyte>(random() & 0xFF);
-    for (int i = 0; i < 4; ++i) bytes[static_cast<std::size_t>(8 + i)] = 0xFF, bytes[static_cast<std::size_t>(20 + i)] = 0;
+    for (int i = 0; i < 4; ++i)
+        bytes[static_cast<std::size_t>(8 + i)] = 0xFF, bytes[static_cast<std::size_t>(20 + i)] = 0;
     return bytes;
 }
 
@@ -126,20 +128,22 @@ TEST(LineStipple, PatternsFactorsAndModesMatchTheReference) {
 }
 
 TEST(LineStipple, CutsLinesIntoFewerPixels) {
-    const auto frames = onBothBackends<std::array<int, 2>>([] {
-        std::array<int, 2> lit{};
-        for (int stippled = 0; stippled < 2; ++stippled) {
-            clear();
-            orthoView();
-            if (stippled) glEnable(GL_LINE_STIPPLE);
-            glLineStipple(2, 0x0F0F);
-            glBegin(GL_LINE_STRIP);
-            glVertex2f(3.5f, 4.5f), glVertex2f(70.5f, 30.5f), glVertex2f(10.5f, 55.5f);
-            glEnd();
-            lit[static_cast<std::size_t>(stippled)] = litPixels(readFrame(kWidth, kHeight));
-        }
-        return lit;
-    }, kWidth, kHeight);
+    const auto frames = onBothBackends<std::array<int, 2>>(
+        [] {
+            std::array<int, 2> lit{};
+            for (int stippled = 0; stippled < 2; ++stippled) {
+                clear();
+                orthoView();
+                if (stippled) glEnable(GL_LINE_STIPPLE);
+                glLineStipple(2, 0x0F0F);
+                glBegin(GL_LINE_STRIP);
+                glVertex2f(3.5f, 4.5f), glVertex2f(70.5f, 30.5f), glVertex2f(10.5f, 55.5f);
+                glEnd();
+                lit[static_cast<std::size_t>(stippled)] = litPixels(readFrame(kWidth, kHeight));
+            }
+            return lit;
+        },
+        kWidth, kHeight);
     EXPECT_EQ(frames.mygl, frames.osmesa);
     EXPECT_LT(frames.mygl[1], frames.mygl[0] * 3 / 4);  // a half-on pattern drops about half
 }
@@ -147,19 +151,21 @@ TEST(LineStipple, CutsLinesIntoFewerPixels) {
 // A strip whose first segment is clipped away never restarts the counter: the reference's stage
 // keeps counting from the draw before (here a GL_LINES line of 37 pixels).
 TEST(LineStipple, AStripWhoseFirstSegmentIsClippedAwayContinuesTheCounter) {
-    const auto frames = onBothBackends<Frame>([] {
-        clear();
-        orthoView();
-        glEnable(GL_LINE_STIPPLE);
-        glLineStipple(2, 0x0F3F);
-        glBegin(GL_LINES);
-        glVertex2f(2.5f, 5.5f), glVertex2f(39.5f, 5.5f);
-        glEnd();
-        glBegin(GL_LINE_STRIP);
-        glVertex2f(-50.0f, -40.0f), glVertex2f(-10.0f, -30.0f), glVertex2f(5.5f, 20.5f), glVertex2f(80.5f, 50.5f);
-        glEnd();
-        return readFrame(kWidth, kHeight);
-    }, kWidth, kHeight);
+    const auto frames = onBothBackends<Frame>(
+        [] {
+            clear();
+            orthoView();
+            glEnable(GL_LINE_STIPPLE);
+            glLineStipple(2, 0x0F3F);
+            glBegin(GL_LINES);
+            glVertex2f(2.5f, 5.5f), glVertex2f(39.5f, 5.5f);
+            glEnd();
+            glBegin(GL_LINE_STRIP);
+            glVertex2f(-50.0f, -40.0f), glVertex2f(-10.0f, -30.0f), glVertex2f(5.5f, 20.5f), glVertex2f(80.5f, 50.5f);
+            glEnd();
+            return readFrame(kWidth, kHeight);
+        },
+        kWidth, kHeight);
     EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0);
 }
 
@@ -168,23 +174,25 @@ TEST(LineStipple, AStripWhoseFirstSegmentIsClippedAwayContinuesTheCounter) {
 TEST(LineStipple, PolygonEdgesInLineModeMatchTheReference) {
     for (GLenum mode : {GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON}) {
         for (GLint factor : {1, 3}) {
-            const auto frames = onBothBackends<Frame>([&] {
-                clear();
-                perspectiveView();
-                glEnable(GL_LINE_STIPPLE);
-                glLineStipple(factor, 0x3F07);
-                glPolygonMode(GL_FRONT, GL_LINE);
-                glPolygonMode(GL_BACK, GL_FILL);
-                std::mt19937 random(static_cast<unsigned>(mode) * 7u + static_cast<unsigned>(factor));
-                std::uniform_real_distribution<float> xy(-4.5f, 4.5f), z(-6.0f, -1.5f), c(0.2f, 1.0f);
-                glBegin(mode);
-                for (int i = 0; i < 12; ++i) {
-                    glColor3f(c(random), c(random), c(random));
-                    glVertex3f(xy(random), xy(random), z(random));
-                }
-                glEnd();
-                return readFrame(kWidth, kHeight);
-            }, kWidth, kHeight);
+            const auto frames = onBothBackends<Frame>(
+                [&] {
+                    clear();
+                    perspectiveView();
+                    glEnable(GL_LINE_STIPPLE);
+                    glLineStipple(factor, 0x3F07);
+                    glPolygonMode(GL_FRONT, GL_LINE);
+                    glPolygonMode(GL_BACK, GL_FILL);
+                    std::mt19937 random(static_cast<unsigned>(mode) * 7u + static_cast<unsigned>(factor));
+                    std::uniform_real_distribution<float> xy(-4.5f, 4.5f), z(-6.0f, -1.5f), c(0.2f, 1.0f);
+                    glBegin(mode);
+                    for (int i = 0; i < 12; ++i) {
+                        glColor3f(c(random), c(random), c(random));
+                        glVertex3f(xy(random), xy(random), z(random));
+                    }
+                    glEnd();
+                    return readFrame(kWidth, kHeight);
+                },
+                kWidth, kHeight);
             EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0) << "mode " << mode << " factor " << factor;
         }
     }
@@ -201,32 +209,34 @@ TEST(PolygonStipple, PatternsAndUnpackModesMatchTheReference) {
     const Unpack unpacks[] = {{4, 0, 0, 0, false}, {4, 0, 0, 0, true}, {1, 40, 8, 2, false}, {8, 48, 16, 1, true}};
     for (const Unpack& u : unpacks) {
         for (unsigned seed : {1u, 2u}) {
-            const auto frames = onBothBackends<Frame>([&] {
-                clear();
-                orthoView();
-                std::vector<GLubyte> memory(64 * 40, 0);
-                std::mt19937 random(seed);
-                for (GLubyte& b : memory) b = static_cast<GLubyte>(random() & 0xFF);
-                glPixelStorei(GL_UNPACK_ALIGNMENT, u.alignment);
-                glPixelStorei(GL_UNPACK_ROW_LENGTH, u.rowLength);
-                glPixelStorei(GL_UNPACK_SKIP_PIXELS, u.skipPixels);
-                glPixelStorei(GL_UNPACK_SKIP_ROWS, u.skipRows);
-                glPixelStorei(GL_UNPACK_LSB_FIRST, u.lsbFirst);
-                glPolygonStipple(memory.data());
-                glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-                glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-                glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-                stippledPolygons();
-                // Lines and points of polygons are not stippled, nor are lines and points.
-                glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-                glBegin(GL_TRIANGLES);
-                glVertex2f(5, 50), glVertex2f(30, 45), glVertex2f(12, 30);
-                glEnd();
-                glBegin(GL_LINES);
-                glVertex2f(0.5f, 1.5f), glVertex2f(80.5f, 1.5f);
-                glEnd();
-                return readFrame(kWidth, kHeight);
-            }, kWidth, kHeight);
+            const auto frames = onBothBackends<Frame>(
+                [&] {
+                    clear();
+                    orthoView();
+                    std::vector<GLubyte> memory(64 * 40, 0);
+                    std::mt19937 random(seed);
+                    for (GLubyte& b : memory) b = static_cast<GLubyte>(random() & 0xFF);
+                    glPixelStorei(GL_UNPACK_ALIGNMENT, u.alignment);
+                    glPixelStorei(GL_UNPACK_ROW_LENGTH, u.rowLength);
+                    glPixelStorei(GL_UNPACK_SKIP_PIXELS, u.skipPixels);
+                    glPixelStorei(GL_UNPACK_SKIP_ROWS, u.skipRows);
+                    glPixelStorei(GL_UNPACK_LSB_FIRST, u.lsbFirst);
+                    glPolygonStipple(memory.data());
+                    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+                    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+                    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+                    stippledPolygons();
+                    // Lines and points of polygons are not stippled, nor are lines and points.
+                    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+                    glBegin(GL_TRIANGLES);
+                    glVertex2f(5, 50), glVertex2f(30, 45), glVertex2f(12, 30);
+                    glEnd();
+                    glBegin(GL_LINES);
+                    glVertex2f(0.5f, 1.5f), glVertex2f(80.5f, 1.5f);
+                    glEnd();
+                    return readFrame(kWidth, kHeight);
+                },
+                kWidth, kHeight);
             EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0)
                 << "alignment " << u.alignment << " lsb " << u.lsbFirst << " seed " << seed;
         }
@@ -234,25 +244,27 @@ TEST(PolygonStipple, PatternsAndUnpackModesMatchTheReference) {
 }
 
 TEST(PolygonStipple, DisplayListsKeepThePatternOfTheirCompilation) {
-    const auto frames = onBothBackends<Frame>([] {
-        clear();
-        orthoView();
-        const std::array<GLubyte, 128> first = randomPattern(5), second = randomPattern(6);
-        const GLuint list = glGenLists(1);
-        glNewList(list, GL_COMPILE);
-        glPolygonStipple(first.data());
-        glLineStipple(3, 0x0F33);
-        glEndList();
-        glPolygonStipple(second.data());
-        glCallList(list);
-        stippledPolygons();
-        glEnable(GL_LINE_STIPPLE);
-        glBegin(GL_LINE_LOOP);
-        glColor3f(1, 1, 1), glVertex2f(3, 3), glVertex2f(79, 5), glVertex2f(60, 58);
-        glEnd();
-        glDeleteLists(list, 1);
-        return readFrame(kWidth, kHeight);
-    }, kWidth, kHeight);
+    const auto frames = onBothBackends<Frame>(
+        [] {
+            clear();
+            orthoView();
+            const std::array<GLubyte, 128> first = randomPattern(5), second = randomPattern(6);
+            const GLuint list = glGenLists(1);
+            glNewList(list, GL_COMPILE);
+            glPolygonStipple(first.data());
+            glLineStipple(3, 0x0F33);
+            glEndList();
+            glPolygonStipple(second.data());
+            glCallList(list);
+            stippledPolygons();
+            glEnable(GL_LINE_STIPPLE);
+            glBegin(GL_LINE_LOOP);
+            glColor3f(1, 1, 1), glVertex2f(3, 3), glVertex2f(79, 5), glVertex2f(60, 58);
+            glEnd();
+            glDeleteLists(list, 1);
+            return readFrame(kWidth, kHeight);
+        },
+        kWidth, kHeight);
     EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0);
 }
 

@@ -30,10 +30,9 @@ std::vector<GLubyte> image(int width, int height, int components, int level) {
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const bool check = (x + y) % 2 == 0;
-            const GLubyte bytes[4] = {static_cast<GLubyte>(check ? 220 : 25 + 23 * x),
-                                      static_cast<GLubyte>(250 * y / std::max(height, 1)),
-                                      static_cast<GLubyte>(35 * level + 7 * x),
-                                      static_cast<GLubyte>(check ? 255 : 70 + 13 * y)};
+            const GLubyte bytes[4] = {
+                static_cast<GLubyte>(check ? 220 : 25 + 23 * x), static_cast<GLubyte>(250 * y / std::max(height, 1)),
+                static_cast<GLubyte>(35 * level + 7 * x), static_cast<GLubyte>(check ? 255 : 70 + 13 * y)};
             texels.insert(texels.end(), bytes, bytes + components);
         }
     }
@@ -86,8 +85,10 @@ Frame drawClamped(const ClampCase& c) {
     glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, envColor);
     glEnable(target);
     glBegin(GL_QUADS);
-    const float corners[4][5] = {{-2.0f, -1.0f, -1.5f, -0.4f, -0.3f}, {2.0f, -1.0f, -1.5f, 1.5f, -0.3f},
-                                 {2.0f, -1.0f, -30.0f, 1.5f, 5.0f}, {-2.0f, -1.0f, -30.0f, -0.4f, 5.0f}};
+    const float corners[4][5] = {{-2.0f, -1.0f, -1.5f, -0.4f, -0.3f},
+                                 {2.0f, -1.0f, -1.5f, 1.5f, -0.3f},
+                                 {2.0f, -1.0f, -30.0f, 1.5f, 5.0f},
+                                 {-2.0f, -1.0f, -30.0f, -0.4f, 5.0f}};
     for (int i = 0; i < 4; ++i) {
         glColor4f(0.5f + 0.15f * float(i), 1.0f - 0.2f * float(i), 0.6f, 0.9f);
         glTexCoord2f(corners[i][3], corners[i][4]);
@@ -116,8 +117,12 @@ void expectIdentical(const ClampCase& c) {
 }
 
 TEST(TextureClamp, EveryFilterPairBlendsTheBorder) {
-    const GLenum minFilters[] = {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
-                                 GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
+    const GLenum minFilters[] = {GL_NEAREST,
+                                 GL_LINEAR,
+                                 GL_NEAREST_MIPMAP_NEAREST,
+                                 GL_LINEAR_MIPMAP_NEAREST,
+                                 GL_NEAREST_MIPMAP_LINEAR,
+                                 GL_LINEAR_MIPMAP_LINEAR};
     for (const GLenum minFilter : minFilters) {
         for (const GLenum magFilter : {GL_NEAREST, GL_LINEAR}) {
             ClampCase c;
@@ -128,8 +133,8 @@ TEST(TextureClamp, EveryFilterPairBlendsTheBorder) {
 }
 
 TEST(TextureClamp, BorderColoursAndEnvironments) {
-    const std::array<GLfloat, 4> borders[] = {{0.0f, 0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f, 1.0f},
-                                              {0.25f, 0.5f, 0.75f, 0.1f}, {1.5f, -0.2f, 0.333f, 2.0f}};
+    const std::array<GLfloat, 4> borders[] = {
+        {0.0f, 0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f, 1.0f}, {0.25f, 0.5f, 0.75f, 0.1f}, {1.5f, -0.2f, 0.333f, 2.0f}};
     for (const auto& border : borders) {
         for (const GLenum env : {GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND, GL_ADD}) {
             ClampCase c;
@@ -145,9 +150,12 @@ TEST(TextureClamp, BaseFormatsTakeTheBorderAsTheirs) {
         GLenum format;
         int components;
     };
-    const Format formats[] = {{GL_ALPHA, GL_ALPHA, 1},         {GL_LUMINANCE, GL_LUMINANCE, 1},
-                              {GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, 2}, {GL_INTENSITY, GL_LUMINANCE, 1},
-                              {GL_RGB, GL_RGB, 3},             {GL_RGBA, GL_RGBA, 4}};
+    const Format formats[] = {{GL_ALPHA, GL_ALPHA, 1},
+                              {GL_LUMINANCE, GL_LUMINANCE, 1},
+                              {GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, 2},
+                              {GL_INTENSITY, GL_LUMINANCE, 1},
+                              {GL_RGB, GL_RGB, 3},
+                              {GL_RGBA, GL_RGBA, 4}};
     for (const Format& f : formats) {
         for (const GLenum env : {GL_MODULATE, GL_REPLACE, GL_BLEND}) {
             ClampCase c;

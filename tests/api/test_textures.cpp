@@ -33,10 +33,9 @@ std::vector<GLubyte> pattern(int width, int height, int components) {
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const bool check = ((x / 2) + (y / 2)) % 2 == 0;
-            const GLubyte bytes[4] = {static_cast<GLubyte>(check ? 230 : 20 + 9 * x),
-                                      static_cast<GLubyte>(255 * y / std::max(height - 1, 1)),
-                                      static_cast<GLubyte>((x * 37 + y * 91) % 256),
-                                      static_cast<GLubyte>(check ? 255 : 60 + 11 * y)};
+            const GLubyte bytes[4] = {
+                static_cast<GLubyte>(check ? 230 : 20 + 9 * x), static_cast<GLubyte>(255 * y / std::max(height - 1, 1)),
+                static_cast<GLubyte>((x * 37 + y * 91) % 256), static_cast<GLubyte>(check ? 255 : 60 + 11 * y)};
             texels.insert(texels.end(), bytes, bytes + components);
         }
     }
@@ -139,9 +138,15 @@ TEST(Textures, FormatsAcrossEnvironments) {
         GLenum format;
         int components;
     };
-    const Format formats[] = {{GL_RGB, GL_RGB, 3},        {GL_RGBA8, GL_RGBA, 4},  {GL_LUMINANCE, GL_LUMINANCE, 1},
-                              {1, GL_LUMINANCE, 1},        {GL_ALPHA, GL_ALPHA, 1}, {GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, 2},
-                              {GL_INTENSITY, GL_LUMINANCE, 1}, {3, GL_RGBA, 4},     {GL_RGB8, GL_RGB, 3}};
+    const Format formats[] = {{GL_RGB, GL_RGB, 3},
+                              {GL_RGBA8, GL_RGBA, 4},
+                              {GL_LUMINANCE, GL_LUMINANCE, 1},
+                              {1, GL_LUMINANCE, 1},
+                              {GL_ALPHA, GL_ALPHA, 1},
+                              {GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, 2},
+                              {GL_INTENSITY, GL_LUMINANCE, 1},
+                              {3, GL_RGBA, 4},
+                              {GL_RGB8, GL_RGB, 3}};
     for (const Format& f : formats) {
         for (const GLenum env : {GL_MODULATE, GL_REPLACE, GL_DECAL, GL_BLEND, GL_ADD}) {
             expectIdentical({GL_NEAREST, GL_NEAREST, GL_REPEAT, env, f.internal, f.format, f.components, 8, 8});
@@ -199,8 +204,12 @@ Frame drawMipmappedFloor(GLenum minFilter, GLenum magFilter, GLenum wrap, int si
 }
 
 TEST(Textures, MipmappedFloorAcrossFilters) {
-    const GLenum minFilters[] = {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
-                                 GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
+    const GLenum minFilters[] = {GL_NEAREST,
+                                 GL_LINEAR,
+                                 GL_NEAREST_MIPMAP_NEAREST,
+                                 GL_LINEAR_MIPMAP_NEAREST,
+                                 GL_NEAREST_MIPMAP_LINEAR,
+                                 GL_LINEAR_MIPMAP_LINEAR};
     for (const GLenum minFilter : minFilters) {
         for (const GLenum magFilter : {GL_NEAREST, GL_LINEAR}) {
             for (const float repeat : {0.5f, 3.0f}) {
@@ -400,9 +409,9 @@ std::vector<double> textureQueries() {
     integers(GL_TEXTURE_BINDING_2D, 1);
     const std::vector<GLubyte> image = pattern(4, 2, 4);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, 4, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
-    for (const GLenum name : {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER, GL_TEXTURE_INTERNAL_FORMAT,
-                              GL_TEXTURE_RED_SIZE, GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE,
-                              GL_TEXTURE_INTENSITY_SIZE}) {
+    for (const GLenum name :
+         {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER, GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_RED_SIZE,
+          GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE, GL_TEXTURE_INTENSITY_SIZE}) {
         GLint v = -1;
         glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, name, &v);
         values.push_back(v);
@@ -498,7 +507,11 @@ std::vector<GLenum> textureErrors() {
     after([&] { glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_DECAL); });
     after([&] { glGenTextures(-1, nullptr); });
     after([&] { glDeleteTextures(-1, nullptr); });
-    after([&] { glBindTexture(GL_TEXTURE_1D, 0); glBindTexture(GL_TEXTURE_2D, 5); glBindTexture(GL_TEXTURE_1D, 5); });
+    after([&] {
+        glBindTexture(GL_TEXTURE_1D, 0);
+        glBindTexture(GL_TEXTURE_2D, 5);
+        glBindTexture(GL_TEXTURE_1D, 5);
+    });
     after([&] { glBindTexture(GL_CLAMP, 0); });
     after([&] { glPixelStorei(GL_UNPACK_ROW_LENGTH, -1); });
     after([&] { glPixelStorei(GL_UNPACK_ALIGNMENT, 3); });

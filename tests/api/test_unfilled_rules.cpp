@@ -59,15 +59,17 @@ TEST(UnfilledRules, AFalseCurrentEdgeFlagCullsTheUnfilledFaces) {
     for (GLenum front : kModes) {
         for (GLenum back : kModes) {
             for (int edgeFlagInside : {-1, 0, 1}) {
-                const auto frames = onBothBackends<Frame>([&] {
-                    clearWithDepth();
-                    cutByAPlane();
-                    glPolygonMode(GL_FRONT, front);
-                    glPolygonMode(GL_BACK, back);
-                    glEdgeFlag(GL_FALSE);  // the current flag, before the block
-                    drawTriangles(7, edgeFlagInside);
-                    return readFrame(kWidth, kHeight);
-                }, kWidth, kHeight);
+                const auto frames = onBothBackends<Frame>(
+                    [&] {
+                        clearWithDepth();
+                        cutByAPlane();
+                        glPolygonMode(GL_FRONT, front);
+                        glPolygonMode(GL_BACK, back);
+                        glEdgeFlag(GL_FALSE);  // the current flag, before the block
+                        drawTriangles(7, edgeFlagInside);
+                        return readFrame(kWidth, kHeight);
+                    },
+                    kWidth, kHeight);
                 EXPECT_EQ(frames.mygl, frames.osmesa) << "front " << modeName(front) << ", back " << modeName(back)
                                                       << ", edge flag inside the block " << edgeFlagInside;
             }
@@ -86,35 +88,39 @@ TEST(UnfilledRules, TheOffsetStageDecidesAtTheDrawsFirstTriangle) {
     for (GLenum enable : enables) {
         for (GLenum front : unfilled) {
             for (GLenum back : unfilled) {
-                const auto frames = onBothBackends<Frame>([&] {
-                    clearWithDepth();
-                    glDepthFunc(GL_LEQUAL);
-                    glPolygonMode(GL_FRONT, front);
-                    glPolygonMode(GL_BACK, back);
-                    drawTriangles(11, -1);
-                    glEnable(enable);
-                    glPolygonOffset(-2.0f, -40.0f);
-                    glColor3f(1, 1, 1);
-                    drawTriangles(11, -1);
-                    return readFrame(kWidth, kHeight);
-                }, kWidth, kHeight);
+                const auto frames = onBothBackends<Frame>(
+                    [&] {
+                        clearWithDepth();
+                        glDepthFunc(GL_LEQUAL);
+                        glPolygonMode(GL_FRONT, front);
+                        glPolygonMode(GL_BACK, back);
+                        drawTriangles(11, -1);
+                        glEnable(enable);
+                        glPolygonOffset(-2.0f, -40.0f);
+                        glColor3f(1, 1, 1);
+                        drawTriangles(11, -1);
+                        return readFrame(kWidth, kHeight);
+                    },
+                    kWidth, kHeight);
                 EXPECT_EQ(frames.mygl, frames.osmesa) << "enable 0x" << std::hex << enable << std::dec << ", front "
                                                       << modeName(front) << ", back " << modeName(back);
             }
         }
     }
     // Points of a strip through w = 0 (infinite slopes) under an offset of the filled mode only.
-    const auto frames = onBothBackends<Frame>([&] {
-        clearWithDepth();
-        glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glBegin(GL_TRIANGLE_STRIP);
-        glVertex4d(0.0, 0.0, 1.4170115730883901, 1.4165638563508203);
-        glVertex4d(0.0, 0.0, 1.0, 1.0);
-        glVertex4d(1.0, 0.0, 0.0, 0.0);
-        glEnd();
-        return readFrame(kWidth, kHeight);
-    }, kWidth, kHeight);
+    const auto frames = onBothBackends<Frame>(
+        [&] {
+            clearWithDepth();
+            glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glBegin(GL_TRIANGLE_STRIP);
+            glVertex4d(0.0, 0.0, 1.4170115730883901, 1.4165638563508203);
+            glVertex4d(0.0, 0.0, 1.0, 1.0);
+            glVertex4d(1.0, 0.0, 0.0, 0.0);
+            glEnd();
+            return readFrame(kWidth, kHeight);
+        },
+        kWidth, kHeight);
     EXPECT_EQ(frames.mygl, frames.osmesa) << "points through w = 0";
 }
 
@@ -123,21 +129,23 @@ TEST(UnfilledRules, TheOffsetStageDecidesAtTheDrawsFirstTriangle) {
 TEST(UnfilledRules, TwoSidedColoursInUnfilledDraws) {
     for (GLenum front : kModes) {
         for (GLenum back : kModes) {
-            const auto frames = onBothBackends<Frame>([&] {
-                clearWithDepth();
-                const GLfloat backDiffuse[] = {0.0f, 0.5f, 1.0f, 1.0f}, frontDiffuse[] = {1.0f, 0.5f, 0.0f, 1.0f};
-                glMaterialfv(GL_BACK, GL_DIFFUSE, backDiffuse);
-                glMaterialfv(GL_FRONT, GL_DIFFUSE, frontDiffuse);
-                glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
-                glEnable(GL_LIGHTING);
-                glEnable(GL_LIGHT0);
-                glPolygonMode(GL_FRONT, front);
-                glPolygonMode(GL_BACK, back);
-                glNormal3f(0.3f, 0.2f, -0.9f);
-                cutByAPlane();
-                drawTriangles(5, -1);
-                return readFrame(kWidth, kHeight);
-            }, kWidth, kHeight);
+            const auto frames = onBothBackends<Frame>(
+                [&] {
+                    clearWithDepth();
+                    const GLfloat backDiffuse[] = {0.0f, 0.5f, 1.0f, 1.0f}, frontDiffuse[] = {1.0f, 0.5f, 0.0f, 1.0f};
+                    glMaterialfv(GL_BACK, GL_DIFFUSE, backDiffuse);
+                    glMaterialfv(GL_FRONT, GL_DIFFUSE, frontDiffuse);
+                    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+                    glEnable(GL_LIGHTING);
+                    glEnable(GL_LIGHT0);
+                    glPolygonMode(GL_FRONT, front);
+                    glPolygonMode(GL_BACK, back);
+                    glNormal3f(0.3f, 0.2f, -0.9f);
+                    cutByAPlane();
+                    drawTriangles(5, -1);
+                    return readFrame(kWidth, kHeight);
+                },
+                kWidth, kHeight);
             EXPECT_EQ(frames.mygl, frames.osmesa) << "front " << modeName(front) << ", back " << modeName(back);
         }
     }

@@ -30,8 +30,8 @@ void perspectiveView() {
 
 // A cube's 8 corners with a colour each, and its faces as quads and as triangles.
 const GLfloat kCorners[8 * 3] = {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1};
-const GLubyte kCornerColors[8 * 4] = {255, 0, 0, 255,   0, 255, 0, 255,   0, 0, 255, 255,   255, 255, 0, 255,
-                                      255, 0, 255, 255, 0, 255, 255, 255, 128, 128, 128, 255, 30, 200, 90, 255};
+const GLubyte kCornerColors[8 * 4] = {255, 0, 0,   255, 0, 255, 0,   255, 0,   0,   255, 255, 255, 255, 0,  255,
+                                      255, 0, 255, 255, 0, 255, 255, 255, 128, 128, 128, 255, 30,  200, 90, 255};
 const GLushort kQuadIndices[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 2, 3, 7, 6, 1, 2, 6, 5, 0, 4, 7, 3};
 
 // An interleaved layout as programs write it: a struct per vertex.
@@ -62,14 +62,21 @@ TEST(VertexArrays, DrawArraysAndDrawElementsOfEveryModeMatchTheReference) {
         {"quads by index", [] { glDrawElements(GL_QUADS, 24, GL_UNSIGNED_SHORT, kQuadIndices); }},
         {"quads", [&] { glDrawArrays(GL_QUADS, 0, static_cast<GLsizei>(strip.size())); }},
         {"triangle strip", [&] { glDrawArrays(GL_TRIANGLE_STRIP, 0, static_cast<GLsizei>(strip.size())); }},
-        {"quad strip from the third vertex", [&] { glDrawArrays(GL_QUAD_STRIP, 2, static_cast<GLsizei>(strip.size()) - 2); }},
+        {"quad strip from the third vertex",
+         [&] { glDrawArrays(GL_QUAD_STRIP, 2, static_cast<GLsizei>(strip.size()) - 2); }},
         {"line loop", [&] { glDrawArrays(GL_LINE_LOOP, 0, 9); }},
-        {"points", [&] { glPointSize(2); glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(strip.size())); }},
-        {"triangles by byte index", [] {
+        {"points",
+         [&] {
+             glPointSize(2);
+             glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(strip.size()));
+         }},
+        {"triangles by byte index",
+         [] {
              const GLubyte indices[] = {0, 1, 2, 2, 3, 0, 4, 6, 5};
              glDrawElements(GL_TRIANGLES, 9, GL_UNSIGNED_BYTE, indices);
          }},
-        {"polygon by int index", [] {
+        {"polygon by int index",
+         [] {
              const GLuint indices[] = {4, 5, 6, 7};
              glDrawElements(GL_POLYGON, 4, GL_UNSIGNED_INT, indices);
          }},
@@ -122,9 +129,9 @@ TEST(VertexArrays, EveryInterleavedFormatDrawsAsTheReference) {
     // 4 vertices of up to 15 floats (T4F C4F N3F V4F); colour bytes where the format has them.
     std::vector<GLfloat> data(4 * 15);
     for (std::size_t i = 0; i < data.size(); ++i) data[i] = 0.3f + 0.1f * static_cast<float>(i % 7);
-    const GLenum formats[] = {GL_V2F, GL_V3F, GL_C4UB_V2F, GL_C4UB_V3F, GL_C3F_V3F, GL_N3F_V3F, GL_C4F_N3F_V3F,
-                              GL_T2F_V3F, GL_T4F_V4F, GL_T2F_C4UB_V3F, GL_T2F_C3F_V3F, GL_T2F_N3F_V3F,
-                              GL_T2F_C4F_N3F_V3F, GL_T4F_C4F_N3F_V4F};
+    const GLenum formats[] = {GL_V2F,         GL_V3F,         GL_C4UB_V2F,        GL_C4UB_V3F,       GL_C3F_V3F,
+                              GL_N3F_V3F,     GL_C4F_N3F_V3F, GL_T2F_V3F,         GL_T4F_V4F,        GL_T2F_C4UB_V3F,
+                              GL_T2F_C3F_V3F, GL_T2F_N3F_V3F, GL_T2F_C4F_N3F_V3F, GL_T4F_C4F_N3F_V4F};
     for (GLenum format : formats) {
         const auto frames = onBothBackends<Frame>(
             [&] {
@@ -177,11 +184,11 @@ TEST(VertexArrays, StateQueriesAndCurrentValuesAnswerAsTheReference) {
         glDrawArrays(GL_TRIANGLE_FAN, 0, 4);
         std::vector<GLfloat> a(4);
         glGetFloatv(GL_CURRENT_COLOR, a.data());  // unchanged by the draw
-        for (GLenum name : {GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE,
-                            GL_VERTEX_ARRAY_STRIDE, GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE,
-                            GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, GL_TEXTURE_COORD_ARRAY_SIZE,
-                            GL_TEXTURE_COORD_ARRAY_TYPE, GL_TEXTURE_COORD_ARRAY_STRIDE, GL_EDGE_FLAG_ARRAY_STRIDE,
-                            GL_INDEX_ARRAY_TYPE}) {
+        for (GLenum name :
+             {GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE,
+              GL_VERTEX_ARRAY_STRIDE, GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE,
+              GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE,
+              GL_TEXTURE_COORD_ARRAY_STRIDE, GL_EDGE_FLAG_ARRAY_STRIDE, GL_INDEX_ARRAY_TYPE}) {
             GLint value = -1;
             glGetIntegerv(name, &value);
             a.push_back(static_cast<GLfloat>(value));
@@ -210,10 +217,12 @@ TEST(VertexArrays, LongIndexedTriangleDrawsMatchTheReference) {
     std::vector<GLubyte> colorBytes;
     for (int j = 0; j <= kSide; ++j) {
         for (int i = 0; i <= kSide; ++i) {
-            const float x = -3.0f + 6.0f * static_cast<float>(i) / kSide, y = -3.0f + 6.0f * static_cast<float>(j) / kSide;
+            const float x = -3.0f + 6.0f * static_cast<float>(i) / kSide,
+                        y = -3.0f + 6.0f * static_cast<float>(j) / kSide;
             const float h = 0.4f * std::sin(2.0f * x) * std::cos(1.5f * y);
             positions.insert(positions.end(), {x, y, h});
-            normals.insert(normals.end(), {-0.8f * std::cos(2.0f * x) * std::cos(1.5f * y), 0.6f * std::sin(2.0f * x) * std::sin(1.5f * y), 1.0f});
+            normals.insert(normals.end(), {-0.8f * std::cos(2.0f * x) * std::cos(1.5f * y),
+                                           0.6f * std::sin(2.0f * x) * std::sin(1.5f * y), 1.0f});
             colors.insert(colors.end(), {0.5f + h, 0.4f - h, 0.6f + 2.0f * h});
             colorBytes.insert(colorBytes.end(), {static_cast<GLubyte>(i * 5), static_cast<GLubyte>(j * 5), 140, 255});
         }
@@ -234,23 +243,28 @@ TEST(VertexArrays, LongIndexedTriangleDrawsMatchTheReference) {
     }
     const GLubyte smallGrid[] = {0, 1, 50, 0, 50, 49, 1, 2, 51, 1, 51, 50, 2, 3};  // an incomplete last triangle
     const std::pair<const char*, std::function<void()>> draws[] = {
-        {"uint grid, float colours", [&] {
+        {"uint grid, float colours",
+         [&] {
              glColorPointer(3, GL_FLOAT, 0, colors.data());
              glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid.size()), GL_UNSIGNED_INT, grid.data());
          }},
-        {"ushort grid, byte colours", [&] {
+        {"ushort grid, byte colours",
+         [&] {
              glColorPointer(4, GL_UNSIGNED_BYTE, 0, colorBytes.data());
              glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(shortGrid.size()), GL_UNSIGNED_SHORT, shortGrid.data());
          }},
-        {"spread indices", [&] {
+        {"spread indices",
+         [&] {
              glColorPointer(3, GL_FLOAT, 0, colors.data());
              glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(spread.size()), GL_UNSIGNED_INT, spread.data());
          }},
-        {"ubyte indices", [&] {
+        {"ubyte indices",
+         [&] {
              glColorPointer(3, GL_FLOAT, 0, colors.data());
              glDrawElements(GL_TRIANGLES, 14, GL_UNSIGNED_BYTE, smallGrid);
          }},
-        {"lit grid", [&] {
+        {"lit grid",
+         [&] {
              glDisableClientState(GL_COLOR_ARRAY);
              glEnableClientState(GL_NORMAL_ARRAY);
              glNormalPointer(GL_FLOAT, 0, normals.data());

@@ -44,9 +44,12 @@ void gridVertex(int i, int positionSize) {
     const float dx = corner == 1 || corner == 2 ? cell : 0.0f, dy = corner >= 2 ? cell : 0.0f;
     const float stretch = quad / 8 % 8 == 7 ? 1.6f : 1.0f;
     const float x = (x0 + dx) * stretch, y = y0 + dy, z = wave(i, 3) - 0.5f;
-    if (positionSize == 2) glVertex2f(x, y);
-    else if (positionSize == 3) glVertex3f(x, y, z);
-    else glVertex4f(x, y, z, 1.0f);
+    if (positionSize == 2)
+        glVertex2f(x, y);
+    else if (positionSize == 3)
+        glVertex3f(x, y, z);
+    else
+        glVertex4f(x, y, z, 1.0f);
 }
 
 void expectSameFrames(const std::function<void()>& calls, const char* what) {
@@ -70,8 +73,10 @@ TEST(VertexBufferWrap, QuadRunsSplitWhereTheReferenceBufferFills) {
         int colorSize;  // 0: one color for the draw; 3: glColor3f; 4: glColor4f
         bool normal, texCoord, edgeFlag, integerColor;
     };
-    const Format formats[] = {{2, 3, false, false, false, false}, {3, 4, false, false, false, false},
-                              {4, 3, true, false, false, true},   {3, 0, false, true, true, false},
+    const Format formats[] = {{2, 3, false, false, false, false},
+                              {3, 4, false, false, false, false},
+                              {4, 3, true, false, false, true},
+                              {3, 0, false, true, true, false},
                               {3, 3, true, true, false, false}};
     // Points before the quads, for wrap points at different places in a quad and in the grid.
     const int usedVertices[] = {64900, 65000, 65100, 65200, 65250};
@@ -84,8 +89,10 @@ TEST(VertexBufferWrap, QuadRunsSplitWhereTheReferenceBufferFills) {
                     for (int i = 0; i < 4 * 64; ++i) {
                         if (format.colorSize == 4) glColor4f(wave(i, 0), wave(i, 1), wave(i, 2), 1.0f);
                         if (format.colorSize == 3 && format.integerColor)
-                            glColor3ub(static_cast<GLubyte>(wave(i, 0) * 255), 40, static_cast<GLubyte>(wave(i, 2) * 255));
-                        else if (format.colorSize == 3) glColor3f(wave(i, 0), wave(i, 1), wave(i, 2));
+                            glColor3ub(static_cast<GLubyte>(wave(i, 0) * 255), 40,
+                                       static_cast<GLubyte>(wave(i, 2) * 255));
+                        else if (format.colorSize == 3)
+                            glColor3f(wave(i, 0), wave(i, 1), wave(i, 2));
                         if (format.normal) glNormal3f(0, 0, 1);
                         if (format.texCoord) glTexCoord2f(wave(i, 4), wave(i, 5));
                         if (format.edgeFlag) glEdgeFlag(GL_TRUE);
@@ -142,8 +149,8 @@ TEST(VertexBufferWrap, AnAttributeNewInTheFormatEndsTheDraw) {
 }
 
 TEST(VertexBufferWrap, StripsFansAndPolygonsGoOnInTheNextPart) {
-    const GLenum modes[] = {GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_POLYGON, GL_QUAD_STRIP, GL_LINE_STRIP,
-                            GL_LINE_LOOP,      GL_TRIANGLES,    GL_LINES};
+    const GLenum modes[] = {GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_POLYGON,   GL_QUAD_STRIP,
+                            GL_LINE_STRIP,     GL_LINE_LOOP,    GL_TRIANGLES, GL_LINES};
     for (const GLenum mode : modes) {
         for (const int used : {65300, 65301, 65302}) {
             expectSameFrames(
@@ -176,7 +183,8 @@ TEST(VertexBufferWrap, LongLineLoopsCloseOnTheirFirstVertex) {
                     // Inside the window until the last few hundred vertices, which cross its edge:
                     // only the draws of the last part go through the clipper.
                     const float angle = static_cast<float>(i) * 0.0137f, reach = i > 69700 ? 1.3f : 0.95f;
-                    glVertex3f(reach * std::cos(angle) * wave(i, 1), 0.95f * std::sin(angle * 1.01f), wave(i, 2) - 0.5f);
+                    glVertex3f(reach * std::cos(angle) * wave(i, 1), 0.95f * std::sin(angle * 1.01f),
+                               wave(i, 2) - 0.5f);
                 }
                 glEnd();
             },
@@ -197,10 +205,14 @@ TEST(VertexBufferWrap, ASecondWrapOfALineLoopKeepsItsSegments) {
             glBegin(GL_LINE_LOOP);
             // After 65000 points the loop wraps after its vertex 534 and again after 66067.
             for (int i = 0; i < 70000; ++i) {
-                if (i == 66066) glVertex2f(-0.9f, 0.9f);
-                else if (i == 66067) glVertex2f(0.9f, 0.9f);
-                else if (i == 66068) glVertex2f(0.9f, -0.9f);
-                else glVertex2f(-0.8f + 0.1f * wave(i, 0), -0.8f + 0.1f * wave(i, 1));
+                if (i == 66066)
+                    glVertex2f(-0.9f, 0.9f);
+                else if (i == 66067)
+                    glVertex2f(0.9f, 0.9f);
+                else if (i == 66068)
+                    glVertex2f(0.9f, -0.9f);
+                else
+                    glVertex2f(-0.8f + 0.1f * wave(i, 0), -0.8f + 0.1f * wave(i, 1));
             }
             glEnd();
             return readFrame(kSize, kSize).color;

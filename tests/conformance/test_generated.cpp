@@ -33,8 +33,9 @@ TEST(GeneratedConformance, EveryCaseMatchesOsmesa) {
         if (!r.passed && !listed) writeImages(c.name, r);
         EXPECT_TRUE(r.passed || listed) << c.name << ": " << reference::toString(r.comparison)
                                         << " depth-ties=" << r.depthTies << (c.flat ? " (bit-exact)" : " (within 1)")
-                                        << " observations differing=" << r.observationsDiffering << "/" << r.observations << " "
-                                        << r.firstObservationDifference << "; images in " << MYGL_FAILURE_DIR;
+                                        << " observations differing=" << r.observationsDiffering << "/"
+                                        << r.observations << " " << r.firstObservationDifference << "; images in "
+                                        << MYGL_FAILURE_DIR;
         EXPECT_FALSE(r.passed && listed) << c.name << " passes now: remove it from " << MYGL_EXPECTED_DIFFERENCES;
     }
     EXPECT_GE(casesPerCategory["modes"] + casesPerCategory["random"], 300);

@@ -20,8 +20,17 @@ namespace {
 // where the reference itself moves by one step between CPUs: within 1 per channel, with exact
 // coverage (a coverage difference shows up as a pixel differing by far more than 1).
 const std::set<std::string> kFlatScenes = {
-    "cube", "two-cubes", "two-cubes-nodepth", "concave-hexahedron", "concave-hexahedron-nodepth",
-    "xmutual", "xmutual-nodepth", "polygon5", "modes-flat", "wireframe-cube", "bench-draw-pixels",
+    "cube",
+    "two-cubes",
+    "two-cubes-nodepth",
+    "concave-hexahedron",
+    "concave-hexahedron-nodepth",
+    "xmutual",
+    "xmutual-nodepth",
+    "polygon5",
+    "modes-flat",
+    "wireframe-cube",
+    "bench-draw-pixels",
 };
 
 struct Case {
@@ -60,13 +69,16 @@ TEST_P(SceneConformance, MatchesOsmesa) {
         const bool flat = kFlatScenes.contains(scene->name);
         const long long ties = reference::depthTies(ours, theirs, oursFrame.depth, theirsFrame.depth, flat ? 0 : 1);
         const bool pass = (flat ? c.differing : c.differingMoreThan1) - ties == 0;
-        if (!pass) writeFailureImages(scene->name + "-" + std::to_string(frame) + "-" + std::to_string(width), ours, theirs);
+        if (!pass)
+            writeFailureImages(scene->name + "-" + std::to_string(frame) + "-" + std::to_string(width), ours, theirs);
         EXPECT_TRUE(pass) << scene->name << " frame " << frame << " at " << width << "x" << height << ": "
-                          << reference::toString(c) << " depth-ties=" << ties << (flat ? " (bit-exact required)" : " (within 1 required)")
-                          << "; images in " << MYGL_FAILURE_DIR;
+                          << reference::toString(c) << " depth-ties=" << ties
+                          << (flat ? " (bit-exact required)" : " (within 1 required)") << "; images in "
+                          << MYGL_FAILURE_DIR;
         // Stricter than DESIGN.md 4 allows, because it holds: the depth values themselves are the
         // reference's (its plane setup order, vertex stage and clipper arithmetic are followed).
-        EXPECT_TRUE(oursFrame.depth == theirsFrame.depth) << scene->name << " frame " << frame << ": depth buffers differ";
+        EXPECT_TRUE(oursFrame.depth == theirsFrame.depth)
+            << scene->name << " frame " << frame << ": depth buffers differ";
     }
 }
 
@@ -90,7 +102,7 @@ TEST(SceneConformance, ConsecutiveFramesOnOneContextMatchOsmesa) {
     mygl::Context ours(kWidth, kHeight);
     reference::OsmesaContext theirs(kWidth, kHeight);
     const char* sequence[] = {"bench-gears", "bench-gears", "lines-points", "bench-gears", "wireframe-cube",
-                              "cube", "bench-torus", "bench-torus", "cube"};
+                              "cube",        "bench-torus", "bench-torus",  "cube"};
     int frame = 0;
     for (const char* name : sequence) {
         const scenes::Scene* scene = scenes::findScene(name);

@@ -21,9 +21,11 @@ namespace {
 
 // Every pixel, 4 bytes each, rows packed (whatever pixel-store state the stream left).
 Answer readFrame(GLenum format, GLenum type, AnswerKind kind, const Stream& stream) {
-    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(stream.width) * static_cast<std::size_t>(stream.height) * 4);
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(stream.width) * static_cast<std::size_t>(stream.height) *
+                                     4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    for (GLenum pname : {GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS, GL_PACK_SWAP_BYTES}) glPixelStorei(pname, 0);
+    for (GLenum pname : {GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS, GL_PACK_SWAP_BYTES})
+        glPixelStorei(pname, 0);
     glReadPixels(0, 0, stream.width, stream.height, format, type, pixels.data());
     return {kind, kFinalFrame, std::move(pixels)};
 }
@@ -80,7 +82,8 @@ Answers parseAnswers(const std::vector<std::uint8_t>& data) {
         std::memcpy(&size, &data[at + 5], 4);
         at += 9;
         if (size > data.size() - at) break;  // cut short by a crash
-        a.bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(at), data.begin() + static_cast<std::ptrdiff_t>(at + size));
+        a.bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(at),
+                       data.begin() + static_cast<std::ptrdiff_t>(at + size));
         at += size;
         answers.push_back(std::move(a));
     }
@@ -132,7 +135,8 @@ void collect(std::array<Child, 2>& children, std::chrono::steady_clock::time_poi
             if (c.fd >= 0) polls[count++] = {c.fd, POLLIN, 0};
         }
         if (count == 0) return;
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0) break;
         if (poll(polls.data(), count, static_cast<int>(left.count())) < 0 && errno != EINTR) break;
         for (nfds_t i = 0; i < count; ++i) {
@@ -191,7 +195,9 @@ std::string Outcome::describe() const {
     case Status::Hung: return "hung";
     case Status::Crashed: break;
     }
-    if (signal) return std::string(sigabbrev_np(signal) ? "SIG" : "signal ") + (sigabbrev_np(signal) ? sigabbrev_np(signal) : std::to_string(signal));
+    if (signal)
+        return std::string(sigabbrev_np(signal) ? "SIG" : "signal ") +
+               (sigabbrev_np(signal) ? sigabbrev_np(signal) : std::to_string(signal));
     return "exit code " + std::to_string(exitCode);
 }
 

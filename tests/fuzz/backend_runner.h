@@ -14,9 +14,9 @@ const char* backendName(Backend backend);
 struct Outcome {
     enum class Status { Finished, Crashed, Hung };
     Status status = Status::Finished;
-    int signal = 0;    // Crashed by a signal
-    int exitCode = 0;  // Crashed by a non-zero exit (a sanitizer report, an exception)
-    Answers answers;   // what the child sent back (all of it only when Finished)
+    int signal = 0;                // Crashed by a signal
+    int exitCode = 0;              // Crashed by a non-zero exit (a sanitizer report, an exception)
+    Answers answers;               // what the child sent back (all of it only when Finished)
     std::string describe() const;  // "finished", "SIGSEGV", "exit code 1", "hung"
 };
 

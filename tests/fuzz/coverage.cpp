@@ -22,22 +22,32 @@ void classify(const Call& call, const StreamContext& context, std::map<std::stri
     const std::string_view name = functionName(call);
     const auto& a = call.args;
     for (double v : a) {
-        if (std::isnan(v)) ++counts["NaN"];
-        else if (std::isinf(v)) ++counts["Inf"];
-        else if (std::abs(v) >= 1e30) ++counts["1e30+"];
-        else if (v != 0 && std::abs(v) < kFloatMin) ++counts["denormal"];
+        if (std::isnan(v))
+            ++counts["NaN"];
+        else if (std::isinf(v))
+            ++counts["Inf"];
+        else if (std::abs(v) >= 1e30)
+            ++counts["1e30+"];
+        else if (v != 0 && std::abs(v) < kFloatMin)
+            ++counts["denormal"];
     }
     if (name.starts_with("glVertex4")) {
-        if (a[3] <= 0) ++counts["w<=0"];
-        else if (a[3] < 1e-3) ++counts["w~0"];
+        if (a[3] <= 0)
+            ++counts["w<=0"];
+        else if (a[3] < 1e-3)
+            ++counts["w~0"];
     }
-    const bool allowedInside = name.starts_with("glVertex") || name.starts_with("glColor") || name.starts_with("glNormal") ||
-                               name.starts_with("glTexCoord") || name.starts_with("glEdgeFlag") || name == "glEnd";
+    const bool allowedInside = name.starts_with("glVertex") || name.starts_with("glColor") ||
+                               name.starts_with("glNormal") || name.starts_with("glTexCoord") ||
+                               name.starts_with("glEdgeFlag") || name == "glEnd";
     if (context.insideBegin && !allowedInside) ++counts["illegal in glBegin"];
-    if (name == "glViewport" && (a[2] < 0 || a[3] < 0 || isExtreme(a[0], 1e5) || isExtreme(a[1], 1e5) || a[2] > 16384 || a[3] > 16384))
+    if (name == "glViewport" &&
+        (a[2] < 0 || a[3] < 0 || isExtreme(a[0], 1e5) || isExtreme(a[1], 1e5) || a[2] > 16384 || a[3] > 16384))
         ++counts["extreme viewport"];
-    if (name == "glDepthRange" && (isExtreme(a[0] - 0.5, 0.5) || isExtreme(a[1] - 0.5, 0.5) || a[0] > a[1])) ++counts["odd depth range"];
-    if (name == "glReadPixels" && (a[2] < 0 || a[3] < 0 || isExtreme(a[0], 1e6) || isExtreme(a[1], 1e6) || a[2] > 1e5 || a[3] > 1e5))
+    if (name == "glDepthRange" && (isExtreme(a[0] - 0.5, 0.5) || isExtreme(a[1] - 0.5, 0.5) || a[0] > a[1]))
+        ++counts["odd depth range"];
+    if (name == "glReadPixels" &&
+        (a[2] < 0 || a[3] < 0 || isExtreme(a[0], 1e6) || isExtreme(a[1], 1e6) || a[2] > 1e5 || a[3] > 1e5))
         ++counts["bad read rectangle"];
     if (name == "glBegin" && a[0] > GL_POLYGON) ++counts["bad glBegin mode"];
     if (name == "glEnd" && context.insideBegin && context.verticesInBlock >= 10000) ++counts["10k+ vertex block"];

@@ -18,7 +18,8 @@ template <class T>
 std::string values(const std::vector<std::uint8_t>& bytes, const char* format) {
     std::string text = "{";
     for (std::size_t at = 0; at + sizeof(T) <= bytes.size(); at += sizeof(T)) {
-        if (std::all_of(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.begin() + static_cast<std::ptrdiff_t>(at + sizeof(T)),
+        if (std::all_of(bytes.begin() + static_cast<std::ptrdiff_t>(at),
+                        bytes.begin() + static_cast<std::ptrdiff_t>(at + sizeof(T)),
                         [](std::uint8_t b) { return b == 0xA5; }))
             break;  // the rest of the query buffer was not written
         T v;
@@ -92,7 +93,8 @@ const char* className(FailureClass failure) {
 
 bool Difference::sameFailure(const Difference& other) const {
     if (failure != other.failure) return false;
-    if (failure == FailureClass::Crash || failure == FailureClass::Hang) return mygl == other.mygl && osmesa == other.osmesa;
+    if (failure == FailureClass::Crash || failure == FailureClass::Hang)
+        return mygl == other.mygl && osmesa == other.osmesa;
     return true;
 }
 
@@ -115,16 +117,17 @@ Difference compareOutcomes(const Stream& stream, const BothOutcomes& outcomes) {
         const Answer& a = m.answers[i];
         const Answer& b = o.answers[i];
         if (a == b) continue;
-        const FailureClass failure = a.kind == AnswerKind::Error ? FailureClass::ErrorSequence
-                                     : a.kind == AnswerKind::Get ? FailureClass::GetAnswers
+        const FailureClass failure = a.kind == AnswerKind::Error   ? FailureClass::ErrorSequence
+                                     : a.kind == AnswerKind::Get   ? FailureClass::GetAnswers
                                      : a.kind == AnswerKind::Color ? FailureClass::Color
                                                                    : FailureClass::Depth;
         d.classes[classIndex(failure)] = true;
         if (d.failure != FailureClass::None && d.failure <= failure) continue;
         d.failure = failure;
         d.call = a.call;
-        const std::string where = a.call == kFinalFrame ? "final frame" : "call " + std::to_string(a.call) + " " +
-                                                                              std::string(functionName(stream.calls[a.call]));
+        const std::string where = a.call == kFinalFrame ? "final frame"
+                                                        : "call " + std::to_string(a.call) + " " +
+                                                              std::string(functionName(stream.calls[a.call]));
         if (failure == FailureClass::Color || failure == FailureClass::Depth) {
             d.mygl = d.osmesa = "";
             d.detail = where + ": " + pixelDifference(a, b);

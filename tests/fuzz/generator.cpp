@@ -27,20 +27,51 @@ constexpr GLenum kRescaleNormal = 0x803A;  // GL 1.2, not in the GL 1.1 header
 // The capabilities glEnable may toggle in a stream: the two MyGL draws with, and those whose
 // default state leaves every pixel as it was (MyGL accepts them and draws nothing different).
 constexpr GLenum kDrawnCapabilities[] = {GL_CULL_FACE, GL_DEPTH_TEST};
-constexpr GLenum kHarmlessCapabilities[] = {GL_DITHER, GL_NORMALIZE, GL_LIGHT0, GL_LIGHT7, GL_COLOR_MATERIAL,
-                                            GL_ALPHA_TEST, GL_BLEND, GL_SCISSOR_TEST, GL_STENCIL_TEST,
-                                            GL_TEXTURE_1D, GL_TEXTURE_2D};
+constexpr GLenum kHarmlessCapabilities[] = {GL_DITHER,         GL_NORMALIZE,  GL_LIGHT0,    GL_LIGHT7,
+                                            GL_COLOR_MATERIAL, GL_ALPHA_TEST, GL_BLEND,     GL_SCISSOR_TEST,
+                                            GL_STENCIL_TEST,   GL_TEXTURE_1D, GL_TEXTURE_2D};
 // Not a valid value for any enum parameter the fuzzer passes them to.
 constexpr GLenum kInvalidEnums[] = {0x1234, 0xFFFF, 0xFFFFFFFF, 0x7FFF0000, GL_RGBA};
 
 constexpr GLenum kQueryNames[] = {
-    GL_VIEWPORT, GL_MODELVIEW_MATRIX, GL_PROJECTION_MATRIX, GL_TEXTURE_MATRIX, GL_MATRIX_MODE,
-    GL_MODELVIEW_STACK_DEPTH, GL_PROJECTION_STACK_DEPTH, GL_TEXTURE_STACK_DEPTH, GL_MAX_MODELVIEW_STACK_DEPTH,
-    GL_MAX_PROJECTION_STACK_DEPTH, GL_MAX_TEXTURE_STACK_DEPTH, GL_MAX_VIEWPORT_DIMS, GL_CULL_FACE, GL_DEPTH_TEST,
-    GL_CULL_FACE_MODE, GL_FRONT_FACE, GL_DEPTH_FUNC, GL_DEPTH_WRITEMASK, GL_SHADE_MODEL, GL_POLYGON_MODE,
-    GL_LINE_WIDTH, GL_POINT_SIZE, GL_DEPTH_RANGE, GL_COLOR_CLEAR_VALUE, GL_DEPTH_CLEAR_VALUE, GL_CURRENT_COLOR,
-    GL_CURRENT_NORMAL, GL_CURRENT_TEXTURE_COORDS, GL_EDGE_FLAG, GL_RED_BITS, GL_GREEN_BITS, GL_BLUE_BITS,
-    GL_ALPHA_BITS, GL_DEPTH_BITS, GL_STENCIL_BITS, GL_SUBPIXEL_BITS, GL_PACK_ALIGNMENT, GL_UNPACK_ALIGNMENT,
+    GL_VIEWPORT,
+    GL_MODELVIEW_MATRIX,
+    GL_PROJECTION_MATRIX,
+    GL_TEXTURE_MATRIX,
+    GL_MATRIX_MODE,
+    GL_MODELVIEW_STACK_DEPTH,
+    GL_PROJECTION_STACK_DEPTH,
+    GL_TEXTURE_STACK_DEPTH,
+    GL_MAX_MODELVIEW_STACK_DEPTH,
+    GL_MAX_PROJECTION_STACK_DEPTH,
+    GL_MAX_TEXTURE_STACK_DEPTH,
+    GL_MAX_VIEWPORT_DIMS,
+    GL_CULL_FACE,
+    GL_DEPTH_TEST,
+    GL_CULL_FACE_MODE,
+    GL_FRONT_FACE,
+    GL_DEPTH_FUNC,
+    GL_DEPTH_WRITEMASK,
+    GL_SHADE_MODEL,
+    GL_POLYGON_MODE,
+    GL_LINE_WIDTH,
+    GL_POINT_SIZE,
+    GL_DEPTH_RANGE,
+    GL_COLOR_CLEAR_VALUE,
+    GL_DEPTH_CLEAR_VALUE,
+    GL_CURRENT_COLOR,
+    GL_CURRENT_NORMAL,
+    GL_CURRENT_TEXTURE_COORDS,
+    GL_EDGE_FLAG,
+    GL_RED_BITS,
+    GL_GREEN_BITS,
+    GL_BLUE_BITS,
+    GL_ALPHA_BITS,
+    GL_DEPTH_BITS,
+    GL_STENCIL_BITS,
+    GL_SUBPIXEL_BITS,
+    GL_PACK_ALIGNMENT,
+    GL_UNPACK_ALIGNMENT,
     GL_DOUBLEBUFFER,
 };
 
@@ -105,8 +136,11 @@ private:
         return std::clamp(rounded, kIntMin, kIntMax);
     }
     double bad(std::string_view type) {
-        if (type == "f") return static_cast<float>(random_.pick({kNaN, kInf, -kInf, 1e30, -1e30, 3.4e38, -3.4e38, 1e-40, -1e-45, -0.0, 1e-30}));
-        if (type == "d") return random_.pick({kNaN, kInf, -kInf, 1e30, -1e30, 1e300, -1e300, 5e-324, 1e-310, -0.0, 1e-30});
+        if (type == "f")
+            return static_cast<float>(
+                random_.pick({kNaN, kInf, -kInf, 1e30, -1e30, 3.4e38, -3.4e38, 1e-40, -1e-45, -0.0, 1e-30}));
+        if (type == "d")
+            return random_.pick({kNaN, kInf, -kInf, 1e30, -1e30, 1e300, -1e300, 5e-324, 1e-310, -0.0, 1e-30});
         if (type == "s") return random_.pick({-32768.0, 32767.0});
         if (type == "b") return random_.pick({-128.0, 127.0});
         if (type == "ub") return 255.0;
@@ -160,7 +194,8 @@ private:
             const auto cells = static_cast<std::int64_t>(std::ceil(std::sqrt(static_cast<double>(n / 4 + 1))));
             const std::int64_t cell = i / 4, corner = i % 4;
             const double step = 2.0 / static_cast<double>(cells);
-            const double cx = -1 + step * static_cast<double>(cell % cells), cy = -1 + step * static_cast<double>(cell / cells);
+            const double cx = -1 + step * static_cast<double>(cell % cells),
+                         cy = -1 + step * static_cast<double>(cell / cells);
             return {cx + (corner == 1 || corner == 2 ? step : 0) + jitter, cy + (corner >= 2 ? step : 0) + jitter,
                     centre.z + 0.3 * cx};
         }
@@ -201,8 +236,9 @@ private:
         const auto kind = random_.integer(0, 3);
         pixelSpace_ = kind == 2;
         if (kind == 0) {
-            emit("glOrtho", {as("d", -random_.uniform(1, 2)), as("d", random_.uniform(1, 2)), as("d", -random_.uniform(1, 2)),
-                             as("d", random_.uniform(1, 2)), as("d", -random_.uniform(1, 3)), as("d", random_.uniform(1, 3))});
+            emit("glOrtho",
+                 {as("d", -random_.uniform(1, 2)), as("d", random_.uniform(1, 2)), as("d", -random_.uniform(1, 2)),
+                  as("d", random_.uniform(1, 2)), as("d", -random_.uniform(1, 3)), as("d", random_.uniform(1, 3))});
         } else if (kind == 1) {
             const double n = random_.uniform(0.3, 2.5);
             emit("glFrustum", {as("d", -n * random_.uniform(0.3, 1)), as("d", n * random_.uniform(0.3, 1)),
@@ -219,8 +255,9 @@ private:
 
     Call rotateCall() {
         const auto t = floatType();
-        return makeCall(t == "f" ? "glRotatef" : "glRotated", {as(t, random_.uniform(-180, 180)), as(t, random_.uniform(-1, 1)),
-                                                               as(t, random_.uniform(-1, 1)), as(t, random_.uniform(-1, 1))});
+        return makeCall(t == "f" ? "glRotatef" : "glRotated",
+                        {as(t, random_.uniform(-180, 180)), as(t, random_.uniform(-1, 1)),
+                         as(t, random_.uniform(-1, 1)), as(t, random_.uniform(-1, 1))});
     }
 
     GLenum drawMode() {
@@ -241,9 +278,14 @@ private:
     Shape naturalShape(GLenum mode) {
         if (random_.chance(0.3)) return random_.chance(0.8) ? Shape::Scatter : Shape::Sliver;
         switch (mode) {
-        case GL_TRIANGLE_FAN: case GL_POLYGON: case GL_LINE_LOOP: return Shape::Circle;
-        case GL_TRIANGLE_STRIP: case GL_QUAD_STRIP: case GL_LINE_STRIP: return Shape::ZigZag;
-        case GL_QUADS: case GL_TRIANGLES: return Shape::Grid;
+        case GL_TRIANGLE_FAN:
+        case GL_POLYGON:
+        case GL_LINE_LOOP: return Shape::Circle;
+        case GL_TRIANGLE_STRIP:
+        case GL_QUAD_STRIP:
+        case GL_LINE_STRIP: return Shape::ZigZag;
+        case GL_QUADS:
+        case GL_TRIANGLES: return Shape::Grid;
         default: return Shape::Scatter;
         }
     }
@@ -356,39 +398,58 @@ private:
     Call stateCall() {
         const auto flag = [&] { return static_cast<double>(random_.chance(0.9) ? random_.integer(0, 1) : 2); };
         switch (random_.integer(0, 15)) {
-        case 0: case 1: {
+        case 0:
+        case 1: {
             const GLenum cap = random_.chance(0.7) ? oneOf(kDrawnCapabilities) : oneOf(kHarmlessCapabilities);
             return makeCall(random_.chance(0.6) ? "glEnable" : "glDisable", {static_cast<double>(cap)});
         }
         case 2: return makeCall("glCullFace", {static_cast<double>(oneOf({GL_FRONT, GL_BACK, GL_FRONT_AND_BACK}))});
         case 3: return makeCall("glFrontFace", {static_cast<double>(oneOf({GL_CW, GL_CCW}))});
-        case 4: return makeCall("glDepthFunc", {static_cast<double>(oneOf({GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS}))});
+        case 4:
+            return makeCall("glDepthFunc",
+                            {static_cast<double>(oneOf({GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL,
+                                                        GL_GEQUAL, GL_ALWAYS}))});
         case 5: return makeCall("glDepthMask", {flag()});
         case 6: return makeCall("glShadeModel", {static_cast<double>(oneOf({GL_FLAT, GL_SMOOTH}))});
-        case 7: return makeCall("glPolygonMode", {static_cast<double>(oneOf({GL_FRONT, GL_BACK, GL_FRONT_AND_BACK})),
-                                                  static_cast<double>(oneOf({GL_POINT, GL_LINE, GL_FILL}))});
-        case 8: return makeCall("glLineWidth", {as("f", random_.chance(0.5) ? static_cast<double>(random_.integer(1, 4)) : random_.uniform(0.3, 6))});
-        case 9: return makeCall("glPointSize", {as("f", random_.chance(0.5) ? static_cast<double>(random_.integer(1, 5)) : random_.uniform(0.3, 8))});
+        case 7:
+            return makeCall("glPolygonMode", {static_cast<double>(oneOf({GL_FRONT, GL_BACK, GL_FRONT_AND_BACK})),
+                                              static_cast<double>(oneOf({GL_POINT, GL_LINE, GL_FILL}))});
+        case 8:
+            return makeCall("glLineWidth", {as("f", random_.chance(0.5) ? static_cast<double>(random_.integer(1, 4))
+                                                                        : random_.uniform(0.3, 6))});
+        case 9:
+            return makeCall("glPointSize", {as("f", random_.chance(0.5) ? static_cast<double>(random_.integer(1, 5))
+                                                                        : random_.uniform(0.3, 8))});
         case 10: return viewportCall();
         case 11: return depthRangeCall();
-        case 12: return makeCall("glPixelStorei", {static_cast<double>(oneOf({GL_PACK_ALIGNMENT, GL_UNPACK_ALIGNMENT})),
-                                                   random_.chance(0.9 - badness_) ? random_.pick({1.0, 2.0, 4.0, 8.0}) : random_.pick({0.0, 3.0, -1.0, 16.0})});
-        case 13: return makeCall("glHint", {static_cast<double>(oneOf({GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT, GL_LINE_SMOOTH_HINT, GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT})),
-                                            static_cast<double>(oneOf({GL_DONT_CARE, GL_FASTEST, GL_NICEST}))});
+        case 12:
+            return makeCall("glPixelStorei", {static_cast<double>(oneOf({GL_PACK_ALIGNMENT, GL_UNPACK_ALIGNMENT})),
+                                              random_.chance(0.9 - badness_) ? random_.pick({1.0, 2.0, 4.0, 8.0})
+                                                                             : random_.pick({0.0, 3.0, -1.0, 16.0})});
+        case 13:
+            return makeCall("glHint",
+                            {static_cast<double>(oneOf({GL_PERSPECTIVE_CORRECTION_HINT, GL_POINT_SMOOTH_HINT,
+                                                        GL_LINE_SMOOTH_HINT, GL_POLYGON_SMOOTH_HINT, GL_FOG_HINT})),
+                             static_cast<double>(oneOf({GL_DONT_CARE, GL_FASTEST, GL_NICEST}))});
         case 14: return makeCall("glEdgeFlag", {flag()});
-        default: return makeCall("glClearColor", {anyOf("f", -0.5, 1.5), anyOf("f", -0.5, 1.5), anyOf("f", -0.5, 1.5), anyOf("f", -0.5, 1.5)});
+        default:
+            return makeCall("glClearColor", {anyOf("f", -0.5, 1.5), anyOf("f", -0.5, 1.5), anyOf("f", -0.5, 1.5),
+                                             anyOf("f", -0.5, 1.5)});
         }
     }
 
     Call viewportCall() {
         const double w = stream_.width, h = stream_.height;
         if (random_.chance(badness_ > 0 ? 0.3 : 0.02)) {  // extreme
-            return makeCall("glViewport", {random_.pick({kIntMin, kIntMax, -100000.0, 100000.0, 0.0}), random_.pick({kIntMin, kIntMax, -100000.0, 0.0}),
-                                           random_.pick({-1.0, 0.0, kIntMax, 16384.0, 16385.0, 100000.0}), random_.pick({-1.0, 0.0, kIntMax, 16384.0, 100000.0})});
+            return makeCall("glViewport", {random_.pick({kIntMin, kIntMax, -100000.0, 100000.0, 0.0}),
+                                           random_.pick({kIntMin, kIntMax, -100000.0, 0.0}),
+                                           random_.pick({-1.0, 0.0, kIntMax, 16384.0, 16385.0, 100000.0}),
+                                           random_.pick({-1.0, 0.0, kIntMax, 16384.0, 100000.0})});
         }
         if (random_.chance(0.4)) return makeCall("glViewport", {0, 0, w, h});
-        return makeCall("glViewport", {std::round(random_.uniform(-0.5, 0.8) * w), std::round(random_.uniform(-0.5, 0.8) * h),
-                                       std::round(random_.uniform(0, 1.5) * w), std::round(random_.uniform(0, 1.5) * h)});
+        return makeCall("glViewport",
+                        {std::round(random_.uniform(-0.5, 0.8) * w), std::round(random_.uniform(-0.5, 0.8) * h),
+                         std::round(random_.uniform(0, 1.5) * w), std::round(random_.uniform(0, 1.5) * h)});
     }
 
     Call depthRangeCall() {
@@ -400,25 +461,40 @@ private:
         const auto t = floatType();
         const bool f = t == "f";
         switch (random_.integer(0, 11)) {
-        case 0: return makeCall("glMatrixMode", {static_cast<double>(oneOf({GL_MODELVIEW, GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE}))});
+        case 0:
+            return makeCall("glMatrixMode",
+                            {static_cast<double>(oneOf({GL_MODELVIEW, GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE}))});
         case 1: return makeCall("glPushMatrix");
         case 2: return makeCall("glPopMatrix");
         case 3: return makeCall("glLoadIdentity");
-        case 4: return makeCall(f ? "glTranslatef" : "glTranslated", {as(t, random_.uniform(-0.5, 0.5)), as(t, random_.uniform(-0.5, 0.5)), as(t, random_.uniform(-0.5, 0.5))});
+        case 4:
+            return makeCall(f ? "glTranslatef" : "glTranslated",
+                            {as(t, random_.uniform(-0.5, 0.5)), as(t, random_.uniform(-0.5, 0.5)),
+                             as(t, random_.uniform(-0.5, 0.5))});
         case 5: return rotateCall();
-        case 6: return makeCall(f ? "glScalef" : "glScaled", {as(t, random_.uniform(-1.5, 1.5)), as(t, random_.uniform(-1.5, 1.5)), as(t, random_.uniform(-1.5, 1.5))});
-        case 7: case 8: {
+        case 6:
+            return makeCall(f ? "glScalef" : "glScaled",
+                            {as(t, random_.uniform(-1.5, 1.5)), as(t, random_.uniform(-1.5, 1.5)),
+                             as(t, random_.uniform(-1.5, 1.5))});
+        case 7:
+        case 8: {
             std::vector<double> m(16);
-            for (int i = 0; i < 16; ++i) m[i] = as(t, (i % 5 == 0 ? 1.0 : 0.0) + random_.uniform(-0.3, 0.3) * (random_.chance(0.5) ? 1 : 0));
+            for (int i = 0; i < 16; ++i)
+                m[i] = as(t, (i % 5 == 0 ? 1.0 : 0.0) + random_.uniform(-0.3, 0.3) * (random_.chance(0.5) ? 1 : 0));
             const bool load = random_.chance(0.4);
             return makeCall(std::string(load ? "glLoadMatrix" : "glMultMatrix") + std::string(t), m);
         }
         case 9: {
             const double n = random_.uniform(0.1, 2);
-            return makeCall("glFrustum", {as("d", -n), as("d", n), as("d", -n), as("d", n), as("d", random_.chance(0.9) ? n : random_.pick({0.0, -1.0})), as("d", random_.uniform(2, 50))});
+            return makeCall("glFrustum", {as("d", -n), as("d", n), as("d", -n), as("d", n),
+                                          as("d", random_.chance(0.9) ? n : random_.pick({0.0, -1.0})),
+                                          as("d", random_.uniform(2, 50))});
         }
-        case 10: return makeCall("glOrtho", {as("d", -random_.uniform(0.5, 3)), as("d", random_.uniform(0.5, 3)), as("d", -random_.uniform(0.5, 3)),
-                                             as("d", random_.uniform(0.5, 3)), as("d", -random_.uniform(0.5, 3)), as("d", random_.chance(0.95) ? random_.uniform(0.5, 3) : 0.0)});
+        case 10:
+            return makeCall("glOrtho", {as("d", -random_.uniform(0.5, 3)), as("d", random_.uniform(0.5, 3)),
+                                        as("d", -random_.uniform(0.5, 3)), as("d", random_.uniform(0.5, 3)),
+                                        as("d", -random_.uniform(0.5, 3)),
+                                        as("d", random_.chance(0.95) ? random_.uniform(0.5, 3) : 0.0)});
         default: return makeCall(random_.chance(0.5) ? "glPushMatrix" : "glPopMatrix");
         }
     }
@@ -430,10 +506,14 @@ private:
             const GLenum cap = random_.chance(0.6) ? oneOf(kDrawnCapabilities) : oneOf(kHarmlessCapabilities);
             return makeCall("glIsEnabled", {static_cast<double>(cap)});
         }
-        case 2: return makeCall("glGetString", {static_cast<double>(oneOf({GL_VENDOR, GL_RENDERER, GL_VERSION, GL_EXTENSIONS}))});
+        case 2:
+            return makeCall("glGetString",
+                            {static_cast<double>(oneOf({GL_VENDOR, GL_RENDERER, GL_VERSION, GL_EXTENSIONS}))});
         default: {
             const GLenum name = oneOf(kQueryNames);
-            return makeCall(random_.pick<std::string_view>({"glGetBooleanv", "glGetIntegerv", "glGetFloatv", "glGetDoublev"}), {static_cast<double>(name)});
+            return makeCall(
+                random_.pick<std::string_view>({"glGetBooleanv", "glGetIntegerv", "glGetFloatv", "glGetDoublev"}),
+                {static_cast<double>(name)});
         }
         }
     }
@@ -450,18 +530,25 @@ private:
             args = {std::round(random_.uniform(-0.3, 1) * w), std::round(random_.uniform(-0.3, 1) * h),
                     std::round(random_.uniform(0, 1.3) * w), std::round(random_.uniform(0, 1.3) * h)};
         }
-        std::pair<GLenum, GLenum> formatType = random_.pick<std::pair<GLenum, GLenum>>(
-            {{GL_RGBA, GL_UNSIGNED_BYTE}, {GL_RGB, GL_UNSIGNED_BYTE}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT}, {GL_DEPTH_COMPONENT, GL_FLOAT}});
+        std::pair<GLenum, GLenum> formatType =
+            random_.pick<std::pair<GLenum, GLenum>>({{GL_RGBA, GL_UNSIGNED_BYTE},
+                                                     {GL_RGB, GL_UNSIGNED_BYTE},
+                                                     {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT},
+                                                     {GL_DEPTH_COMPONENT, GL_FLOAT}});
         if (random_.chance(invalidEnumRate_)) {
-            formatType = random_.pick<std::pair<GLenum, GLenum>>({{GL_COLOR_INDEX, GL_UNSIGNED_BYTE}, {GL_STENCIL_INDEX, GL_UNSIGNED_BYTE},
-                                                                  {0x1234, GL_UNSIGNED_BYTE}, {GL_RGBA, 0x1234}, {GL_RGBA, GL_BITMAP}});
+            formatType = random_.pick<std::pair<GLenum, GLenum>>({{GL_COLOR_INDEX, GL_UNSIGNED_BYTE},
+                                                                  {GL_STENCIL_INDEX, GL_UNSIGNED_BYTE},
+                                                                  {0x1234, GL_UNSIGNED_BYTE},
+                                                                  {GL_RGBA, 0x1234},
+                                                                  {GL_RGBA, GL_BITMAP}});
         }
         args.push_back(formatType.first);
         args.push_back(formatType.second);
         // Keep the destination allocatable: one row if all rows would not fit.
         const auto bytes = [&] {
             const auto at = [&](int i) { return static_cast<std::int64_t>(args[i]); };
-            return readPixelsBytes(at(0), at(1), at(2), at(3), formatType.first == GL_RGB ? 3 : 4, stream_.width, stream_.height);
+            return readPixelsBytes(at(0), at(1), at(2), at(3), formatType.first == GL_RGB ? 3 : 4, stream_.width,
+                                   stream_.height);
         };
         if (bytes() > kReadPixelsBytesMax) args[3] = 1;
         if (bytes() > kReadPixelsBytesMax) args[2] = w;
@@ -470,9 +557,11 @@ private:
 
     void clear() {
         if (random_.chance(0.5)) emit(stateCall());  // often a clear colour
-        if (random_.chance(0.5)) emit("glClearDepth", {as("d", random_.chance(0.5) ? random_.unit() : random_.pick({0.0, 0.5, 1.0}))});
-        GLbitfield mask = random_.pick<GLbitfield>({GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT,
-                                                    GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT});
+        if (random_.chance(0.5))
+            emit("glClearDepth", {as("d", random_.chance(0.5) ? random_.unit() : random_.pick({0.0, 0.5, 1.0}))});
+        GLbitfield mask = random_.pick<GLbitfield>(
+            {GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT,
+             GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT});
         if (random_.chance(invalidEnumRate_)) mask |= random_.pick<GLbitfield>({0x1, 0x80000000u});
         emit("glClear", {static_cast<double>(mask)});
     }
@@ -481,7 +570,8 @@ private:
         const std::string t = random_.pick<std::string>({"s", "i", "f", "d"});
         const Point a = place(random_.uniform(-1, 1), random_.uniform(-1, 1), 0);
         const Point b = place(random_.uniform(-1, 1), random_.uniform(-1, 1), 0);
-        return makeCall("glRect" + t + (random_.chance(0.5) ? "v" : ""), {as(t, a.x), as(t, a.y), as(t, b.x), as(t, b.y)});
+        return makeCall("glRect" + t + (random_.chance(0.5) ? "v" : ""),
+                        {as(t, a.x), as(t, a.y), as(t, b.x), as(t, b.y)});
     }
 
     // glPushAttrib/glPopAttrib and their client forms between episodes, now and then past the
@@ -490,22 +580,25 @@ private:
     void attribStackCall() {
         RandomSource& r = attribRandom_;
         if (!r.chance(0.35)) return;
-        constexpr GLbitfield kGroups[] = {GL_CURRENT_BIT,  GL_POINT_BIT,    GL_LINE_BIT,        GL_POLYGON_BIT,
+        constexpr GLbitfield kGroups[] = {GL_CURRENT_BIT,  GL_POINT_BIT,        GL_LINE_BIT,     GL_POLYGON_BIT,
                                           GL_LIGHTING_BIT, GL_DEPTH_BUFFER_BIT, GL_VIEWPORT_BIT, GL_TRANSFORM_BIT,
                                           GL_ENABLE_BIT,   GL_COLOR_BUFFER_BIT, GL_HINT_BIT,     GL_LIST_BIT};
         const auto times = r.chance(0.05) ? r.integer(1, 20) : 1;
         for (std::int64_t i = 0; i < times; ++i) {
             switch (r.integer(0, 5)) {
-            case 0: case 1: {
+            case 0:
+            case 1: {
                 GLbitfield mask = r.chance(0.2) ? GL_ALL_ATTRIB_BITS : 0;
                 for (auto n = r.integer(1, 3); n > 0; --n) mask |= kGroups[r.integer(0, std::size(kGroups) - 1)];
                 emit("glPushAttrib", {static_cast<double>(mask)});
                 break;
             }
-            case 2: case 3: emit("glPopAttrib"); break;
+            case 2:
+            case 3: emit("glPopAttrib"); break;
             case 4:
-                emit("glPushClientAttrib", {static_cast<double>(r.pick<GLbitfield>(
-                                               {GL_CLIENT_PIXEL_STORE_BIT, GL_CLIENT_VERTEX_ARRAY_BIT, GL_CLIENT_ALL_ATTRIB_BITS}))});
+                emit("glPushClientAttrib",
+                     {static_cast<double>(r.pick<GLbitfield>(
+                         {GL_CLIENT_PIXEL_STORE_BIT, GL_CLIENT_VERTEX_ARRAY_BIT, GL_CLIENT_ALL_ATTRIB_BITS}))});
                 break;
             default: emit("glPopClientAttrib");
             }
@@ -519,7 +612,8 @@ private:
         std::swap(random_, featureRandom_);
         if (random_.chance(0.3)) {
             switch (random_.integer(0, 6)) {
-            case 0: case 1: lightingCalls(); break;
+            case 0:
+            case 1: lightingCalls(); break;
             case 2: fogCalls(); break;
             case 3: offsetCalls(); break;
             case 4: clipPlaneCalls(); break;
@@ -563,25 +657,32 @@ private:
                 break;
             }
             case 2: {
-                const GLenum pname = oneOf({GL_SPOT_EXPONENT, GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION, GL_LINEAR_ATTENUATION,
-                                            GL_QUADRATIC_ATTENUATION});
+                const GLenum pname = oneOf({GL_SPOT_EXPONENT, GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION,
+                                            GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION});
                 double value = pname == GL_SPOT_EXPONENT ? inRange(0, 128, {-1.0, 129.0, kNaN})
-                               : pname == GL_SPOT_CUTOFF ? (random_.chance(0.3) ? 180.0 : inRange(0, 90, {-1.0, 91.0, 179.0}))
-                                                         : inRange(0, 2, {-0.5, 1e30});
-                emit(random_.chance(0.8) ? "glLightf" : "glLighti", {static_cast<double>(light), static_cast<double>(pname), value});
+                               : pname == GL_SPOT_CUTOFF
+                                   ? (random_.chance(0.3) ? 180.0 : inRange(0, 90, {-1.0, 91.0, 179.0}))
+                                   : inRange(0, 2, {-0.5, 1e30});
+                emit(random_.chance(0.8) ? "glLightf" : "glLighti",
+                     {static_cast<double>(light), static_cast<double>(pname), value});
                 break;
             }
-            case 3: case 4: {
-                const GLenum pname = oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE, GL_SHININESS});
+            case 3:
+            case 4: {
+                const GLenum pname =
+                    oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE, GL_SHININESS});
                 std::vector<double> args{static_cast<double>(face), static_cast<double>(pname)};
-                const std::vector<double> v = pname == GL_SHININESS ? std::vector<double>{inRange(0, 128, {-1.0, 129.0}), 0, 0, 0} : colorValues();
+                const std::vector<double> v = pname == GL_SHININESS
+                                                  ? std::vector<double>{inRange(0, 128, {-1.0, 129.0}), 0, 0, 0}
+                                                  : colorValues();
                 args.insert(args.end(), v.begin(), v.end());
                 emit(random_.chance(0.8) ? "glMaterialfv" : "glMaterialiv", args);
                 break;
             }
             case 5:
                 emit(random_.chance(0.7) ? "glMaterialf" : "glMateriali",
-                     {static_cast<double>(face), static_cast<double>(oneOf({GL_SHININESS})), inRange(0, 128, {-1.0, 200.0})});
+                     {static_cast<double>(face), static_cast<double>(oneOf({GL_SHININESS})),
+                      inRange(0, 128, {-1.0, 200.0})});
                 break;
             case 6: {
                 std::vector<double> args{static_cast<double>(oneOf({GL_LIGHT_MODEL_AMBIENT}))};
@@ -592,10 +693,13 @@ private:
             }
             case 7:
                 emit(random_.chance(0.5) ? "glLightModeli" : "glLightModelf",
-                     {static_cast<double>(oneOf({GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE})), static_cast<double>(random_.integer(0, 1))});
+                     {static_cast<double>(oneOf({GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE})),
+                      static_cast<double>(random_.integer(0, 1))});
                 break;
             case 8:
-                emit("glColorMaterial", {static_cast<double>(face), static_cast<double>(oneOf({GL_EMISSION, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_AMBIENT_AND_DIFFUSE}))});
+                emit("glColorMaterial",
+                     {static_cast<double>(face), static_cast<double>(oneOf({GL_EMISSION, GL_AMBIENT, GL_DIFFUSE,
+                                                                            GL_SPECULAR, GL_AMBIENT_AND_DIFFUSE}))});
                 enableOrDisable(GL_COLOR_MATERIAL);
                 break;
             default: enableOrDisable(random_.pick<GLenum>({GL_NORMALIZE, kRescaleNormal}));
@@ -608,10 +712,14 @@ private:
         for (auto n = random_.integer(1, 4); n > 0; --n) {
             switch (random_.integer(0, 3)) {
             case 0:
-                emit(random_.chance(0.7) ? "glFogi" : "glFogf", {GL_FOG_MODE, static_cast<double>(oneOf({GL_LINEAR, GL_EXP, GL_EXP2}))});
+                emit(random_.chance(0.7) ? "glFogi" : "glFogf",
+                     {GL_FOG_MODE, static_cast<double>(oneOf({GL_LINEAR, GL_EXP, GL_EXP2}))});
                 break;
             case 1: emit("glFogf", {GL_FOG_DENSITY, inRange(0, 3, {-1.0, kInf})}); break;
-            case 2: emit(random_.chance(0.8) ? "glFogf" : "glFogi", {static_cast<double>(oneOf({GL_FOG_START, GL_FOG_END})), inRange(-1, 5, {kNaN, 1e30})}); break;
+            case 2:
+                emit(random_.chance(0.8) ? "glFogf" : "glFogi",
+                     {static_cast<double>(oneOf({GL_FOG_START, GL_FOG_END})), inRange(-1, 5, {kNaN, 1e30})});
+                break;
             default: {
                 std::vector<double> args{static_cast<double>(oneOf({GL_FOG_COLOR}))};
                 const std::vector<double> v = colorValues();
@@ -623,15 +731,17 @@ private:
     }
 
     void offsetCalls() {
-        if (random_.chance(0.7)) emit("glPolygonOffset", {inRange(-2, 2, {kNaN, 1e30, -kInf}), inRange(-4, 4, {kNaN, 1e30})});
+        if (random_.chance(0.7))
+            emit("glPolygonOffset", {inRange(-2, 2, {kNaN, 1e30, -kInf}), inRange(-4, 4, {kNaN, 1e30})});
         enableOrDisable(oneOf({GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT}));
     }
 
     void clipPlaneCalls() {
         const GLenum plane = numbered(GL_CLIP_PLANE0, 6);
         if (random_.chance(0.8)) {
-            emit("glClipPlane", {static_cast<double>(plane), as("d", random_.uniform(-1, 1)), as("d", random_.uniform(-1, 1)),
-                                 as("d", random_.uniform(-1, 1)), as("d", random_.uniform(-0.5, 0.5))});
+            emit("glClipPlane",
+                 {static_cast<double>(plane), as("d", random_.uniform(-1, 1)), as("d", random_.uniform(-1, 1)),
+                  as("d", random_.uniform(-1, 1)), as("d", random_.uniform(-0.5, 0.5))});
         }
         enableOrDisable(plane, 0.6);
     }
@@ -640,37 +750,65 @@ private:
     void listCalls() {
         const double list = static_cast<double>(random_.integer(1, 4));
         if (random_.chance(0.5)) {
-            emit("glNewList", {random_.chance(0.97) ? list : 0.0,
-                               static_cast<double>(oneOf({GL_COMPILE, GL_COMPILE_AND_EXECUTE}))});
+            emit("glNewList",
+                 {random_.chance(0.97) ? list : 0.0, static_cast<double>(oneOf({GL_COMPILE, GL_COMPILE_AND_EXECUTE}))});
             for (auto n = random_.integer(1, 3); n > 0; --n) episode();
             emit("glEndList");
         }
         if (random_.chance(0.7)) emit("glCallList", {list});
         if (random_.chance(0.1)) emit("glDeleteLists", {list, static_cast<double>(random_.integer(1, 2))});
-        if (random_.chance(0.05)) emit("glListBase", {static_cast<double>(random_.integer(0, 3))});  // glCallList ignores it
+        if (random_.chance(0.05))
+            emit("glListBase", {static_cast<double>(random_.integer(0, 3))});  // glCallList ignores it
     }
 
     Call featureQuery() {
-        static constexpr GLenum kNames[] = {
-            GL_LIGHTING, GL_LIGHT0, GL_LIGHT5, GL_COLOR_MATERIAL, GL_COLOR_MATERIAL_FACE, GL_COLOR_MATERIAL_PARAMETER,
-            GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_NORMALIZE, GL_MAX_LIGHTS,
-            GL_FOG, GL_FOG_MODE, GL_FOG_DENSITY, GL_FOG_START, GL_FOG_END, GL_FOG_COLOR, GL_POLYGON_OFFSET_FACTOR,
-            GL_POLYGON_OFFSET_UNITS, GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_CLIP_PLANE0, GL_CLIP_PLANE3,
-            GL_MAX_CLIP_PLANES, GL_LIST_INDEX, GL_LIST_MODE, GL_LIST_BASE, GL_MAX_LIST_NESTING};
+        static constexpr GLenum kNames[] = {GL_LIGHTING,
+                                            GL_LIGHT0,
+                                            GL_LIGHT5,
+                                            GL_COLOR_MATERIAL,
+                                            GL_COLOR_MATERIAL_FACE,
+                                            GL_COLOR_MATERIAL_PARAMETER,
+                                            GL_LIGHT_MODEL_AMBIENT,
+                                            GL_LIGHT_MODEL_LOCAL_VIEWER,
+                                            GL_LIGHT_MODEL_TWO_SIDE,
+                                            GL_NORMALIZE,
+                                            GL_MAX_LIGHTS,
+                                            GL_FOG,
+                                            GL_FOG_MODE,
+                                            GL_FOG_DENSITY,
+                                            GL_FOG_START,
+                                            GL_FOG_END,
+                                            GL_FOG_COLOR,
+                                            GL_POLYGON_OFFSET_FACTOR,
+                                            GL_POLYGON_OFFSET_UNITS,
+                                            GL_POLYGON_OFFSET_FILL,
+                                            GL_POLYGON_OFFSET_LINE,
+                                            GL_CLIP_PLANE0,
+                                            GL_CLIP_PLANE3,
+                                            GL_MAX_CLIP_PLANES,
+                                            GL_LIST_INDEX,
+                                            GL_LIST_MODE,
+                                            GL_LIST_BASE,
+                                            GL_MAX_LIST_NESTING};
         const GLenum face = oneOf({GL_FRONT, GL_BACK});
         switch (random_.integer(0, 5)) {
-        case 0: return makeCall(random_.chance(0.5) ? "glGetLightfv" : "glGetLightiv",
-                                {static_cast<double>(numbered(GL_LIGHT0, 8)),
-                                 static_cast<double>(oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_POSITION, GL_SPOT_DIRECTION,
-                                                            GL_SPOT_EXPONENT, GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION,
-                                                            GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION}))});
-        case 1: return makeCall(random_.chance(0.5) ? "glGetMaterialfv" : "glGetMaterialiv",
-                                {static_cast<double>(face),
-                                 static_cast<double>(oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_SHININESS}))});
+        case 0:
+            return makeCall(
+                random_.chance(0.5) ? "glGetLightfv" : "glGetLightiv",
+                {static_cast<double>(numbered(GL_LIGHT0, 8)),
+                 static_cast<double>(oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_POSITION, GL_SPOT_DIRECTION,
+                                            GL_SPOT_EXPONENT, GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION,
+                                            GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION}))});
+        case 1:
+            return makeCall(
+                random_.chance(0.5) ? "glGetMaterialfv" : "glGetMaterialiv",
+                {static_cast<double>(face),
+                 static_cast<double>(oneOf({GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_SHININESS}))});
         case 2: return makeCall("glGetClipPlane", {static_cast<double>(numbered(GL_CLIP_PLANE0, 6))});
         case 3: return makeCall("glIsList", {static_cast<double>(random_.integer(0, 5))});
         default:
-            return makeCall(random_.pick<std::string_view>({"glGetBooleanv", "glGetIntegerv", "glGetFloatv", "glGetDoublev", "glIsEnabled"}),
+            return makeCall(random_.pick<std::string_view>(
+                                {"glGetBooleanv", "glGetIntegerv", "glGetFloatv", "glGetDoublev", "glIsEnabled"}),
                             {static_cast<double>(oneOf(kNames))});
         }
     }
@@ -691,10 +829,10 @@ private:
     AvoidedCounts& avoided_;
     Stream stream_;
     StreamContext context_;
-    double badness_ = 0;           // the rate at which a value is replaced by a bad one
-    double invalidEnumRate_ = 0;   // the rate at which an enum is replaced by an invalid one
-    bool pixelSpace_ = false;      // the projection maps object coordinates to window pixels
-    bool bigDrawLeft_ = false;     // this stream may still draw one block of 10k-100k vertices
+    double badness_ = 0;          // the rate at which a value is replaced by a bad one
+    double invalidEnumRate_ = 0;  // the rate at which an enum is replaced by an invalid one
+    bool pixelSpace_ = false;     // the projection maps object coordinates to window pixels
+    bool bigDrawLeft_ = false;    // this stream may still draw one block of 10k-100k vertices
 };
 
 }  // namespace

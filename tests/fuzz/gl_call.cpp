@@ -41,14 +41,22 @@ T fromDouble(double v) {
 
 template <class T>
 std::string typeName() {
-    if constexpr (std::is_same_v<T, GLfloat>) return "GLfloat";
-    else if constexpr (std::is_same_v<T, GLdouble>) return "GLdouble";
-    else if constexpr (std::is_same_v<T, GLint>) return "GLint";
-    else if constexpr (std::is_same_v<T, GLuint>) return "GLuint";
-    else if constexpr (std::is_same_v<T, GLshort>) return "GLshort";
-    else if constexpr (std::is_same_v<T, GLushort>) return "GLushort";
-    else if constexpr (std::is_same_v<T, GLbyte>) return "GLbyte";
-    else return "GLubyte";  // also GLboolean, the same type
+    if constexpr (std::is_same_v<T, GLfloat>)
+        return "GLfloat";
+    else if constexpr (std::is_same_v<T, GLdouble>)
+        return "GLdouble";
+    else if constexpr (std::is_same_v<T, GLint>)
+        return "GLint";
+    else if constexpr (std::is_same_v<T, GLuint>)
+        return "GLuint";
+    else if constexpr (std::is_same_v<T, GLshort>)
+        return "GLshort";
+    else if constexpr (std::is_same_v<T, GLushort>)
+        return "GLushort";
+    else if constexpr (std::is_same_v<T, GLbyte>)
+        return "GLbyte";
+    else
+        return "GLubyte";  // also GLboolean, the same type
 }
 
 std::string floatingLiteral(double v, int digits, const char* suffix) {
@@ -157,7 +165,8 @@ UnsignedStyle unsignedStyle(std::string_view name) {
     if (name == "glClear" || name.ends_with("Attrib")) return UnsignedStyle::ClearMask;
     if (name == "glBegin") return UnsignedStyle::PrimitiveMode;
     if (name.ends_with("List") || name.ends_with("Lists") || name == "glListBase") return UnsignedStyle::Number;
-    if (name.ends_with("Texture") || name.ends_with("Textures") || name.starts_with("glStencil")) return UnsignedStyle::Number;
+    if (name.ends_with("Texture") || name.ends_with("Textures") || name.starts_with("glStencil"))
+        return UnsignedStyle::Number;
     return UnsignedStyle::Enum;
 }
 
@@ -187,23 +196,29 @@ struct Entry<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
         const UnsignedStyle style = unsignedStyle(name);
         std::string declarations, arguments;
         int slot = 0;
-        std::apply([&](const auto&... p) {
-            ((declarations += p.declare(slot), arguments += (slot ? ", " : "") + p.print(slot, style), ++slot), ...);
-        }, parameters);
+        std::apply(
+            [&](const auto&... p) {
+                ((declarations += p.declare(slot), arguments += (slot ? ", " : "") + p.print(slot, style), ++slot),
+                 ...);
+            },
+            parameters);
         const std::string statement = std::string(name) + "(" + arguments + ");";
         return declarations.empty() ? statement : "{ " + declarations + statement + " }";
     }
 };
 
 // Every entry point the fuzzer calls: the recorded (state and drawing) calls and the queries.
+// clang-format off
 #define MYGL_QUERY_CALLS(X)                                                                       \
     X(glad_glGetError, 0) X(glad_glGetBooleanv, 0) X(glad_glGetIntegerv, 0) X(glad_glGetFloatv, 0) \
     X(glad_glGetDoublev, 0) X(glad_glIsEnabled, 0) X(glad_glGetString, 0)                        \
     X(glad_glGetLightfv, 0) X(glad_glGetLightiv, 0) X(glad_glGetMaterialfv, 0) X(glad_glGetMaterialiv, 0) \
     X(glad_glGetClipPlane, 0) X(glad_glIsList, 0)
+// clang-format on
 
 // Lighting, fog, polygon offset, clip planes and display lists: state calls the call recorder
 // lists apart (their pointers hold up to 4 values for every parameter name).
+// clang-format off
 #define MYGL_FEATURE_CALLS(X)                                                                     \
     X(glad_glLightf, 0) X(glad_glLighti, 0) X(glad_glLightfv, 4) X(glad_glLightiv, 4)             \
     X(glad_glMaterialf, 0) X(glad_glMateriali, 0) X(glad_glMaterialfv, 4) X(glad_glMaterialiv, 4) \
@@ -211,10 +226,12 @@ struct Entry<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
     X(glad_glColorMaterial, 0) X(glad_glFogf, 0) X(glad_glFogi, 0) X(glad_glFogfv, 4) X(glad_glFogiv, 4) \
     X(glad_glPolygonOffset, 0) X(glad_glClipPlane, 4)                                             \
     X(glad_glNewList, 0) X(glad_glEndList, 0) X(glad_glCallList, 0) X(glad_glDeleteLists, 0) X(glad_glListBase, 0)
+// clang-format on
 
 // Textures, per-fragment operations, stipple, pixel rectangles, raster positions and the
 // accumulation buffer (the image calls are in image_calls.cpp). glGenTextures writes at most 16
 // names, glPixelMap reads and glGetPixelMap writes at most 16 entries: the generator keeps to that.
+// clang-format off
 #define MYGL_PIXEL_FEATURE_CALLS(X)                                                               \
     X(glad_glGenTextures, 0) X(glad_glDeleteTextures, 4) X(glad_glBindTexture, 0) X(glad_glIsTexture, 0) \
     X(glad_glPrioritizeTextures, 4) X(glad_glTexParameterf, 0) X(glad_glTexParameteri, 0)        \
@@ -244,13 +261,16 @@ struct Entry<Slot, Count, R(GLAD_API_PTR*)(Args...)> {
     X(glad_glRasterPos3dv, 3) X(glad_glRasterPos3fv, 3) X(glad_glRasterPos3iv, 3) X(glad_glRasterPos3sv, 3) \
     X(glad_glRasterPos4dv, 4) X(glad_glRasterPos4fv, 4) X(glad_glRasterPos4iv, 4) X(glad_glRasterPos4sv, 4) \
     X(glad_glClearAccum, 0) X(glad_glAccum, 0)
+// clang-format on
 
 const std::vector<FunctionInfo>& table() {
     static const std::vector<FunctionInfo> functions = [] {
         std::vector<FunctionInfo> t;
+// clang-format off
 #define MYGL_FUZZ_ENTRY(slot, count)                                                              \
     t.push_back({std::string_view(#slot).substr(5), Entry<slot, count>::kDoubles, &Entry<slot, count>::run, \
                  [](const Call& c) { return Entry<slot, count>::print(c, std::string_view(#slot).substr(5)); }});
+        // clang-format on
         MYGL_RECORDED_CALLS(MYGL_FUZZ_ENTRY)
         MYGL_QUERY_CALLS(MYGL_FUZZ_ENTRY)
         MYGL_FEATURE_CALLS(MYGL_FUZZ_ENTRY)
@@ -297,7 +317,8 @@ std::size_t readPixelsBytes(std::int64_t x, std::int64_t y, std::int64_t w, std:
                             int width, int height) {
     const std::int64_t lastColumn = std::min<std::int64_t>(x + w, width) - 1 - x;
     const std::int64_t lastRow = std::min<std::int64_t>(y + h, height) - 1 - y;
-    if (w <= 0 || h <= 0 || lastColumn < std::max<std::int64_t>(0, -x) || lastRow < std::max<std::int64_t>(0, -y)) return 4;
+    if (w <= 0 || h <= 0 || lastColumn < std::max<std::int64_t>(0, -x) || lastRow < std::max<std::int64_t>(0, -y))
+        return 4;
     const std::int64_t rowBytes = (w * bytesPerPixel + 7) / 8 * 8;
     return static_cast<std::size_t>(std::max<std::int64_t>(4, lastRow * rowBytes + (lastColumn + 1) * bytesPerPixel));
 }

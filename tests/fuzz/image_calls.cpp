@@ -45,16 +45,24 @@ int componentsOf(GLenum format) {
     switch (format) {
     case GL_LUMINANCE_ALPHA: return 2;
     case GL_RGB: return 3;
-    case GL_COLOR_INDEX: case GL_STENCIL_INDEX: case GL_DEPTH_COMPONENT: case GL_RED: case GL_GREEN:
-    case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: return 1;
+    case GL_COLOR_INDEX:
+    case GL_STENCIL_INDEX:
+    case GL_DEPTH_COMPONENT:
+    case GL_RED:
+    case GL_GREEN:
+    case GL_BLUE:
+    case GL_ALPHA:
+    case GL_LUMINANCE: return 1;
     default: return 4;  // RGBA, and the most for a format GL rejects
     }
 }
 
 int typeBytes(GLenum type) {
     switch (type) {
-    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
-    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    case GL_UNSIGNED_BYTE:
+    case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT:
+    case GL_SHORT: return 2;
     default: return 4;  // int, uint, float, and the most for a type GL rejects
     }
 }
@@ -107,10 +115,13 @@ std::string declareData(std::uint32_t seed, GLenum type, std::size_t bytes) {
     char hashed[160];
     std::snprintf(hashed, sizeof hashed, hash, seed);
     if (saneFloats(seed, type)) {
-        std::snprintf(text, sizeof text, "static GLfloat d[%zu]; for (GLuint i = 0; i < %zu; ++i) { %s d[i] = (GLfloat)(h %% 1001) / 1000.0f; } ",
-                      (bytes + 3) / 4, bytes / 4, hashed);
+        std::snprintf(
+            text, sizeof text,
+            "static GLfloat d[%zu]; for (GLuint i = 0; i < %zu; ++i) { %s d[i] = (GLfloat)(h %% 1001) / 1000.0f; } ",
+            (bytes + 3) / 4, bytes / 4, hashed);
     } else {
-        std::snprintf(text, sizeof text, "static GLubyte d[%zu]; for (GLuint i = 0; i < %zu; ++i) { %s d[i] = (GLubyte)h; } ", bytes,
+        std::snprintf(text, sizeof text,
+                      "static GLubyte d[%zu]; for (GLuint i = 0; i < %zu; ++i) { %s d[i] = (GLubyte)h; } ", bytes,
                       bytes, hashed);
     }
     return text;
@@ -170,23 +181,53 @@ Shape textureLevel(const Args& a, int, int) {
 Shape readRectangle(const Args& a, int, int) { return {I(a[2]), I(a[3]), E(a[4]), E(a[5])}; }
 
 const Description kDescriptions[] = {
-    {"glTexImage1D", "eiiiiee", true, [](const Args& a, int, int) { return Shape{I(a[3]), 1, E(a[5]), E(a[6])}; },
+    {"glTexImage1D", "eiiiiee", true,
+     [](const Args& a, int, int) {
+         return Shape{I(a[3]), 1, E(a[5]), E(a[6])};
+     },
      [](const Args& a, void* d) { glTexImage1D(E(a[0]), I(a[1]), I(a[2]), I(a[3]), I(a[4]), E(a[5]), E(a[6]), d); }},
-    {"glTexImage2D", "eiiiiiee", true, [](const Args& a, int, int) { return Shape{I(a[3]), I(a[4]), E(a[6]), E(a[7])}; },
-     [](const Args& a, void* d) { glTexImage2D(E(a[0]), I(a[1]), I(a[2]), I(a[3]), I(a[4]), I(a[5]), E(a[6]), E(a[7]), d); }},
-    {"glTexSubImage1D", "eiiiee", true, [](const Args& a, int, int) { return Shape{I(a[3]), 1, E(a[4]), E(a[5])}; },
+    {"glTexImage2D", "eiiiiiee", true,
+     [](const Args& a, int, int) {
+         return Shape{I(a[3]), I(a[4]), E(a[6]), E(a[7])};
+     },
+     [](const Args& a, void* d) {
+         glTexImage2D(E(a[0]), I(a[1]), I(a[2]), I(a[3]), I(a[4]), I(a[5]), E(a[6]), E(a[7]), d);
+     }},
+    {"glTexSubImage1D", "eiiiee", true,
+     [](const Args& a, int, int) {
+         return Shape{I(a[3]), 1, E(a[4]), E(a[5])};
+     },
      [](const Args& a, void* d) { glTexSubImage1D(E(a[0]), I(a[1]), I(a[2]), I(a[3]), E(a[4]), E(a[5]), d); }},
-    {"glTexSubImage2D", "eiiiiiee", true, [](const Args& a, int, int) { return Shape{I(a[4]), I(a[5]), E(a[6]), E(a[7])}; },
-     [](const Args& a, void* d) { glTexSubImage2D(E(a[0]), I(a[1]), I(a[2]), I(a[3]), I(a[4]), I(a[5]), E(a[6]), E(a[7]), d); }},
-    {"glDrawPixels", "iiee", true, [](const Args& a, int, int) { return Shape{I(a[0]), I(a[1]), E(a[2]), E(a[3])}; },
+    {"glTexSubImage2D", "eiiiiiee", true,
+     [](const Args& a, int, int) {
+         return Shape{I(a[4]), I(a[5]), E(a[6]), E(a[7])};
+     },
+     [](const Args& a, void* d) {
+         glTexSubImage2D(E(a[0]), I(a[1]), I(a[2]), I(a[3]), I(a[4]), I(a[5]), E(a[6]), E(a[7]), d);
+     }},
+    {"glDrawPixels", "iiee", true,
+     [](const Args& a, int, int) {
+         return Shape{I(a[0]), I(a[1]), E(a[2]), E(a[3])};
+     },
      [](const Args& a, void* d) { glDrawPixels(I(a[0]), I(a[1]), E(a[2]), E(a[3]), d); }},
-    {"glBitmap", "iiffff", true, [](const Args& a, int, int) { return Shape{I(a[0]), I(a[1]), GL_COLOR_INDEX, GL_BITMAP}; },
-     [](const Args& a, void* d) { glBitmap(I(a[0]), I(a[1]), F(a[2]), F(a[3]), F(a[4]), F(a[5]), static_cast<const GLubyte*>(d)); }},
-    {"glPolygonStipple", "", true, [](const Args&, int, int) { return Shape{32, 32, GL_COLOR_INDEX, GL_BITMAP}; },
+    {"glBitmap", "iiffff", true,
+     [](const Args& a, int, int) {
+         return Shape{I(a[0]), I(a[1]), GL_COLOR_INDEX, GL_BITMAP};
+     },
+     [](const Args& a, void* d) {
+         glBitmap(I(a[0]), I(a[1]), F(a[2]), F(a[3]), F(a[4]), F(a[5]), static_cast<const GLubyte*>(d));
+     }},
+    {"glPolygonStipple", "", true,
+     [](const Args&, int, int) {
+         return Shape{32, 32, GL_COLOR_INDEX, GL_BITMAP};
+     },
      [](const Args&, void* d) { glPolygonStipple(static_cast<const GLubyte*>(d)); }},
     {"glReadPixels", "iiiiee", false, readRectangle,
      [](const Args& a, void* d) { glReadPixels(I(a[0]), I(a[1]), I(a[2]), I(a[3]), E(a[4]), E(a[5]), d); }},
-    {"glGetPolygonStipple", "", false, [](const Args&, int, int) { return Shape{32, 32, GL_COLOR_INDEX, GL_BITMAP}; },
+    {"glGetPolygonStipple", "", false,
+     [](const Args&, int, int) {
+         return Shape{32, 32, GL_COLOR_INDEX, GL_BITMAP};
+     },
      [](const Args&, void* d) { glGetPolygonStipple(static_cast<GLubyte*>(d)); }},
     {"glGetTexImage", "eiee", false, textureLevel,
      [](const Args& a, void* d) { glGetTexImage(E(a[0]), I(a[1]), E(a[2]), E(a[3]), d); }},
@@ -197,7 +238,9 @@ std::size_t readPixelsExtent(const Args& a, const Shape& s, const Layout& l, int
     const std::int64_t x = I(a[0]), y = I(a[1]);
     const std::int64_t lastColumn = std::min<std::int64_t>(x + s.width, width) - 1 - x;
     const std::int64_t lastRow = std::min<std::int64_t>(y + s.height, height) - 1 - y;
-    if (s.width <= 0 || s.height <= 0 || lastColumn < std::max<std::int64_t>(0, -x) || lastRow < std::max<std::int64_t>(0, -y)) return 4;
+    if (s.width <= 0 || s.height <= 0 || lastColumn < std::max<std::int64_t>(0, -x) ||
+        lastRow < std::max<std::int64_t>(0, -y))
+        return 4;
     return std::max<std::size_t>(4, bytesThrough(s, l, lastColumn, lastRow));
 }
 
@@ -207,7 +250,8 @@ void run(const Call& call, std::uint32_t index, int width, int height, Answers& 
     const Args& a = call.args;
     const Shape shape = d.shape(a, width, height);
     const Layout l = layout(!d.reads);
-    const std::size_t bytes = d.name == "glReadPixels" ? readPixelsExtent(a, shape, l, width, height) : imageBytes(shape, l);
+    const std::size_t bytes =
+        d.name == "glReadPixels" ? readPixelsExtent(a, shape, l, width, height) : imageBytes(shape, l);
     if (bytes > kImageBytesMax) return;  // the generator keeps images smaller; only a hand-edited stream gets here
     if (d.reads) {
         const auto seed = static_cast<std::uint32_t>(I(a[d.kinds.size()]));
@@ -230,20 +274,21 @@ std::string print(const Call& call) {
     // The data as the default unpack state needs it; a stream that changes the state may need more.
     const Shape shape = d.shape(a, 0, 0);
     const std::size_t bytes = imageBytes(shape, Layout{0, 0, 0, 4}) + 4096;
-    return "{ " + declareData(static_cast<std::uint32_t>(I(a[d.kinds.size()])), shape.type, bytes) + std::string(d.name) + "(" +
-           arguments + "d); }";
+    return "{ " + declareData(static_cast<std::uint32_t>(I(a[d.kinds.size()])), shape.type, bytes) +
+           std::string(d.name) + "(" + arguments + "d); }";
 }
 
 template <std::size_t... N>
 std::vector<ImageFunction> makeFunctions(std::index_sequence<N...>) {
-    return {ImageFunction{kDescriptions[N].name, kDescriptions[N].kinds.size() + (kDescriptions[N].reads ? 1 : 0), &run<N>,
-                          &print<N>}...};
+    return {ImageFunction{kDescriptions[N].name, kDescriptions[N].kinds.size() + (kDescriptions[N].reads ? 1 : 0),
+                          &run<N>, &print<N>}...};
 }
 
 }  // namespace
 
 const std::vector<ImageFunction>& imageFunctions() {
-    static const std::vector<ImageFunction> functions = makeFunctions(std::make_index_sequence<std::size(kDescriptions)>());
+    static const std::vector<ImageFunction> functions =
+        makeFunctions(std::make_index_sequence<std::size(kDescriptions)>());
     return functions;
 }
 

@@ -72,15 +72,24 @@ Options parse(int argc, char** argv) {
             if (i + 1 >= argc) usage();
             return std::strtoull(argv[++i], nullptr, 10);
         };
-        if (arg == "--seeds") o.seeds = number();
-        else if (arg == "--start") o.start = number();
-        else if (arg == "--shrink") o.shrink = true;
-        else if (arg == "--print") o.printStreams = true;
-        else if (arg == "--size-max") o.generator.sizeMax = static_cast<int>(std::max<unsigned long long>(1, number()));
-        else if (arg == "--timeout-ms") o.shrinking.timeout = std::chrono::milliseconds(number());
-        else if (arg == "--shrink-trials") o.shrinking.maxTrials = static_cast<int>(number());
-        else if (arg == "--expected" && i + 1 < argc) o.expected = readExpected(argv[++i]);
-        else usage();
+        if (arg == "--seeds")
+            o.seeds = number();
+        else if (arg == "--start")
+            o.start = number();
+        else if (arg == "--shrink")
+            o.shrink = true;
+        else if (arg == "--print")
+            o.printStreams = true;
+        else if (arg == "--size-max")
+            o.generator.sizeMax = static_cast<int>(std::max<unsigned long long>(1, number()));
+        else if (arg == "--timeout-ms")
+            o.shrinking.timeout = std::chrono::milliseconds(number());
+        else if (arg == "--shrink-trials")
+            o.shrinking.maxTrials = static_cast<int>(number());
+        else if (arg == "--expected" && i + 1 < argc)
+            o.expected = readExpected(argv[++i]);
+        else
+            usage();
     }
     return o;
 }
@@ -101,7 +110,9 @@ int main(int argc, char** argv) {
         const fuzz::BothOutcomes outcomes = fuzz::runOnBothBackends(stream, options.shrinking.timeout);
         coverage.add(stream, outcomes.osmesa);
         const fuzz::Difference d = fuzz::compareOutcomes(stream, outcomes);
-        if (options.printStreams) std::printf("/* seed %llu */\n%s", static_cast<unsigned long long>(seed), fuzz::toCSnippet(stream, d).c_str());
+        if (options.printStreams)
+            std::printf("/* seed %llu */\n%s", static_cast<unsigned long long>(seed),
+                        fuzz::toCSnippet(stream, d).c_str());
         for (std::size_t c = 0; c < std::size(shown); ++c) shown[c] += d.classes[c];
         const auto known = options.expected.find(seed);
         const bool asExpected = known != options.expected.end() && known->second == fuzz::className(d.failure);
@@ -116,8 +127,8 @@ int main(int argc, char** argv) {
         }
         unexpected += !asExpected;
         ++primary[static_cast<std::size_t>(d.failure) - 1];
-        std::printf("seed %llu (%dx%d, %zu calls): %s: %s\n", static_cast<unsigned long long>(seed), stream.width, stream.height,
-                    stream.calls.size(), fuzz::className(d.failure), d.detail.c_str());
+        std::printf("seed %llu (%dx%d, %zu calls): %s: %s\n", static_cast<unsigned long long>(seed), stream.width,
+                    stream.height, stream.calls.size(), fuzz::className(d.failure), d.detail.c_str());
         std::fflush(stdout);
         if (options.shrink) {
             const fuzz::ShrinkResult shrunk = fuzz::shrinkStream(stream, d, options.shrinking);
@@ -134,8 +145,8 @@ int main(int argc, char** argv) {
                 options.generator.sizeMax, seconds);
     std::printf("  identical: %zu\n", identical);
     for (std::size_t c = 0; c < std::size(fuzz::kFailureClasses); ++c) {
-        std::printf("  %-15s %zu seeds (%zu show it at all)\n", (std::string(fuzz::className(fuzz::kFailureClasses[c])) + ":").c_str(),
-                    primary[c], shown[c]);
+        std::printf("  %-15s %zu seeds (%zu show it at all)\n",
+                    (std::string(fuzz::className(fuzz::kFailureClasses[c])) + ":").c_str(), primary[c], shown[c]);
     }
     std::printf("%s", coverage.summary().c_str());
     std::printf("  calls the generator left out, by reference-departure rule:\n");

@@ -16,7 +16,11 @@ class PixelFeatureCalls {
 public:
     // `badness`: the rate of bad values; `invalidEnumRate`: of invalid enums (the stream's own).
     PixelFeatureCalls(std::uint64_t seed, int width, int height, double badness, double invalidEnumRate)
-        : random_(seed ^ 0x7E27u), width_(width), height_(height), badness_(badness), invalidEnumRate_(invalidEnumRate) {}
+        : random_(seed ^ 0x7E27u),
+          width_(width),
+          height_(height),
+          badness_(badness),
+          invalidEnumRate_(invalidEnumRate) {}
 
     // Now and then a group of calls, each given to `emit`.
     void between(const std::function<void(Call)>& emit);

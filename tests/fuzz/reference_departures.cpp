@@ -56,7 +56,8 @@ bool anyBeyond(std::string_view name, const std::vector<double>& args, double li
 
 bool isNonCanonicalBoolean(const Call& call, const StreamContext&) {
     const std::string_view name = functionName(call);
-    return (name == "glDepthMask" || name.starts_with("glEdgeFlag")) && call.args[0] != GL_FALSE && call.args[0] != GL_TRUE;
+    return (name == "glDepthMask" || name.starts_with("glEdgeFlag")) && call.args[0] != GL_FALSE &&
+           call.args[0] != GL_TRUE;
 }
 
 bool isColor3fKeepingAlpha(const Call& call, const StreamContext& context) {
@@ -85,8 +86,9 @@ bool readPixelsSumOverflows(const Call& call, const StreamContext&) {
 
 bool readsUnknownFormat(const Call& call, const StreamContext&) {
     if (functionName(call) != "glReadPixels" || call.args[2] < 0 || call.args[3] < 0) return false;
-    constexpr GLenum kFormats[] = {GL_COLOR_INDEX, GL_STENCIL_INDEX, GL_DEPTH_COMPONENT, GL_RED, GL_GREEN, GL_BLUE,
-                                   GL_ALPHA, GL_RGB, GL_RGBA, GL_LUMINANCE, GL_LUMINANCE_ALPHA};
+    constexpr GLenum kFormats[] = {GL_COLOR_INDEX, GL_STENCIL_INDEX, GL_DEPTH_COMPONENT, GL_RED,
+                                   GL_GREEN,       GL_BLUE,          GL_ALPHA,           GL_RGB,
+                                   GL_RGBA,        GL_LUMINANCE,     GL_LUMINANCE_ALPHA};
     return std::find(std::begin(kFormats), std::end(kFormats), static_cast<GLenum>(call.args[4])) == std::end(kFormats);
 }
 
@@ -101,7 +103,8 @@ bool togglesLightUnderEnableBit(const Call& call, const StreamContext& context) 
 }
 
 bool popsNestedChange(const Call& call, const StreamContext& context) {
-    return functionName(call) == "glPopAttrib" && context.attribStack.size() >= 2 && context.attribStack.back().changedSince;
+    return functionName(call) == "glPopAttrib" && context.attribStack.size() >= 2 &&
+           context.attribStack.back().changedSince;
 }
 
 // glTexImage2D/glCopyTexImage2D's border argument and height, by argument position.
@@ -141,7 +144,8 @@ bool queriesPriorityAsInteger(const Call& call, const StreamContext&) {
 bool movesStencilAsBitmap(const Call& call, const StreamContext&) {
     const std::string_view name = functionName(call);
     const std::size_t format = name == "glReadPixels" ? 4 : name == "glDrawPixels" ? 2 : 0;
-    return format && static_cast<GLenum>(call.args[format]) == GL_STENCIL_INDEX && static_cast<GLenum>(call.args[format + 1]) == GL_BITMAP;
+    return format && static_cast<GLenum>(call.args[format]) == GL_STENCIL_INDEX &&
+           static_cast<GLenum>(call.args[format + 1]) == GL_BITMAP;
 }
 
 bool drawsIndexImage(const Call& call, const StreamContext&) {
@@ -153,8 +157,9 @@ bool failsFloatLevelQuery(const Call& call, const StreamContext&) {
     if (functionName(call) != "glGetTexLevelParameterfv") return false;
     const auto target = static_cast<GLenum>(call.args[0]);
     const auto pname = static_cast<GLenum>(call.args[2]);
-    constexpr GLenum kNames[] = {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER, GL_TEXTURE_COMPONENTS, GL_TEXTURE_RED_SIZE,
-                                 GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE,
+    constexpr GLenum kNames[] = {GL_TEXTURE_WIDTH,         GL_TEXTURE_HEIGHT,     GL_TEXTURE_BORDER,
+                                 GL_TEXTURE_COMPONENTS,    GL_TEXTURE_RED_SIZE,   GL_TEXTURE_GREEN_SIZE,
+                                 GL_TEXTURE_BLUE_SIZE,     GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE,
                                  GL_TEXTURE_INTENSITY_SIZE};
     return (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) || call.args[1] < 0 || call.args[1] > 14 ||
            std::find(std::begin(kNames), std::end(kNames), pname) == std::end(kNames);
@@ -170,13 +175,14 @@ bool copiesTextureWithBadInternalFormat(const Call& call, const StreamContext&) 
     if (name != "glCopyTexImage1D" && name != "glCopyTexImage2D") return false;
     const auto internal = static_cast<GLenum>(call.args[2]);
     // GL 1.1 leaves 1, 2, 3 and 4 out of glCopyTexImage's formats.
-    constexpr GLenum kFormats[] = {GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, 0x8049, GL_RGB, GL_RGBA,
-                                   GL_RGB8, GL_RGBA8, GL_LUMINANCE8, GL_ALPHA8};
+    constexpr GLenum kFormats[] = {GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, 0x8049,        GL_RGB,
+                                   GL_RGBA,  GL_RGB8,      GL_RGBA8,           GL_LUMINANCE8, GL_ALPHA8};
     return std::find(std::begin(kFormats), std::end(kFormats), internal) == std::end(kFormats);
 }
 
 bool queriesLevelFormat(const Call& call, const StreamContext&) {
-    return functionName(call).starts_with("glGetTexLevelParameter") && static_cast<GLenum>(call.args[2]) == GL_TEXTURE_COMPONENTS;
+    return functionName(call).starts_with("glGetTexLevelParameter") &&
+           static_cast<GLenum>(call.args[2]) == GL_TEXTURE_COMPONENTS;
 }
 
 bool drawsDepthWithUnflushedColor(const Call& call, const StreamContext& c) {
@@ -191,7 +197,8 @@ constexpr Departure kDepartures[] = {
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
      isIntegerMatrixQuery},
     {"integer-query-out-of-range",
-     "glGetIntegerv of a float state with no int value (NaN, beyond [-1,1] if normalized): OSMesa overflows, MyGL saturates",
+     "glGetIntegerv of a float state with no int value (NaN, beyond [-1,1] if normalized): OSMesa overflows, MyGL "
+     "saturates",
      isIntegerQueryOutOfRange},
     {"boolean-kept-as-given",
      "glDepthMask/glEdgeFlag with a GLboolean other than 0 or 1: OSMesa answers the byte back (2), the spec GL_TRUE",
@@ -209,40 +216,52 @@ constexpr Departure kDepartures[] = {
      "glReadPixels with a format GL does not define: OSMesa reports GL_INVALID_OPERATION, the spec GL_INVALID_ENUM",
      readsUnknownFormat},
     {"light-under-enable-bit-push",
-     "glEnable/glDisable(GL_LIGHTi) after a glPushAttrib(GL_ENABLE_BIT without GL_LIGHTING_BIT): OSMesa's pop keeps the light's new state",
+     "glEnable/glDisable(GL_LIGHTi) after a glPushAttrib(GL_ENABLE_BIT without GL_LIGHTING_BIT): OSMesa's pop keeps "
+     "the light's new state",
      togglesLightUnderEnableBit},
     {"pop-after-nested-change",
-     "glPopAttrib of a nested push after a state change: OSMesa resets its changed-groups mask to the push's, so the outer pop skips groups changed inside",
+     "glPopAttrib of a nested push after a state change: OSMesa resets its changed-groups mask to the push's, so the "
+     "outer pop skips groups changed inside",
      popsNestedChange},
     {"texture-border-without-rows",
-     "glTexImage2D/glCopyTexImage2D with border 1 and height 2: OSMesa strips the border from the width only (a w-2 x 2 image), the spec's image has no rows",
+     "glTexImage2D/glCopyTexImage2D with border 1 and height 2: OSMesa strips the border from the width only (a w-2 x "
+     "2 image), the spec's image has no rows",
      definesBorderWithoutRows},
     {"texture-border-stripped",
-     "glGetTexLevelParameter of GL_TEXTURE_WIDTH/HEIGHT/BORDER after a bordered image: OSMesa stores it stripped (width - 2, border 0), the spec counts the border",
+     "glGetTexLevelParameter of GL_TEXTURE_WIDTH/HEIGHT/BORDER after a bordered image: OSMesa stores it stripped "
+     "(width - 2, border 0), the spec counts the border",
      queriesBorderedSize},
     {"pixel-map-i-to-i-any-size",
      "glPixelMap(GL_PIXEL_MAP_I_TO_I) with a size not a power of two: OSMesa takes it, the spec gives GL_INVALID_VALUE",
      isPixelMapIToIAnySize},
     {"stencil-as-bitmap",
-     "glReadPixels/glDrawPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa never returns (glReadPixels loops printing 'Unsupported format/type'); the spec moves bits",
+     "glReadPixels/glDrawPixels(GL_STENCIL_INDEX, GL_BITMAP): OSMesa never returns (glReadPixels loops printing "
+     "'Unsupported format/type'); the spec moves bits",
      movesStencilAsBitmap},
     {"index-image",
-     "glDrawPixels(GL_COLOR_INDEX): OSMesa reads past its own image buffer (ASan, seed 71: 11 x 4 bytes) and as GL_BITMAP draws memory it never wrote (seed 209)",
+     "glDrawPixels(GL_COLOR_INDEX): OSMesa reads past its own image buffer (ASan, seed 71: 11 x 4 bytes) and as "
+     "GL_BITMAP draws memory it never wrote (seed 209)",
      drawsIndexImage},
     {"failed-level-query-writes",
-     "glGetTexLevelParameterfv with a bad target, level or name: OSMesa records the error and still writes its uninitialized int (0) to params",
+     "glGetTexLevelParameterfv with a bad target, level or name: OSMesa records the error and still writes its "
+     "uninitialized int (0) to params",
      failsFloatLevelQuery},
     {"copy-pixels-beyond-texture-size",
-     "glCopyPixels wider or taller than 16384 not done as a blit: OSMesa draws its rectangle as zeros (its texture cannot hold the copy); MyGL copies nothing",
+     "glCopyPixels wider or taller than 16384 not done as a blit: OSMesa draws its rectangle as zeros (its texture "
+     "cannot hold the copy); MyGL copies nothing",
      copiesBeyondTextureSize},
     {"copy-texture-bad-internal-format",
-     "glCopyTexImage1D/2D with an internal format GL 1.1 does not take (1-4 too): OSMesa gives GL_INVALID_ENUM, GL 1.1 GL_INVALID_VALUE",
+     "glCopyTexImage1D/2D with an internal format GL 1.1 does not take (1-4 too): OSMesa gives GL_INVALID_ENUM, GL 1.1 "
+     "GL_INVALID_VALUE",
      copiesTextureWithBadInternalFormat},
     {"depth-image-unflushed-color",
-     "glCopyPixels(GL_DEPTH)/glDrawPixels(GL_DEPTH_COMPONENT) after a glColor outside glBegin/glEnd and no glFlush since: OSMesa colours the fragments with ctx->Current before that glColor (not flushed: _mesa_CopyPixels only flushes vertices)",
+     "glCopyPixels(GL_DEPTH)/glDrawPixels(GL_DEPTH_COMPONENT) after a glColor outside glBegin/glEnd and no glFlush "
+     "since: OSMesa colours the fragments with ctx->Current before that glColor (not flushed: _mesa_CopyPixels only "
+     "flushes vertices)",
      drawsDepthWithUnflushedColor},
     {"undefined-level-format",
-     "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial value), GL 1.1's is 1",
+     "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial "
+     "value), GL 1.1's is 1",
      queriesLevelFormat},
     {"texture-priority-as-integer",
      "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
@@ -256,7 +275,8 @@ void StreamContext::update(const Call& call) {
     const std::array<bool*, 6> flags = {&colorBeyondUnit,    &normalBeyondUnit,   &texCoordBeyondInt,
                                         &lineWidthBeyondInt, &pointSizeBeyondInt, &alphaNotOneSinceFlush};
     const bool query = name == "glGetError" || name.starts_with("glGet") || name == "glIsEnabled";
-    if (!attribStack.empty() && !query && name != "glPushAttrib" && name != "glPopAttrib") attribStack.back().changedSince = true;
+    if (!attribStack.empty() && !query && name != "glPushAttrib" && name != "glPopAttrib")
+        attribStack.back().changedSince = true;
     if (name == "glPushAttrib" && !insideBegin && attribStack.size() < 16) {
         Pushed pushed{static_cast<GLbitfield>(call.args[0]), {}};
         for (std::size_t i = 0; i < flags.size(); ++i) pushed.flags[i] = *flags[i];

@@ -48,11 +48,13 @@ private:
     }
 
     void removeChunks() {
-        for (std::size_t chunk = std::max<std::size_t>(1, best_.calls.size() / 2); chunk >= 1 && budgetLeft(); chunk /= 2) {
+        for (std::size_t chunk = std::max<std::size_t>(1, best_.calls.size() / 2); chunk >= 1 && budgetLeft();
+             chunk /= 2) {
             for (std::size_t at = 0; at < best_.calls.size() && budgetLeft();) {
                 Stream candidate = best_;
                 const auto first = candidate.calls.begin() + static_cast<std::ptrdiff_t>(at);
-                candidate.calls.erase(first, first + static_cast<std::ptrdiff_t>(std::min(chunk, best_.calls.size() - at)));
+                candidate.calls.erase(first,
+                                      first + static_cast<std::ptrdiff_t>(std::min(chunk, best_.calls.size() - at)));
                 if (!keepIfFailing(std::move(candidate))) at += chunk;
             }
         }
@@ -104,7 +106,9 @@ ShrinkResult shrinkStream(const Stream& failing, const Difference& failure, cons
 std::string toCSnippet(const Stream& stream, const Difference& difference) {
     std::string text = "/* framebuffer " + std::to_string(stream.width) + "x" + std::to_string(stream.height) + ", " +
                        className(difference.failure) + ": " + difference.detail + " */\n";
-    text += "glClearColor(0, 0, 0, 0); glClearDepth(1); glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);  /* the runner's prologue */\n";
+    text +=
+        "glClearColor(0, 0, 0, 0); glClearDepth(1); glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | "
+        "GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);  /* the runner's prologue */\n";
     for (std::size_t i = 0; i < stream.calls.size(); ++i) {
         text += toC(stream.calls[i]);
         if (i == difference.call && !difference.mygl.empty()) {
@@ -112,7 +116,9 @@ std::string toCSnippet(const Stream& stream, const Difference& difference) {
         }
         text += "\n";
     }
-    text += "/* then the runner: glEnd(); glEndList(); glGetError() until GL_NO_ERROR; glFinish(); read colour and depth */\n";
+    text +=
+        "/* then the runner: glEnd(); glEndList(); glGetError() until GL_NO_ERROR; glFinish(); read colour and depth "
+        "*/\n";
     return text;
 }
 

@@ -28,7 +28,8 @@ std::vector<GLfloat> matrix(GLenum which) {
 }
 
 void expectNear(const std::vector<GLfloat>& actual, const float* expected, const char* what) {
-    for (int i = 0; i < 16; ++i) EXPECT_NEAR(actual[i], expected[i], 1e-6f * (1.0f + std::fabs(expected[i]))) << what << " " << i;
+    for (int i = 0; i < 16; ++i)
+        EXPECT_NEAR(actual[i], expected[i], 1e-6f * (1.0f + std::fabs(expected[i]))) << what << " " << i;
 }
 
 TEST(GluMatrices, EqualTheirClosedForms) {
@@ -40,24 +41,28 @@ TEST(GluMatrices, EqualTheirClosedForms) {
                "perspective");
     glLoadIdentity();
     gluOrtho2D(-3.0, 5.0, 1.0, 2.0);
-    expectNear(matrix(GL_PROJECTION_MATRIX), glm::value_ptr(glm::ortho(-3.0f, 5.0f, 1.0f, 2.0f, -1.0f, 1.0f)), "ortho2D");
+    expectNear(matrix(GL_PROJECTION_MATRIX), glm::value_ptr(glm::ortho(-3.0f, 5.0f, 1.0f, 2.0f, -1.0f, 1.0f)),
+               "ortho2D");
     glLoadIdentity();
     GLint viewport[4] = {10, 20, 200, 100};
     gluPickMatrix(60.0, 45.0, 4.0, 5.0, viewport);
     // The pick region (58..62, 42.5..47.5) must map onto the clip square [-1, 1].
-    glm::mat4 pick = glm::translate(glm::mat4(1.0f), glm::vec3((200.0f - 2.0f * 50.0f) / 4.0f, (100.0f - 2.0f * 25.0f) / 5.0f, 0.0f));
+    glm::mat4 pick = glm::translate(glm::mat4(1.0f),
+                                    glm::vec3((200.0f - 2.0f * 50.0f) / 4.0f, (100.0f - 2.0f * 25.0f) / 5.0f, 0.0f));
     pick = glm::scale(pick, glm::vec3(200.0f / 4.0f, 100.0f / 5.0f, 1.0f));
     expectNear(matrix(GL_PROJECTION_MATRIX), glm::value_ptr(pick), "pick");
-    const glm::vec4 corner = pick * glm::vec4(2.0f * (58.0f - 10.0f) / 200.0f - 1.0f, 2.0f * (42.5f - 20.0f) / 100.0f - 1.0f, 0, 1);
+    const glm::vec4 corner =
+        pick * glm::vec4(2.0f * (58.0f - 10.0f) / 200.0f - 1.0f, 2.0f * (42.5f - 20.0f) / 100.0f - 1.0f, 0, 1);
     EXPECT_NEAR(corner.x, -1.0f, 1e-5f);
     EXPECT_NEAR(corner.y, -1.0f, 1e-5f);
     gluPickMatrix(60.0, 45.0, 0.0, 5.0, viewport);  // an empty region leaves the matrix alone
     expectNear(matrix(GL_PROJECTION_MATRIX), glm::value_ptr(pick), "empty pick");
     glMatrixMode(GL_MODELVIEW);
     gluLookAt(1.0, 2.0, 5.0, 0.1, -0.2, 0.3, 0.2, 1.0, 0.1);
-    expectNear(matrix(GL_MODELVIEW_MATRIX),
-               glm::value_ptr(glm::lookAt(glm::vec3(1, 2, 5), glm::vec3(0.1f, -0.2f, 0.3f), glm::vec3(0.2f, 1.0f, 0.1f))),
-               "lookAt");
+    expectNear(
+        matrix(GL_MODELVIEW_MATRIX),
+        glm::value_ptr(glm::lookAt(glm::vec3(1, 2, 5), glm::vec3(0.1f, -0.2f, 0.3f), glm::vec3(0.2f, 1.0f, 0.1f))),
+        "lookAt");
 }
 
 TEST(GluMatrices, LeaveTheSameStateOnBothBackends) {

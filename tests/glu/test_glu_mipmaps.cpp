@@ -25,8 +25,8 @@ TEST(GluScaleImage, AveragesBoxesAndReplicates) {
     ASSERT_EQ(gluScaleImage(GL_LUMINANCE, 1, 1, GL_UNSIGNED_BYTE, pixel, 3, 2, GL_FLOAT, wide), 0);
     for (GLfloat v : wide) EXPECT_FLOAT_EQ(v, 0.2f);
     // Rows of a 3-wide RGB byte image are padded to 4-byte alignment.
-    const GLubyte padded[2 * 12] = {255, 0, 0, 255, 0, 0, 255, 0, 0, 99, 99, 99,
-                                    0, 0, 255, 0, 0, 255, 0, 0, 255, 99, 99, 99};
+    const GLubyte padded[2 * 12] = {255, 0, 0,   255, 0, 0,   255, 0, 0,   99, 99, 99,
+                                    0,   0, 255, 0,   0, 255, 0,   0, 255, 99, 99, 99};
     GLubyte column[2 * 4];  // 1 x 2 RGB, each row padded to 4 bytes
     ASSERT_EQ(gluScaleImage(GL_RGB, 3, 2, GL_UNSIGNED_BYTE, padded, 1, 2, GL_UNSIGNED_BYTE, column), 0);
     EXPECT_EQ((std::array<int, 3>{column[0], column[1], column[2]}), (std::array<int, 3>{255, 0, 0}));
@@ -76,7 +76,8 @@ TEST(GluMipmaps, OsmesaReceivesEveryLevel) {
     // 5 x 3: scaled to 4 x 2, then 2 x 1 and 1 x 1. Two colours in the left and right halves.
     std::vector<GLubyte> image;
     for (int y = 0; y < 3; ++y) {
-        for (int x = 0; x < 5; ++x) image.insert(image.end(), {GLubyte(x < 2 ? 200 : 40), 100, GLubyte(x < 2 ? 0 : 250)});
+        for (int x = 0; x < 5; ++x)
+            image.insert(image.end(), {GLubyte(x < 2 ? 200 : 40), 100, GLubyte(x < 2 ? 0 : 250)});
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     ASSERT_EQ(gluBuild2DMipmaps(GL_TEXTURE_2D, GL_RGB, 5, 3, GL_RGB, GL_UNSIGNED_BYTE, image.data()), 0);

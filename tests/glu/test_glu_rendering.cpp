@@ -61,9 +61,12 @@ struct QuadricCase {
 };
 
 const QuadricCase kQuadricCases[] = {
-    {"fill", GLU_FILL, GLU_OUTSIDE, false},       {"fill-inside", GLU_FILL, GLU_INSIDE, false},
-    {"fill-textured", GLU_FILL, GLU_OUTSIDE, true}, {"line", GLU_LINE, GLU_OUTSIDE, false},
-    {"silhouette", GLU_SILHOUETTE, GLU_OUTSIDE, false}, {"point", GLU_POINT, GLU_OUTSIDE, false},
+    {"fill", GLU_FILL, GLU_OUTSIDE, false},
+    {"fill-inside", GLU_FILL, GLU_INSIDE, false},
+    {"fill-textured", GLU_FILL, GLU_OUTSIDE, true},
+    {"line", GLU_LINE, GLU_OUTSIDE, false},
+    {"silhouette", GLU_SILHOUETTE, GLU_OUTSIDE, false},
+    {"point", GLU_POINT, GLU_OUTSIDE, false},
 };
 
 TEST(GluRendering, QuadricsMatchTheReference) {
@@ -115,7 +118,8 @@ TEST(GluRendering, QuadricsUseGlusPrimitiveModes) {
         glFinish();
         const mygl::Stats after = context.stats();
         std::vector<std::uint64_t> counts;
-        for (std::size_t m = 0; m < after.primitivesByMode.size(); ++m) counts.push_back(after.primitivesByMode[m] - before.primitivesByMode[m]);
+        for (std::size_t m = 0; m < after.primitivesByMode.size(); ++m)
+            counts.push_back(after.primitivesByMode[m] - before.primitivesByMode[m]);
         return counts;
     };
     auto expected = [](std::initializer_list<std::pair<GLenum, std::uint64_t>> modes) {
@@ -125,7 +129,8 @@ TEST(GluRendering, QuadricsUseGlusPrimitiveModes) {
     };
     EXPECT_EQ(countModes([&] { gluSphere(quadric, 1.0, 8, 6); }), expected({{GL_TRIANGLE_FAN, 2}, {GL_QUAD_STRIP, 4}}));
     EXPECT_EQ(countModes([&] { gluCylinder(quadric, 1.0, 0.5, 2.0, 8, 5); }), expected({{GL_QUAD_STRIP, 5}}));
-    EXPECT_EQ(countModes([&] { gluDisk(quadric, 0.0, 1.0, 8, 3); }), expected({{GL_TRIANGLE_FAN, 1}, {GL_QUAD_STRIP, 2}}));
+    EXPECT_EQ(countModes([&] { gluDisk(quadric, 0.0, 1.0, 8, 3); }),
+              expected({{GL_TRIANGLE_FAN, 1}, {GL_QUAD_STRIP, 2}}));
     EXPECT_EQ(countModes([&] { gluPartialDisk(quadric, 0.5, 1.0, 8, 3, 0.0, 90.0); }), expected({{GL_QUAD_STRIP, 3}}));
     gluQuadricTexture(quadric, GL_TRUE);
     EXPECT_EQ(countModes([&] { gluSphere(quadric, 1.0, 8, 6); }), expected({{GL_QUAD_STRIP, 6}}));
@@ -151,7 +156,7 @@ TEST(GluRendering, BadQuadricArgumentsReportAndDrawNothing) {
     gluSphere(quadric, std::nan(""), 8, 4);
     gluCylinder(quadric, 1.0, 1.0, 0.0, 8, 0);
     gluCylinder(quadric, 0.0, 0.0, 0.0, 8, 2);  // no surface
-    gluDisk(quadric, 2.0, 1.0, 8, 2);            // inner beyond outer
+    gluDisk(quadric, 2.0, 1.0, 8, 2);           // inner beyond outer
     gluPartialDisk(quadric, 0.0, 1.0, 8, 2, 0.0, std::nan(""));
     gluQuadricDrawStyle(quadric, GL_TRIANGLES);
     gluQuadricNormals(quadric, GLU_OUTSIDE);
@@ -169,7 +174,7 @@ TEST(GluRendering, BadQuadricArgumentsReportAndDrawNothing) {
     gluSphere(nullptr, 1.0, 8, 8);
 }
 
-void combine(GLdouble coords[3], void*[4], GLfloat[4], void** out, void* storage) {
+void combine(GLdouble coords[3], void* [4], GLfloat[4], void** out, void* storage) {
     auto& points = *static_cast<std::vector<std::vector<GLdouble>>*>(storage);
     points.push_back({coords[0], coords[1], coords[2]});
     *out = points.back().data();
@@ -180,7 +185,8 @@ void combine(GLdouble coords[3], void*[4], GLfloat[4], void** out, void* storage
 TEST(GluRendering, TessellatedPolygonsMatchTheReference) {
     for (const GLenum rule : {GLU_TESS_WINDING_ODD, GLU_TESS_WINDING_NONZERO, GLU_TESS_WINDING_POSITIVE}) {
         for (const bool outline : {false, true}) {
-            const std::string name = "tess-" + std::to_string(rule - GLU_TESS_WINDING_ODD) + (outline ? "-outline" : "");
+            const std::string name =
+                "tess-" + std::to_string(rule - GLU_TESS_WINDING_ODD) + (outline ? "-outline" : "");
             expectSameFrames(name, [&] {
                 glMatrixMode(GL_PROJECTION);
                 glLoadIdentity();

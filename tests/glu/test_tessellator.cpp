@@ -216,7 +216,8 @@ TEST_F(Tessellator, CombineMakesEveryCrossingOfTwoEdges) {
         ASSERT_EQ(recorder.combined.size(), 5u);
         for (const Point3& p : recorder.combined) {
             int edgesThrough = 0;
-            for (int k = 0; k < 5; ++k) edgesThrough += distanceToSegment(star[k], star[(k + 1) % 5], p[0], p[1]) < 1e-12;
+            for (int k = 0; k < 5; ++k)
+                edgesThrough += distanceToSegment(star[k], star[(k + 1) % 5], p[0], p[1]) < 1e-12;
             EXPECT_EQ(edgesThrough, 2);
             EXPECT_DOUBLE_EQ(p[2], 0.5);  // combined in object space
         }
@@ -334,7 +335,8 @@ TEST_F(Tessellator, OldPolygonCallsWithPlainCallbacksMakeAHole) {
     ASSERT_EQ(plainVertices.size() % 3, 0u);
     double area = 0;
     for (std::size_t k = 0; k < plainVertices.size(); k += 3) {
-        area += cross(*plainVertices[k], *plainVertices[k + 1], (*plainVertices[k + 2])[0], (*plainVertices[k + 2])[1]) / 2;
+        area +=
+            cross(*plainVertices[k], *plainVertices[k + 1], (*plainVertices[k + 2])[0], (*plainVertices[k + 2])[1]) / 2;
     }
     EXPECT_DOUBLE_EQ(area, 16.0 - 4.0);  // ODD: the inner square is a hole; triangles counter-clockwise
 }
@@ -342,9 +344,9 @@ TEST_F(Tessellator, OldPolygonCallsWithPlainCallbacksMakeAHole) {
 TEST_F(Tessellator, MisuseReportsTheMissingCall) {
     usePlainCallbacks(tess);  // a begin GLU supplies itself has no polygon data
     Point3 p{0, 0, 0};
-    gluTessVertex(tess, p.data(), &p);  // no polygon, no contour
-    gluTessEndPolygon(tess);           // contour still open
-    gluTessEndContour(tess);           // no polygon, no contour (leaves a polygon open)
+    gluTessVertex(tess, p.data(), &p);   // no polygon, no contour
+    gluTessEndPolygon(tess);             // contour still open
+    gluTessEndContour(tess);             // no polygon, no contour (leaves a polygon open)
     gluTessBeginPolygon(tess, nullptr);  // previous polygon unfinished
     gluTessBeginPolygon(tess, nullptr);  // again
     gluTessBeginContour(tess);
@@ -353,10 +355,18 @@ TEST_F(Tessellator, MisuseReportsTheMissingCall) {
     gluTessProperty(tess, GLU_TESS_WINDING_RULE, 7);
     gluTessProperty(tess, GLU_TESS_TOLERANCE, -1);
     gluTessCallback(tess, 0x1234, nullptr);
-    const std::vector<GLenum> expected{
-        GLU_TESS_MISSING_BEGIN_POLYGON, GLU_TESS_MISSING_BEGIN_CONTOUR, GLU_TESS_MISSING_END_CONTOUR,
-        GLU_TESS_MISSING_BEGIN_POLYGON, GLU_TESS_MISSING_BEGIN_CONTOUR, GLU_TESS_MISSING_END_POLYGON,
-        GLU_TESS_MISSING_END_POLYGON, GLU_TESS_MISSING_END_CONTOUR, GLU_INVALID_ENUM, GLU_INVALID_VALUE, GLU_INVALID_VALUE, GLU_INVALID_ENUM};
+    const std::vector<GLenum> expected{GLU_TESS_MISSING_BEGIN_POLYGON,
+                                       GLU_TESS_MISSING_BEGIN_CONTOUR,
+                                       GLU_TESS_MISSING_END_CONTOUR,
+                                       GLU_TESS_MISSING_BEGIN_POLYGON,
+                                       GLU_TESS_MISSING_BEGIN_CONTOUR,
+                                       GLU_TESS_MISSING_END_POLYGON,
+                                       GLU_TESS_MISSING_END_POLYGON,
+                                       GLU_TESS_MISSING_END_CONTOUR,
+                                       GLU_INVALID_ENUM,
+                                       GLU_INVALID_VALUE,
+                                       GLU_INVALID_VALUE,
+                                       GLU_INVALID_ENUM};
     EXPECT_EQ(plainErrors, expected);
     GLdouble value = 0;
     gluGetTessProperty(tess, GLU_TESS_WINDING_RULE, &value);

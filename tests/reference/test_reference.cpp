@@ -101,8 +101,9 @@ TEST(Images, ComparisonCountsAndDiffImage) {
     EXPECT_EQ(diff.rgba[0], diff.rgba[1]);  // within 1: gray
     EXPECT_GT(diff.rgba[4], 128);           // more than 1: red
     EXPECT_EQ(diff.rgba[5], 0);
-    EXPECT_EQ(diff.rgba[8], 0);             // equal: black
-    EXPECT_THROW(reference::compareImages(a, reference::Image{1, 1, std::vector<std::uint8_t>(4)}), std::invalid_argument);
+    EXPECT_EQ(diff.rgba[8], 0);  // equal: black
+    EXPECT_THROW(reference::compareImages(a, reference::Image{1, 1, std::vector<std::uint8_t>(4)}),
+                 std::invalid_argument);
 }
 
 TEST(CallRecorder, AFrameRecordedOnMyglReplaysIdenticallyOnBothBackends) {
@@ -210,7 +211,8 @@ TEST(CallRecorder, DepthStencilAndIndexImagesReplayOnOsmesa) {
     static const GLfloat depths[6 * 4] = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f, 1.0f, 0.0f, 0.25f,
                                           0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f, 1.0f, 0.0f, 0.25f};
     static const GLubyte stencil[5 * 3] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
-    static const GLubyte indices[9 * 3] = {1, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 1, 1, 1, 0, 1, 0, 0, 1, 1, 1, 0, 0, 0, 1, 0, 1};
+    static const GLubyte indices[9 * 3] = {1, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 1, 1, 1,
+                                           0, 1, 0, 0, 1, 1, 1, 0, 0, 0, 1, 0, 1};
     static const GLubyte bits[2 * 3] = {0xA5, 0x80, 0x3C, 0x00, 0xFF, 0x80};
     static const GLfloat red[2] = {0.2f, 1.0f}, oneRed = 0.7f;
     const auto display = [] {

@@ -15,8 +15,7 @@ public:
         state.viewport = {0, 0, width, height};
     }
 
-    glrenderer::Vertex windowVertex(float x, float y, float z = 0.0f,
-                                    glm::vec4 color = {1, 1, 1, 1}) const {
+    glrenderer::Vertex windowVertex(float x, float y, float z = 0.0f, glm::vec4 color = {1, 1, 1, 1}) const {
         const float w = static_cast<float>(framebuffer.width());
         const float h = static_cast<float>(framebuffer.height());
         return {{x / w * 2.0f - 1.0f, y / h * 2.0f - 1.0f, z, 1.0f}, color};

@@ -99,7 +99,7 @@ glrenderer::BatchChunk mixedTriangleChunk(int only = -1) {
     std::uniform_real_distribution<float> position(-1.6f, 1.6f), w(0.5f, 2.0f), unit(0.0f, 1.0f);
     glrenderer::BatchChunk chunk(0, 0);
     const PrimitiveMode modes[] = {PrimitiveMode::Triangles, PrimitiveMode::TriangleStrip, PrimitiveMode::TriangleFan,
-                                   PrimitiveMode::Quads, PrimitiveMode::QuadStrip, PrimitiveMode::Polygon};
+                                   PrimitiveMode::Quads,     PrimitiveMode::QuadStrip,     PrimitiveMode::Polygon};
     for (int i = 0; i < kMixedBatches; ++i) {
         BatchEntry entry;
         entry.mode = modes[i % 6];
@@ -112,9 +112,8 @@ glrenderer::BatchChunk mixedTriangleChunk(int only = -1) {
         entry.count = 12;
         for (std::size_t k = 0; k < entry.count; ++k) {
             const float cw = w(random);
-            chunk.vertices.push_back(
-                {{position(random) * cw, position(random) * cw, position(random) * cw, cw},
-                 {unit(random), unit(random), unit(random), 1.0f}});
+            chunk.vertices.push_back({{position(random) * cw, position(random) * cw, position(random) * cw, cw},
+                                      {unit(random), unit(random), unit(random), 1.0f}});
         }
         if (only < 0 || only == i) chunk.batches.push_back(entry);
     }

@@ -33,7 +33,9 @@ void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
         const FixedPoint& b = flip ? p[2] : p[1];
         const FixedPoint& c = flip ? p[1] : p[2];
         t.edges[0] = EdgeFunction(p[0], b), t.edges[1] = EdgeFunction(b, c), t.edges[2] = EdgeFunction(c, p[0]);
-        const auto pixelNear = [&](std::int64_t fixed) { return static_cast<int>((fixed >> kSubpixelBits) + pick(random) - 3); };
+        const auto pixelNear = [&](std::int64_t fixed) {
+            return static_cast<int>((fixed >> kSubpixelBits) + pick(random) - 3);
+        };
         for (int j = 0; j < 24; ++j) {
             const FixedPoint& corner = p[static_cast<std::size_t>(j % 3)];
             const int row = pixelNear(corner.y);
@@ -68,6 +70,4 @@ TEST(CoveredSpan, SmallTrianglesMatchThePixelTests) { expectSpansMatchPixelTests
 TEST(CoveredSpan, MeshSizedTrianglesMatchThePixelTests) { expectSpansMatchPixelTests(40 * 256, 2); }
 
 // Up to 2^19 pixels from the origin (the edge values stay within 64 bits).
-TEST(CoveredSpan, HugeTrianglesAndSliversMatchThePixelTests) {
-    expectSpansMatchPixelTests(std::int64_t{1} << 27, 3);
-}
+TEST(CoveredSpan, HugeTrianglesAndSliversMatchThePixelTests) { expectSpansMatchPixelTests(std::int64_t{1} << 27, 3); }

@@ -57,12 +57,14 @@ TEST(Culling, TriangleThatSnapsToALineIsZeroArea) {
 
 TEST(Decomposition, FanAndPolygonOrders) {
     std::vector<std::array<std::uint32_t, 3>> fan, polygon;
-    glrenderer::decomposeTriangles(PrimitiveMode::TriangleFan, 5, glrenderer::DecompositionPath::Direct,
-                                   false,
-                                   [&](const glrenderer::TriangleIndices& t) { fan.push_back({t.v[0], t.v[1], t.v[2]}); });
-    glrenderer::decomposeTriangles(PrimitiveMode::Polygon, 5, glrenderer::DecompositionPath::Direct,
-                                   false,
-                                   [&](const glrenderer::TriangleIndices& t) { polygon.push_back({t.v[0], t.v[1], t.v[2]}); });
+    glrenderer::decomposeTriangles(PrimitiveMode::TriangleFan, 5, glrenderer::DecompositionPath::Direct, false,
+                                   [&](const glrenderer::TriangleIndices& t) {
+                                       fan.push_back({t.v[0], t.v[1], t.v[2]});
+                                   });
+    glrenderer::decomposeTriangles(PrimitiveMode::Polygon, 5, glrenderer::DecompositionPath::Direct, false,
+                                   [&](const glrenderer::TriangleIndices& t) {
+                                       polygon.push_back({t.v[0], t.v[1], t.v[2]});
+                                   });
     using T = std::vector<std::array<std::uint32_t, 3>>;
     EXPECT_EQ(fan, (T{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
     EXPECT_EQ(polygon, (T{{1, 2, 0}, {2, 3, 0}, {3, 4, 0}}));
@@ -72,7 +74,9 @@ TEST(Decomposition, QuadDiagonalDependsOnPathAndShading) {
     auto split = [](glrenderer::DecompositionPath path, bool v1v3Quads) {
         std::vector<std::array<std::uint32_t, 3>> out;
         glrenderer::decomposeTriangles(PrimitiveMode::Quads, 4, path, v1v3Quads,
-                                       [&](const glrenderer::TriangleIndices& t) { out.push_back({t.v[0], t.v[1], t.v[2]}); });
+                                       [&](const glrenderer::TriangleIndices& t) {
+                                           out.push_back({t.v[0], t.v[1], t.v[2]});
+                                       });
         return out;
     };
     using T = std::vector<std::array<std::uint32_t, 3>>;
@@ -86,8 +90,8 @@ TEST(Clipping, TriangleThroughTheNearPlaneBecomesAQuadrilateral) {
     const glrenderer::ClipVertex a{{0, 0, -2, 1}, {1, 0, 0, 1}};  // in front of the near plane
     const glrenderer::ClipVertex b{{0.5f, 0, 0, 1}, {0, 1, 0, 1}};
     const glrenderer::ClipVertex c{{0, 0.5f, 0, 1}, {0, 0, 1, 1}};
-    const glrenderer::Outcode codes = glrenderer::clipOutcode(a.position) | glrenderer::clipOutcode(b.position) |
-                               glrenderer::clipOutcode(c.position);
+    const glrenderer::Outcode codes =
+        glrenderer::clipOutcode(a.position) | glrenderer::clipOutcode(b.position) | glrenderer::clipOutcode(c.position);
     EXPECT_EQ(codes, 1u << 4);  // the near plane
     const auto polygon = glrenderer::clipTriangle(a, b, c, codes, {});
     ASSERT_EQ(polygon.count, 4);
@@ -98,7 +102,8 @@ TEST(Clipping, TriangleThroughTheNearPlaneBecomesAQuadrilateral) {
     EXPECT_FLOAT_EQ(polygon.vertices[3].position.z, -polygon.vertices[3].position.w);
     // b and c are the input vertices 1 and 2 (they keep their vertex-stage window positions).
     const std::array<int, 4> sources{glrenderer::kNewVertex, 1, 2, glrenderer::kNewVertex};
-    for (int i = 0; i < 4; ++i) EXPECT_EQ(polygon.source[static_cast<std::size_t>(i)], sources[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < 4; ++i)
+        EXPECT_EQ(polygon.source[static_cast<std::size_t>(i)], sources[static_cast<std::size_t>(i)]);
     for (int i = 0; i < polygon.count; ++i) {
         const glm::vec4& p = polygon.vertices[static_cast<std::size_t>(i)].position;
         EXPECT_GE(p.z, -p.w - 1e-6f);
@@ -112,10 +117,12 @@ TEST(Clipping, NonFiniteVerticesDrawNothingAndDoNotCrash) {
     f.draw(PrimitiveMode::Triangles, {{{nan, 0, 0, 1}, {1, 1, 1, 1}}, f.windowVertex(14, 2), f.windowVertex(2, 14)});
     f.draw(PrimitiveMode::Triangles, {{{inf, 0, 0, 1}, {1, 1, 1, 1}}, f.windowVertex(14, 2), f.windowVertex(2, 14)});
     f.draw(PrimitiveMode::Triangles, {{{0, 0, 0, 0}, {1, 1, 1, 1}}, f.windowVertex(14, 2), f.windowVertex(2, 14)});
-    f.draw(PrimitiveMode::Triangles, {{{1e30f, -1e30f, 0, 1e-30f}, {1, 1, 1, 1}}, f.windowVertex(14, 2), f.windowVertex(2, 14)});
+    f.draw(PrimitiveMode::Triangles,
+           {{{1e30f, -1e30f, 0, 1e-30f}, {1, 1, 1, 1}}, f.windowVertex(14, 2), f.windowVertex(2, 14)});
     EXPECT_EQ(f.pipeline.stats().triangles, 4u);
     const auto& s = f.pipeline.stats();
-    EXPECT_EQ(s.triangles, s.clippedAway + s.culledBack + s.culledFront + s.culledZeroArea + s.rasterized - s.clipCreated);
+    EXPECT_EQ(s.triangles,
+              s.clippedAway + s.culledBack + s.culledFront + s.culledZeroArea + s.rasterized - s.clipCreated);
 }
 
 TEST(Stats, CountsAddUpForAClippedMesh) {
@@ -128,5 +135,6 @@ TEST(Stats, CountsAddUpForAClippedMesh) {
     const auto& s = f.pipeline.stats();
     EXPECT_EQ(s.triangles, 10u);
     EXPECT_GT(s.clipCreated, 0u);
-    EXPECT_EQ(s.triangles, s.clippedAway + s.culledBack + s.culledFront + s.culledZeroArea + s.rasterized - s.clipCreated);
+    EXPECT_EQ(s.triangles,
+              s.clippedAway + s.culledBack + s.culledFront + s.culledZeroArea + s.rasterized - s.clipCreated);
 }

@@ -27,8 +27,8 @@ TEST(FillRule, WindingDoesNotChangeCoverage) {
 // top edges do not, so a square from center 2.5 to center 6.5 covers columns and rows 2..5.
 TEST(FillRule, LeftAndBottomEdgesOwnCentersRightAndTopDoNot) {
     PipelineFixture f(10, 10);
-    f.draw(PrimitiveMode::Quads, {f.windowVertex(2.5f, 2.5f), f.windowVertex(6.5f, 2.5f),
-                                  f.windowVertex(6.5f, 6.5f), f.windowVertex(2.5f, 6.5f)});
+    f.draw(PrimitiveMode::Quads, {f.windowVertex(2.5f, 2.5f), f.windowVertex(6.5f, 2.5f), f.windowVertex(6.5f, 6.5f),
+                                  f.windowVertex(2.5f, 6.5f)});
     EXPECT_EQ(f.coveredPixels(), 16);
     for (int y = 0; y < 10; ++y)
         for (int x = 0; x < 10; ++x)
@@ -41,8 +41,8 @@ TEST(FillRule, SnappingRoundsTiesToEven) {
     for (const auto& [offset, covers] : {std::pair{1.0f / 512, true}, std::pair{1.5f / 512, false}}) {
         PipelineFixture f(10, 10);
         const float left = 4.5f + offset;
-        f.draw(PrimitiveMode::Quads, {f.windowVertex(left, 1), f.windowVertex(8, 1),
-                                      f.windowVertex(8, 9), f.windowVertex(left, 9)});
+        f.draw(PrimitiveMode::Quads,
+               {f.windowVertex(left, 1), f.windowVertex(8, 1), f.windowVertex(8, 9), f.windowVertex(left, 9)});
         EXPECT_EQ(f.pixel(4, 5) != 0, covers) << "offset " << offset;
     }
 }
@@ -69,9 +69,13 @@ TEST(FillRule, SharedEdgesAreCoveredExactlyOnce) {
                     const auto& [x, y] = points[static_cast<std::size_t>(j + dj)][static_cast<std::size_t>(i + di)];
                     return f.windowVertex(x, y);
                 };
-                if (half == 0) f.draw(PrimitiveMode::Triangles, {p(0, 0), p(1, 0), p(1, 1)});
-                else f.draw(PrimitiveMode::Triangles, {p(0, 0), p(1, 1), p(0, 1)});
-                for (int k = 0; k < kSize * kSize; ++k) hits[static_cast<std::size_t>(k)] += f.framebuffer.color()[static_cast<std::size_t>(k)] != 0;
+                if (half == 0)
+                    f.draw(PrimitiveMode::Triangles, {p(0, 0), p(1, 0), p(1, 1)});
+                else
+                    f.draw(PrimitiveMode::Triangles, {p(0, 0), p(1, 1), p(0, 1)});
+                for (int k = 0; k < kSize * kSize; ++k)
+                    hits[static_cast<std::size_t>(k)] += f.framebuffer.color()[static_cast<std::size_t>(k)] != 0;
             }
-    for (int k = 0; k < kSize * kSize; ++k) ASSERT_EQ(hits[static_cast<std::size_t>(k)], 1) << "pixel " << k % kSize << "," << k / kSize;
+    for (int k = 0; k < kSize * kSize; ++k)
+        ASSERT_EQ(hits[static_cast<std::size_t>(k)], 1) << "pixel " << k % kSize << "," << k / kSize;
 }

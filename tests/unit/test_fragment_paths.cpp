@@ -43,18 +43,20 @@ std::string describe(const FragmentKey& key) {
         text += " texture env " + std::to_string(static_cast<int>(key.textureEnv)) + " base " +
                 std::to_string(static_cast<int>(key.textureBase)) + " filters " +
                 std::to_string(static_cast<int>(key.minFilter)) + std::to_string(static_cast<int>(key.magFilter)) +
-                std::to_string(static_cast<int>(key.mipFilter)) + " wraps " + std::to_string(static_cast<int>(key.wrapS)) +
-                std::to_string(static_cast<int>(key.wrapT));
+                std::to_string(static_cast<int>(key.mipFilter)) + " wraps " +
+                std::to_string(static_cast<int>(key.wrapS)) + std::to_string(static_cast<int>(key.wrapT));
     }
     if (key.depthOffset) text += " offset";
     if (key.alphaFunc != CompareFunc::Always) text += " alpha " + std::to_string(static_cast<int>(key.alphaFunc));
     if (key.stencilTest) {
         text += " stencil " + std::to_string(static_cast<int>(key.stencilFunc)) + " ops " +
-                std::to_string(static_cast<int>(key.stencilFail)) + std::to_string(static_cast<int>(key.stencilDepthFail)) +
+                std::to_string(static_cast<int>(key.stencilFail)) +
+                std::to_string(static_cast<int>(key.stencilDepthFail)) +
                 std::to_string(static_cast<int>(key.stencilDepthPass));
     }
     if (key.blendSrc != BlendFactor::One || key.blendDst != BlendFactor::Zero) {
-        text += " blend " + std::to_string(static_cast<int>(key.blendSrc)) + " " + std::to_string(static_cast<int>(key.blendDst));
+        text += " blend " + std::to_string(static_cast<int>(key.blendSrc)) + " " +
+                std::to_string(static_cast<int>(key.blendDst));
     }
     if (key.logicOp != LogicOp::Copy) text += " logic op " + std::to_string(static_cast<int>(key.logicOp));
     if (key.colorMask) text += " colour mask";
@@ -113,10 +115,10 @@ FragmentKey randomKey(std::mt19937& random) {
     key.colorSum = coin(random) && coin(random);
     if (coin(random)) {
         std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2);
-        key = withTexture(key, static_cast<TextureEnv>(env(random)), coin(random), static_cast<TextureBase>(base(random)),
-                          static_cast<TextureFilter>(coin(random)), static_cast<TextureFilter>(coin(random)),
-                          static_cast<MipmapFilter>(mip(random)), static_cast<TextureWrap>(coin(random)),
-                          static_cast<TextureWrap>(coin(random)));
+        key = withTexture(key, static_cast<TextureEnv>(env(random)), coin(random),
+                          static_cast<TextureBase>(base(random)), static_cast<TextureFilter>(coin(random)),
+                          static_cast<TextureFilter>(coin(random)), static_cast<MipmapFilter>(mip(random)),
+                          static_cast<TextureWrap>(coin(random)), static_cast<TextureWrap>(coin(random)));
     }
     return key;
 }
@@ -126,7 +128,8 @@ Texture randomTexture(std::mt19937& random, bool powerOfTwo) {
     std::uniform_int_distribution<std::uint32_t> word;
     Texture t;
     int width = powerOfTwo ? 8 : 6, height = 4;
-    for (; t.levelCount == 0 || width > 1 || height > 1; width = std::max(width / 2, 1), height = std::max(height / 2, 1)) {
+    for (; t.levelCount == 0 || width > 1 || height > 1;
+         width = std::max(width / 2, 1), height = std::max(height / 2, 1)) {
         const auto level = static_cast<std::size_t>(t.levelCount++);
         t.width[level] = static_cast<std::uint32_t>(width);
         t.height[level] = static_cast<std::uint32_t>(height);
@@ -157,8 +160,8 @@ AttributePlane randomPlane(std::mt19937& random, float low, float high) {
 FogState randomFog(std::mt19937& random) {
     std::uniform_real_distribution<float> unit(0.0f, 1.0f), distance(-5.0f, 40.0f);
     std::uniform_int_distribution<int> mode(1, 3);
-    return makeFogState(static_cast<FogMode>(mode(random)), FogDistance::OwnDotProduct, unit(random),
-                        distance(random), distance(random), {unit(random), unit(random), unit(random), 1.0f});
+    return makeFogState(static_cast<FogMode>(mode(random)), FogDistance::OwnDotProduct, unit(random), distance(random),
+                        distance(random), {unit(random), unit(random), unit(random), 1.0f});
 }
 
 struct Target {
@@ -169,7 +172,8 @@ struct Target {
         std::copy(color.begin(), color.end(), framebuffer.color().begin());
         std::copy(depth.begin(), depth.end(), framebuffer.depth().begin());
         // Stencil values from the depths' low bytes: varied, and the same in every target.
-        std::transform(depth.begin(), depth.end(), framebuffer.stencil().begin(), [](std::uint32_t d) { return d & 0xFF; });
+        std::transform(depth.begin(), depth.end(), framebuffer.stencil().begin(),
+                       [](std::uint32_t d) { return d & 0xFF; });
     }
 };
 
@@ -191,7 +195,6 @@ testing::AssertionResult same(const Target& expected, const Target& actual) {
     }
     return testing::AssertionSuccess();
 }
-
 
 std::vector<std::uint32_t> randomPixels(std::mt19937& random, std::uint32_t max) {
     std::uniform_int_distribution<std::uint32_t> value(0, max);
@@ -341,8 +344,9 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
             for (const FragmentRoutine* routine : {triangle.fragment.routine, &paths->anyKey()}) {
                 Target actual(color, depth);
                 rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, *routine);
-                ASSERT_TRUE(same(expected, actual)) << paths->name() << " key " << describe(triangle.fragment.key)
-                                                    << (routine == &paths->anyKey() ? " any key" : "") << " triangle " << i;
+                ASSERT_TRUE(same(expected, actual))
+                    << paths->name() << " key " << describe(triangle.fragment.key)
+                    << (routine == &paths->anyKey() ? " any key" : "") << " triangle " << i;
             }
         }
     }

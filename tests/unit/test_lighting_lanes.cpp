@@ -32,9 +32,13 @@ public:
     // A value where the program's special cases lie, sometimes.
     float edgy(float usual) {
         if (!chance(0.1)) return usual;
-        const float edges[] = {0.0f, -0.0f, std::numeric_limits<float>::quiet_NaN(),
-                               std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-                               1e-40f, 3e38f};
+        const float edges[] = {0.0f,
+                               -0.0f,
+                               std::numeric_limits<float>::quiet_NaN(),
+                               std::numeric_limits<float>::infinity(),
+                               -std::numeric_limits<float>::infinity(),
+                               1e-40f,
+                               3e38f};
         return edges[std::uniform_int_distribution<int>(0, 6)(random_)];
     }
 
@@ -76,7 +80,8 @@ public:
         for (int i = 0; i < 16; ++i) m.matrix[static_cast<std::size_t>(i)] = i % 5 == 0 ? scale : between(-0.3f, 0.3f);
         m.matrix[15] = 1.0f;
         // Not the true inverse: the program uses whatever it is given, and so do both widths.
-        for (int i = 0; i < 16; ++i) m.inverse[static_cast<std::size_t>(i)] = i % 5 == 0 ? 1.0f / scale : between(-0.3f, 0.3f);
+        for (int i = 0; i < 16; ++i)
+            m.inverse[static_cast<std::size_t>(i)] = i % 5 == 0 ? 1.0f / scale : between(-0.3f, 0.3f);
         m.lengthPreserving = scale == 1.0f && chance(0.5);
         return m;
     }

@@ -65,13 +65,9 @@ TEST(LineRule, HorizontalLineLightsStartPixelButNotEndPixel) {
     EXPECT_EQ(drawLine(2.5f, 2.5f, 8.5f, 2.5f), row(2, 2, 7));
 }
 
-TEST(LineRule, DirectionMatters) {
-    EXPECT_EQ(drawLine(8.5f, 2.5f, 2.5f, 2.5f), row(2, 3, 8));
-}
+TEST(LineRule, DirectionMatters) { EXPECT_EQ(drawLine(8.5f, 2.5f, 2.5f, 2.5f), row(2, 3, 8)); }
 
-TEST(LineRule, LineOnIntegerYLightsTheRowBelow) {
-    EXPECT_EQ(drawLine(2.5f, 2.0f, 8.5f, 2.0f), row(1, 2, 7));
-}
+TEST(LineRule, LineOnIntegerYLightsTheRowBelow) { EXPECT_EQ(drawLine(2.5f, 2.0f, 8.5f, 2.0f), row(1, 2, 7)); }
 
 TEST(LineRule, LineOnIntegerXLightsTheColumnLeft) {
     PixelSet column;
@@ -103,19 +99,19 @@ TEST(LineRule, EndOnAPixelCenterOfALeftwardLine) {
     // Leftward x-major line ending on a pixel center: measured as the reference draws it (its
     // "already drawing the end" test counts an end on the center as drawn).
     // The middle pixel center (10.5, 14.5) lies exactly on the quad's upper edge.
-    PixelSet expected = {{4, 17}, {5, 17}, {6, 16}, {7, 15}, {8, 15}, {9, 14}, {10, 14},
+    PixelSet expected = {{4, 17},  {5, 17},  {6, 16},  {7, 15},  {8, 15},  {9, 14},  {10, 14},
                          {11, 13}, {12, 12}, {13, 12}, {14, 11}, {15, 10}, {16, 10}, {17, 9},
-                         {18, 8}, {19, 8}, {20, 7}, {21, 6}, {22, 6}};
+                         {18, 8},  {19, 8},  {20, 7},  {21, 6},  {22, 6}};
     EXPECT_EQ(drawLine(4.0f, 18.25f, 23.5f, 5.5f), expected);
 }
 
 TEST(LineRule, StripAndLoopShareEndsAndTheLoopClosesFromLastToFirst) {
     PipelineFixture strip(32, 32);
-    strip.draw(PrimitiveMode::LineStrip, {strip.windowVertex(2.5f, 2.5f), strip.windowVertex(8.5f, 2.5f),
-                                          strip.windowVertex(8.5f, 8.5f)});
+    strip.draw(PrimitiveMode::LineStrip,
+               {strip.windowVertex(2.5f, 2.5f), strip.windowVertex(8.5f, 2.5f), strip.windowVertex(8.5f, 8.5f)});
     PipelineFixture loop(32, 32);
-    loop.draw(PrimitiveMode::LineLoop, {loop.windowVertex(2.5f, 2.5f), loop.windowVertex(8.5f, 2.5f),
-                                        loop.windowVertex(8.5f, 8.5f)});
+    loop.draw(PrimitiveMode::LineLoop,
+              {loop.windowVertex(2.5f, 2.5f), loop.windowVertex(8.5f, 2.5f), loop.windowVertex(8.5f, 8.5f)});
     PixelSet closed = covered(strip);
     closed.merge(drawLine(8.5f, 8.5f, 2.5f, 2.5f));
     EXPECT_EQ(covered(loop), closed);
@@ -125,15 +121,15 @@ TEST(LineRule, StripAndLoopShareEndsAndTheLoopClosesFromLastToFirst) {
 TEST(LineColor, FlatLinesTakeTheSecondVertexColor) {
     PipelineFixture f(32, 32);
     f.state.shadeModel = ShadeModel::Flat;
-    f.draw(PrimitiveMode::Lines, {f.windowVertex(2.5f, 2.5f, 0, {1, 0, 0, 1}),
-                                  f.windowVertex(8.5f, 2.5f, 0, {0, 0, 1, 1})});
+    f.draw(PrimitiveMode::Lines,
+           {f.windowVertex(2.5f, 2.5f, 0, {1, 0, 0, 1}), f.windowVertex(8.5f, 2.5f, 0, {0, 0, 1, 1})});
     for (int x = 2; x <= 7; ++x) EXPECT_EQ(f.pixel(x, 2), 0xFFFF0000u) << x;
 }
 
 TEST(LineColor, SmoothLinesInterpolateAlongTheMajorAxis) {
     PipelineFixture f(32, 32);
-    f.draw(PrimitiveMode::Lines, {f.windowVertex(2.5f, 2.5f, 0, {0, 0, 0, 1}),
-                                  f.windowVertex(10.5f, 4.5f, 0, {1, 1, 1, 1})});
+    f.draw(PrimitiveMode::Lines,
+           {f.windowVertex(2.5f, 2.5f, 0, {0, 0, 0, 1}), f.windowVertex(10.5f, 4.5f, 0, {1, 1, 1, 1})});
     // At pixel x the value is (x - 2) / 8 along x whatever the row (values measured in OSMesa).
     EXPECT_EQ(f.pixel(2, 2) & 0xFF, 0u);
     EXPECT_EQ(f.pixel(6, 3) & 0xFF, 128u);
@@ -146,14 +142,20 @@ TEST(LineDepth, NearerLineWinsWhateverTheOrder) {
         f.framebuffer.clearDepth(glrenderer::kDepthMax24);
         f.state.depthTest = true;
         const auto nearLine = [&] {
-            f.draw(PrimitiveMode::Lines, {f.windowVertex(2.5f, 5.5f, -0.5f, {1, 0, 0, 1}),
-                                          f.windowVertex(12.5f, 5.5f, -0.5f, {1, 0, 0, 1})});
+            f.draw(PrimitiveMode::Lines,
+                   {f.windowVertex(2.5f, 5.5f, -0.5f, {1, 0, 0, 1}), f.windowVertex(12.5f, 5.5f, -0.5f, {1, 0, 0, 1})});
         };
         const auto farLine = [&] {
-            f.draw(PrimitiveMode::Lines, {f.windowVertex(7.5f, 0.5f, 0.5f, {0, 1, 0, 1}),
-                                          f.windowVertex(7.5f, 10.5f, 0.5f, {0, 1, 0, 1})});
+            f.draw(PrimitiveMode::Lines,
+                   {f.windowVertex(7.5f, 0.5f, 0.5f, {0, 1, 0, 1}), f.windowVertex(7.5f, 10.5f, 0.5f, {0, 1, 0, 1})});
         };
-        if (nearFirst) { nearLine(); farLine(); } else { farLine(); nearLine(); }
+        if (nearFirst) {
+            nearLine();
+            farLine();
+        } else {
+            farLine();
+            nearLine();
+        }
         EXPECT_EQ(f.pixel(7, 5), 0xFF0000FFu);
         EXPECT_EQ(f.pixel(7, 3), 0xFF00FF00u);
     }
@@ -202,8 +204,8 @@ TEST(PointRule, StatsCountFragments) {
 TEST(PolygonMode, QuadOutlineHidesTheDiagonal) {
     PipelineFixture f(32, 32);
     f.state.polygonFront = f.state.polygonBack = PolygonMode::Line;
-    f.draw(PrimitiveMode::Quads, {f.windowVertex(2.5f, 2.5f), f.windowVertex(12.5f, 2.5f),
-                                  f.windowVertex(12.5f, 12.5f), f.windowVertex(2.5f, 12.5f)});
+    f.draw(PrimitiveMode::Quads, {f.windowVertex(2.5f, 2.5f), f.windowVertex(12.5f, 2.5f), f.windowVertex(12.5f, 12.5f),
+                                  f.windowVertex(2.5f, 12.5f)});
     EXPECT_EQ(f.pixel(7, 7), 0u);
     EXPECT_EQ(f.coveredPixels(), 40);
     EXPECT_NE(f.pixel(2, 7), 0u);
@@ -215,8 +217,8 @@ TEST(PolygonMode, EdgeFlagHidesTheEdgeStartingAtTheVertex) {
     f.state.polygonFront = PolygonMode::Line;
     auto v0 = f.windowVertex(2.5f, 2.5f);
     v0.edgeFlag = false;  // hides v0 -> v1, the bottom edge
-    f.draw(PrimitiveMode::Polygon, {v0, f.windowVertex(12.5f, 2.5f), f.windowVertex(12.5f, 12.5f),
-                                    f.windowVertex(2.5f, 12.5f)});
+    f.draw(PrimitiveMode::Polygon,
+           {v0, f.windowVertex(12.5f, 2.5f), f.windowVertex(12.5f, 12.5f), f.windowVertex(2.5f, 12.5f)});
     EXPECT_EQ(f.pixel(7, 2), 0u);
     EXPECT_NE(f.pixel(7, 12), 0u);
     EXPECT_EQ(f.pixel(7, 7), 0u);  // the fan's inner edges stay hidden too
@@ -230,8 +232,8 @@ TEST(PolygonMode, FrontAndBackModesAreSeparate) {
     f.draw(PrimitiveMode::Triangles, {f.windowVertex(2, 2), f.windowVertex(10, 2), f.windowVertex(2, 10)});
     const int filled = f.coveredPixels();
     EXPECT_GT(filled, 20);
-    f.draw(PrimitiveMode::Triangles, {f.windowVertex(20.5f, 20.5f), f.windowVertex(20.5f, 28.5f),
-                                      f.windowVertex(28.5f, 20.5f)});
+    f.draw(PrimitiveMode::Triangles,
+           {f.windowVertex(20.5f, 20.5f), f.windowVertex(20.5f, 28.5f), f.windowVertex(28.5f, 20.5f)});
     EXPECT_EQ(f.coveredPixels(), filled + 3);
 }
 
@@ -244,8 +246,8 @@ TEST(PolygonMode, ZeroAreaTriangleIsBackWhenCullingElseClockwise) {
         f.state.frontFaceCCW = frontCCW;
         f.state.cullEnabled = cull;
         f.state.cullFace = cullFace;
-        f.draw(PrimitiveMode::Triangles, {f.windowVertex(20.5f, 12.5f), f.windowVertex(4.5f, 4.5f),
-                                          f.windowVertex(12.5f, 8.5f)});
+        f.draw(PrimitiveMode::Triangles,
+               {f.windowVertex(20.5f, 12.5f), f.windowVertex(4.5f, 4.5f), f.windowVertex(12.5f, 8.5f)});
         return f.coveredPixels();
     };
     EXPECT_EQ(draw(false, false, Face::Back), 17);
@@ -275,10 +277,13 @@ TEST(BadInput, NonFiniteAndHugeCoordinatesDrawNothingAndStayInBounds) {
         f.state.pointSize = 1e30f;
         f.state.polygonFront = PolygonMode::Line;
         for (float bad : {nan, inf, -inf, 1e30f, 1e-30f}) {
-            f.draw(mode, {{{bad, 0, 0, 1}, {1, 1, 1, 1}}, {{0, bad, 0, bad}, {1, 1, 1, 1}},
-                          {{0.5f, 0.5f, 0, 1}, {nan, 1, 1, 1}}, {{bad, bad, bad, bad}, {1, 1, 1, 1}}});
-            f.draw(PrimitiveMode::Triangles, {{{bad, 0, 0, 1}, {1, 1, 1, 1}}, {{0, 0.5f, 0, 1}, {1, 1, 1, 1}},
-                                              {{0.5f, 0, 0, bad}, {1, 1, 1, 1}}});
+            f.draw(mode, {{{bad, 0, 0, 1}, {1, 1, 1, 1}},
+                          {{0, bad, 0, bad}, {1, 1, 1, 1}},
+                          {{0.5f, 0.5f, 0, 1}, {nan, 1, 1, 1}},
+                          {{bad, bad, bad, bad}, {1, 1, 1, 1}}});
+            f.draw(
+                PrimitiveMode::Triangles,
+                {{{bad, 0, 0, 1}, {1, 1, 1, 1}}, {{0, 0.5f, 0, 1}, {1, 1, 1, 1}}, {{0.5f, 0, 0, bad}, {1, 1, 1, 1}}});
         }
         SUCCEED();
     }

@@ -13,8 +13,8 @@ using testing_support::PipelineFixture;
 TEST(TileRasterizer, QueuedFrameEqualsTriangleByTriangle) {
     constexpr int kWidth = 300, kHeight = 200, kTriangles = 2000;
     std::mt19937 random(11);
-    std::uniform_real_distribution<float> x(-40.0f, kWidth + 40.0f), y(-40.0f, kHeight + 40.0f),
-        z(-0.9f, 0.9f), c(0.0f, 1.0f);
+    std::uniform_real_distribution<float> x(-40.0f, kWidth + 40.0f), y(-40.0f, kHeight + 40.0f), z(-0.9f, 0.9f),
+        c(0.0f, 1.0f);
     PipelineFixture queued(kWidth, kHeight), oneByOne(kWidth, kHeight);
     for (PipelineFixture* f : {&queued, &oneByOne}) {
         f->state.depthTest = true;
@@ -63,8 +63,8 @@ TEST(TileRasterizer, ClearingAgainClearsWhateverWasDrawnSince) {
     clearAndFinish(f, kRed, 0xFFFFFF);
     ASSERT_TRUE(holdsEverywhere(f, kRed, 0xFFFFFF));
 
-    f.draw(PrimitiveMode::Triangles, {f.windowVertex(10, 10, 0.2f), f.windowVertex(190, 20, 0.2f),
-                                      f.windowVertex(100, 140, 0.2f)});
+    f.draw(PrimitiveMode::Triangles,
+           {f.windowVertex(10, 10, 0.2f), f.windowVertex(190, 20, 0.2f), f.windowVertex(100, 140, 0.2f)});
     ASSERT_FALSE(holdsEverywhere(f, kRed, 0xFFFFFF));
     clearAndFinish(f, kRed, 0xFFFFFF);
     EXPECT_TRUE(holdsEverywhere(f, kRed, 0xFFFFFF)) << "after triangles";

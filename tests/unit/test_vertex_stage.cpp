@@ -35,7 +35,8 @@ std::vector<Vertex> testVertices() {
         Vertex v;
         v.position = {coordinate(random), coordinate(random), coordinate(random), w(random)};
         if (i % 4 == 0) v.position[i / 4 % 4] = special[pick(random)];  // one special coordinate
-        if (i % 16 == 1) v.position = {special[pick(random)], special[pick(random)], special[pick(random)], special[pick(random)]};
+        if (i % 16 == 1)
+            v.position = {special[pick(random)], special[pick(random)], special[pick(random)], special[pick(random)]};
         v.color = {coordinate(random), 0.25f, i % 7 == 0 ? nan : 0.5f, 1.0f};
         vertices.push_back(v);
     }
@@ -53,8 +54,8 @@ TEST(VertexStage, FmaVersionMatchesTheScalarOperationsBitForBit) {
     state.depthFar = 0.75f;
     const ViewportTransform viewport(state, 500);
     // A projection with a non-trivial w row, times a rotation and a translation.
-    const Matrix mvp = {0.8f, 0.1f, -0.3f, -0.3f, -0.2f, 1.3f, 0.05f, 0.05f,
-                        0.4f, -0.1f, -1.0f, -1.0f, 0.25f, -0.5f, 2.0f, 3.0f};
+    const Matrix mvp = {0.8f, 0.1f,  -0.3f, -0.3f, -0.2f, 1.3f,  0.05f, 0.05f,
+                        0.4f, -0.1f, -1.0f, -1.0f, 0.25f, -0.5f, 2.0f,  3.0f};
     const ColumnTransform toClip(mvp);
     std::vector<glm::vec4> clip(vertices.size());
     std::vector<Outcode> outcodes(vertices.size());
@@ -68,12 +69,13 @@ TEST(VertexStage, FmaVersionMatchesTheScalarOperationsBitForBit) {
         const WindowVertex expected = viewport.apply(expectedClip, vertices[i].color);
         expectedAnyOutside |= outcode;
         ASSERT_EQ(outcodes[i], outcode) << "vertex " << i;
-        const float got[] = {clip[i].x, clip[i].y, clip[i].z, clip[i].w, window[i].x, window[i].y, window[i].z,
-                             window[i].invW, window[i].color.r, window[i].color.b};
-        const float want[] = {expectedClip.x, expectedClip.y, expectedClip.z, expectedClip.w, expected.x, expected.y,
-                              expected.z, expected.invW, expected.color.r, expected.color.b};
+        const float got[] = {clip[i].x,   clip[i].y,   clip[i].z,      clip[i].w,         window[i].x,
+                             window[i].y, window[i].z, window[i].invW, window[i].color.r, window[i].color.b};
+        const float want[] = {expectedClip.x, expectedClip.y, expectedClip.z, expectedClip.w,   expected.x,
+                              expected.y,     expected.z,     expected.invW,  expected.color.r, expected.color.b};
         for (std::size_t k = 0; k < std::size(got); ++k) {
-            ASSERT_TRUE(sameFloat(got[k], want[k])) << "vertex " << i << " component " << k << ": " << got[k] << " vs " << want[k];
+            ASSERT_TRUE(sameFloat(got[k], want[k]))
+                << "vertex " << i << " component " << k << ": " << got[k] << " vs " << want[k];
         }
     }
     EXPECT_EQ(anyOutside, expectedAnyOutside);

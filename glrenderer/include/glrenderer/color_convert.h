@@ -40,8 +40,7 @@ inline std::uint32_t clearColorRgba8(const glm::vec4& c) {
 
 // A fragment's color word.
 inline std::uint32_t fragmentRgba8(const glm::vec4& c) {
-    return packRgba8(fragmentToUnorm8(c.r), fragmentToUnorm8(c.g), fragmentToUnorm8(c.b),
-                     fragmentToUnorm8(c.a));
+    return packRgba8(fragmentToUnorm8(c.r), fragmentToUnorm8(c.g), fragmentToUnorm8(c.b), fragmentToUnorm8(c.a));
 }
 
 inline constexpr std::uint32_t kDepthMax24 = 0xFFFFFF;

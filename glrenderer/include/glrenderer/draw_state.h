@@ -14,7 +14,15 @@ namespace glrenderer {
 
 // The ten glBegin modes, in GL's enum order (GL_POINTS = 0 ... GL_POLYGON = 9).
 enum class PrimitiveMode : std::uint8_t {
-    Points, Lines, LineLoop, LineStrip, Triangles, TriangleStrip, TriangleFan, Quads, QuadStrip,
+    Points,
+    Lines,
+    LineLoop,
+    LineStrip,
+    Triangles,
+    TriangleStrip,
+    TriangleFan,
+    Quads,
+    QuadStrip,
     Polygon
 };
 inline constexpr int kPrimitiveModeCount = 10;

@@ -27,6 +27,7 @@ struct FogState {
 };
 
 // The state for GL's parameters, each constant computed as the reference computes it.
-FogState makeFogState(FogMode mode, FogDistance distance, float density, float start, float end, const glm::vec4& color);
+FogState makeFogState(FogMode mode, FogDistance distance, float density, float start, float end,
+                      const glm::vec4& color);
 
 }  // namespace glrenderer

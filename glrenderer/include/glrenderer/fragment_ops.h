@@ -12,14 +12,37 @@ enum class StencilOp : std::uint8_t { Keep, Zero, Replace, Increment, Decrement,
 
 // glBlendFunc's factors.
 enum class BlendFactor : std::uint8_t {
-    Zero, One, SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor, SrcAlpha, OneMinusSrcAlpha, DstAlpha,
-    OneMinusDstAlpha, SrcAlphaSaturate
+    Zero,
+    One,
+    SrcColor,
+    OneMinusSrcColor,
+    DstColor,
+    OneMinusDstColor,
+    SrcAlpha,
+    OneMinusSrcAlpha,
+    DstAlpha,
+    OneMinusDstAlpha,
+    SrcAlphaSaturate
 };
 
 // glLogicOp's operations in GL's enum order (GL_CLEAR = 0x1500 ... GL_SET = 0x150F).
 enum class LogicOp : std::uint8_t {
-    Clear, And, AndReverse, Copy, AndInverted, Noop, Xor, Or, Nor, Equiv, Invert, OrReverse, CopyInverted,
-    OrInverted, Nand, Set
+    Clear,
+    And,
+    AndReverse,
+    Copy,
+    AndInverted,
+    Noop,
+    Xor,
+    Or,
+    Nor,
+    Equiv,
+    Invert,
+    OrReverse,
+    CopyInverted,
+    OrInverted,
+    Nand,
+    Set
 };
 
 // glScissor's box in window coordinates (y up), used when enabled.

@@ -44,8 +44,8 @@ struct LightingState {
     bool localViewer = false;
     bool twoSide = false;
     bool separateSpecular = false;
-    std::array<Material, 2> materials;               // front, back
-    std::array<ColorMaterial, 2> colorMaterial;       // front, back; all false when disabled
+    std::array<Material, 2> materials;           // front, back
+    std::array<ColorMaterial, 2> colorMaterial;  // front, back; all false when disabled
     bool normalize = false, rescaleNormal = false;
 };
 
@@ -60,11 +60,11 @@ struct LightingModelview {
 
 // A light as the vertex program sees it, prepared when the state changes.
 struct PreparedLight {
-    glm::vec3 position;     // a point (positional) or the normalized direction
-    glm::vec3 halfVector;   // directional lights without a local viewer
+    glm::vec3 position;    // a point (positional) or the normalized direction
+    glm::vec3 halfVector;  // directional lights without a local viewer
     glm::vec3 spotDirection;
     float cosCutoff, spotExponent;
-    glm::vec3 attenuation;  // constant, linear, quadratic
+    glm::vec3 attenuation;                 // constant, linear, quadratic
     glm::vec4 ambient, diffuse, specular;  // the light's colours
     bool positional, spot, attenuated;
 };
@@ -82,7 +82,7 @@ struct PreparedLighting {
     glm::vec4 modelAmbient{0.0f};
     float normalScale = 1.0f;
     bool eyeSpace = false, normalize = false, rescale = false, localViewer = false;
-    bool shininessIsZero = true;  // for both faces: no specular term in the program
+    bool shininessIsZero = true;    // for both faces: no specular term in the program
     bool separateSpecular = false;  // the specular terms go to the secondary colours
 };
 

@@ -27,8 +27,8 @@ enum class CullMethod {
 };
 
 enum class HiddenSurface {
-    AsEnabled,      // the depth buffer when GL_DEPTH_TEST is on (GL)
-    PaintersSort,   // no depth buffer: triangles drawn far to near by mean depth (seed 000), per tile
+    AsEnabled,     // the depth buffer when GL_DEPTH_TEST is on (GL)
+    PaintersSort,  // no depth buffer: triangles drawn far to near by mean depth (seed 000), per tile
 };
 
 struct Methods {

@@ -172,8 +172,8 @@ private:
     std::vector<Vertex> open_;
     bool cuttable_ = false;  // the open primitive goes over in parts
     bool insidePrimitive_ = false;
-    bool loopContinued_ = false;  // the open GL_LINE_LOOP wrapped: open_[0] is its first vertex
-    ImmediateBuffer buffer_;       // where the reference's buffer wraps and flushes
+    bool loopContinued_ = false;               // the open GL_LINE_LOOP wrapped: open_[0] is its first vertex
+    ImmediateBuffer buffer_;                   // where the reference's buffer wraps and flushes
     std::unique_ptr<LightingPool> lightings_;  // what batches' `lighting` points to
     std::unique_ptr<BatchDrawer> drawer_;
     std::unique_ptr<BatchThread> thread_;  // null when the pipeline runs on one thread

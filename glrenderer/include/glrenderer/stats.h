@@ -12,16 +12,16 @@ namespace glrenderer {
 struct Stats {
     std::uint64_t vertices = 0;
     std::array<std::uint64_t, kPrimitiveModeCount> primitivesByMode{};
-    std::uint64_t triangles = 0;       // after decomposition of every mode into triangles
-    std::uint64_t clippedAway = 0;     // triangles entirely outside the view volume, or cut off
-    std::uint64_t clipCreated = 0;     // extra triangles produced by clipping polygons
+    std::uint64_t triangles = 0;    // after decomposition of every mode into triangles
+    std::uint64_t clippedAway = 0;  // triangles entirely outside the view volume, or cut off
+    std::uint64_t clipCreated = 0;  // extra triangles produced by clipping polygons
     std::uint64_t culledBack = 0;
     std::uint64_t culledFront = 0;
     std::uint64_t culledZeroArea = 0;
-    std::uint64_t rasterized = 0;      // triangles that reached the rasterizer
-    std::uint64_t fragments = 0;       // pixels covered by rasterized primitives
-    std::uint64_t fragmentsPassed = 0; // fragments that passed the depth test
-    std::uint64_t pixelsWritten = 0;   // fragments that changed the color buffer
+    std::uint64_t rasterized = 0;       // triangles that reached the rasterizer
+    std::uint64_t fragments = 0;        // pixels covered by rasterized primitives
+    std::uint64_t fragmentsPassed = 0;  // fragments that passed the depth test
+    std::uint64_t pixelsWritten = 0;    // fragments that changed the color buffer
 };
 
 // Applies `op` counter by counter.

@@ -16,7 +16,7 @@ struct BitmapGlyph {
 
 struct BitmapFont {
     const char* name;
-    int height;  // line height in pixels
+    int height;                 // line height in pixels
     const BitmapGlyph* glyphs;  // 256, Latin-1; a glyph of width 0 draws nothing
     const std::uint8_t* bits;
 };
@@ -33,14 +33,13 @@ struct StrokeStrip {
 };
 struct StrokeFont {
     const char* name;
-    float height;  // from the lowest descender to the highest ascender
+    float height;               // from the lowest descender to the highest ascender
     const StrokeGlyph* glyphs;  // 256; only 32..126 have strokes
     const StrokeStrip* strips;
-    const float* points;        // x, y pairs
+    const float* points;  // x, y pairs
 };
 
-extern const BitmapFont kFixed8x13, kFixed9x15, kTimesRoman10, kTimesRoman24, kHelvetica10, kHelvetica12,
-    kHelvetica18;
+extern const BitmapFont kFixed8x13, kFixed9x15, kTimesRoman10, kTimesRoman24, kHelvetica10, kHelvetica12, kHelvetica18;
 extern const StrokeFont kRoman, kMonoRoman;
 
 }  // namespace glut::fonts

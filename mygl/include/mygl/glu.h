@@ -110,20 +110,17 @@ typedef void (*_GLUfuncptr)(void);
 
 /* Matrices and projection */
 void gluPerspective(GLdouble fovy, GLdouble aspect, GLdouble zNear, GLdouble zFar);
-void gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GLdouble centerY,
-               GLdouble centerZ, GLdouble upX, GLdouble upY, GLdouble upZ);
+void gluLookAt(GLdouble eyeX, GLdouble eyeY, GLdouble eyeZ, GLdouble centerX, GLdouble centerY, GLdouble centerZ,
+               GLdouble upX, GLdouble upY, GLdouble upZ);
 void gluOrtho2D(GLdouble left, GLdouble right, GLdouble bottom, GLdouble top);
 void gluPickMatrix(GLdouble x, GLdouble y, GLdouble delX, GLdouble delY, GLint* viewport);
-GLint gluProject(GLdouble objX, GLdouble objY, GLdouble objZ, const GLdouble* model,
-                 const GLdouble* proj, const GLint* view, GLdouble* winX, GLdouble* winY,
-                 GLdouble* winZ);
-GLint gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble* model,
-                   const GLdouble* proj, const GLint* view, GLdouble* objX, GLdouble* objY,
-                   GLdouble* objZ);
-GLint gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW,
-                    const GLdouble* model, const GLdouble* proj, const GLint* view,
-                    GLdouble nearVal, GLdouble farVal, GLdouble* objX, GLdouble* objY,
-                    GLdouble* objZ, GLdouble* objW);
+GLint gluProject(GLdouble objX, GLdouble objY, GLdouble objZ, const GLdouble* model, const GLdouble* proj,
+                 const GLint* view, GLdouble* winX, GLdouble* winY, GLdouble* winZ);
+GLint gluUnProject(GLdouble winX, GLdouble winY, GLdouble winZ, const GLdouble* model, const GLdouble* proj,
+                   const GLint* view, GLdouble* objX, GLdouble* objY, GLdouble* objZ);
+GLint gluUnProject4(GLdouble winX, GLdouble winY, GLdouble winZ, GLdouble clipW, const GLdouble* model,
+                    const GLdouble* proj, const GLint* view, GLdouble nearVal, GLdouble farVal, GLdouble* objX,
+                    GLdouble* objY, GLdouble* objZ, GLdouble* objW);
 
 /* Strings */
 const GLubyte* gluErrorString(GLenum error);
@@ -139,19 +136,18 @@ void gluQuadricNormals(GLUquadric* quad, GLenum normal);
 void gluQuadricTexture(GLUquadric* quad, GLboolean texture);
 void gluQuadricCallback(GLUquadric* quad, GLenum which, _GLUfuncptr callback);
 void gluSphere(GLUquadric* quad, GLdouble radius, GLint slices, GLint stacks);
-void gluCylinder(GLUquadric* quad, GLdouble base, GLdouble top, GLdouble height, GLint slices,
-                 GLint stacks);
+void gluCylinder(GLUquadric* quad, GLdouble base, GLdouble top, GLdouble height, GLint slices, GLint stacks);
 void gluDisk(GLUquadric* quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops);
-void gluPartialDisk(GLUquadric* quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops,
-                    GLdouble start, GLdouble sweep);
+void gluPartialDisk(GLUquadric* quad, GLdouble inner, GLdouble outer, GLint slices, GLint loops, GLdouble start,
+                    GLdouble sweep);
 
 /* Images and mipmaps */
-GLint gluScaleImage(GLenum format, GLsizei wIn, GLsizei hIn, GLenum typeIn, const void* dataIn,
-                    GLsizei wOut, GLsizei hOut, GLenum typeOut, GLvoid* dataOut);
-GLint gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLenum format,
-                        GLenum type, const void* data);
-GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height,
-                        GLenum format, GLenum type, const void* data);
+GLint gluScaleImage(GLenum format, GLsizei wIn, GLsizei hIn, GLenum typeIn, const void* dataIn, GLsizei wOut,
+                    GLsizei hOut, GLenum typeOut, GLvoid* dataOut);
+GLint gluBuild1DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLenum format, GLenum type,
+                        const void* data);
+GLint gluBuild2DMipmaps(GLenum target, GLint internalFormat, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                        const void* data);
 
 /* Tessellator */
 GLUtesselator* gluNewTess(void);

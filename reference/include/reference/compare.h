@@ -9,9 +9,9 @@ namespace reference {
 
 // How two frames of the same size differ, pixel by pixel, per 8-bit channel.
 struct Comparison {
-    long long pixels = 0;            // pixels compared
-    long long differing = 0;         // pixels with any channel different
-    long long differingMoreThan1 = 0;// pixels with a channel differing by more than 1
+    long long pixels = 0;              // pixels compared
+    long long differing = 0;           // pixels with any channel different
+    long long differingMoreThan1 = 0;  // pixels with a channel differing by more than 1
     int maxChannelDifference = 0;
 };
 

@@ -4,6 +4,7 @@
 // Requires <glad/gl.h>.
 
 // Every recorded entry point, with the element count behind its pointer argument (0: none).
+// clang-format off
 #define MYGL_RECORDED_CALLS(X)                                                                    \
     X(glad_glBegin, 0) X(glad_glEnd, 0)                                                          \
     X(glad_glVertex2d, 0) X(glad_glVertex2f, 0) X(glad_glVertex2i, 0) X(glad_glVertex2s, 0)      \
@@ -39,3 +40,4 @@
     X(glad_glClearColor, 0) X(glad_glClearDepth, 0) X(glad_glClear, 0)                           \
     X(glad_glFlush, 0) X(glad_glFinish, 0)                                                       \
     X(glad_glPushAttrib, 0) X(glad_glPopAttrib, 0) X(glad_glPushClientAttrib, 0) X(glad_glPopClientAttrib, 0)
+// clang-format on

@@ -16,7 +16,8 @@ static void vertex(void* data) {
     for (k = 0; k < 3; ++k) corners[corner][k] = p[k];
     if (++corner == 3) {
         area += ((corners[1][0] - corners[0][0]) * (corners[2][1] - corners[0][1]) -
-                 (corners[1][1] - corners[0][1]) * (corners[2][0] - corners[0][0])) / 2.0;
+                 (corners[1][1] - corners[0][1]) * (corners[2][0] - corners[0][0])) /
+                2.0;
         corner = 0;
     }
 }
