@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "glrenderer/invariant.h"
+
 namespace glrenderer {
 namespace {
 
@@ -50,12 +52,16 @@ Span dividedSpan(const RasterTriangle& t, int row, int minX, int maxX) {
 }  // namespace
 
 Span coveredSpan(const RasterTriangle& t, int row, int minX, int maxX) {
-    if (maxX - minX < kScannedColumns) return scannedSpan(t, row, minX, maxX);
-    return dividedSpan(t, row, minX, maxX);
+    const Span span = maxX - minX < kScannedColumns ? scannedSpan(t, row, minX, maxX) : dividedSpan(t, row, minX, maxX);
+    // The fragment routines write the span's pixels through raw pointers: it never leaves the area.
+    MYGL_INVARIANT(span.begin > span.end || (minX <= span.begin && span.end <= maxX));
+    return span;
 }
 
 void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts,
                             const FragmentRoutine& routine) {
+    // A tile's rectangle lies inside the framebuffer, so an area cut from it does too.
+    MYGL_INVARIANT(rect.minX >= 0 && rect.minY >= 0 && rect.maxX < fb.width() && rect.maxY < fb.height());
     const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
     const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
     if (minX > maxX || minY > maxY) return;
