@@ -51,20 +51,28 @@ void popAttrib(Context::State* s, AttribStack& stack) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glPushAttrib", compiled<+[](GLbitfield mask) {
-         if (Context::State* s = stateOutsideBeginEnd()) pushAttrib(s, s->attribStack, mask, serverAttribGroups());
-     }>()},
-    {"glPopAttrib", compiled<+[]() {
-         if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->attribStack);
-     }>()},
+    MYGL_ENTRY(
+        glPushAttrib,
+        +[](GLbitfield mask) {
+            if (Context::State* s = stateOutsideBeginEnd()) pushAttrib(s, s->attribStack, mask, serverAttribGroups());
+        }),
+    MYGL_ENTRY(
+        glPopAttrib,
+        +[]() {
+            if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->attribStack);
+        }),
     // Client state is not compiled into display lists.
-    {"glPushClientAttrib", entry(+[](GLbitfield mask) {
-         if (Context::State* s = stateOutsideBeginEnd())
-             pushAttrib(s, s->clientAttribStack, mask, clientAttribGroups());
-     })},
-    {"glPopClientAttrib", entry(+[]() {
-         if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->clientAttribStack);
-     })},
+    MYGL_ENTRY(
+        glPushClientAttrib,
+        +[](GLbitfield mask) {
+            if (Context::State* s = stateOutsideBeginEnd())
+                pushAttrib(s, s->clientAttribStack, mask, clientAttribGroups());
+        }),
+    MYGL_ENTRY(
+        glPopClientAttrib,
+        +[]() {
+            if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->clientAttribStack);
+        }),
 };
 
 }  // namespace

@@ -48,22 +48,27 @@ void clear(GLbitfield mask) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glClear", compiled<+[](GLbitfield mask) { clear(mask); }>()},
-    {"glFlush", entry(+[] {
-         if (Context::State* s = stateOutsideBeginEnd()) {
-             drawCachedBitmaps(*s);
-             s->pipeline.endBatch();
-         }
-     })},
-    {"glFinish", entry(+[] {
-         if (Context::State* s = stateOutsideBeginEnd()) {
-             drawCachedBitmaps(*s);
-             s->pipeline.finish();
-         }
-     })},
-    {"glReadPixels", entry(+[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
-         readPixels(x, y, w, h, format, type, pixels);
-     })},
+    MYGL_ENTRY(
+        glClear, +[](GLbitfield mask) { clear(mask); }),
+    MYGL_ENTRY(
+        glFlush,
+        +[] {
+            if (Context::State* s = stateOutsideBeginEnd()) {
+                drawCachedBitmaps(*s);
+                s->pipeline.endBatch();
+            }
+        }),
+    MYGL_ENTRY(
+        glFinish,
+        +[] {
+            if (Context::State* s = stateOutsideBeginEnd()) {
+                drawCachedBitmaps(*s);
+                s->pipeline.finish();
+            }
+        }),
+    MYGL_ENTRY(
+        glReadPixels, +[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type,
+                          void* pixels) { readPixels(x, y, w, h, format, type, pixels); }),
 };
 
 }  // namespace

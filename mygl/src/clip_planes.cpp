@@ -47,8 +47,10 @@ void getClipPlane(GLenum plane, GLdouble* out) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glClipPlane", compiled<+[](GLenum plane, const GLdouble* equation) { clipPlane(plane, equation); }, 4>()},
-    {"glGetClipPlane", entry(+[](GLenum plane, GLdouble* out) { getClipPlane(plane, out); })},
+    MYGL_ENTRY(
+        glClipPlane, +[](GLenum plane, const GLdouble* equation) { clipPlane(plane, equation); }),
+    MYGL_ENTRY(
+        glGetClipPlane, +[](GLenum plane, GLdouble* out) { getClipPlane(plane, out); }),
 };
 
 }  // namespace

@@ -40,8 +40,10 @@ void selectBuffer(GLenum buffer, GLenum BufferState::*field) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glDrawBuffer", compiled<+[](GLenum buffer) { selectBuffer(buffer, &BufferState::drawBuffer); }>()},
-    {"glReadBuffer", compiled<+[](GLenum buffer) { selectBuffer(buffer, &BufferState::readBuffer); }>()},
+    MYGL_ENTRY(
+        glDrawBuffer, +[](GLenum buffer) { selectBuffer(buffer, &BufferState::drawBuffer); }),
+    MYGL_ENTRY(
+        glReadBuffer, +[](GLenum buffer) { selectBuffer(buffer, &BufferState::readBuffer); }),
 };
 
 }  // namespace

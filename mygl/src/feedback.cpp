@@ -63,9 +63,10 @@ void passThrough(GLfloat value) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glFeedbackBuffer",
-     entry(+[](GLsizei size, GLenum type, GLfloat* buffer) { feedbackBuffer(size, type, buffer); })},
-    {"glPassThrough", compiled<+[](GLfloat value) { passThrough(value); }>()},
+    MYGL_ENTRY(
+        glFeedbackBuffer, +[](GLsizei size, GLenum type, GLfloat* buffer) { feedbackBuffer(size, type, buffer); }),
+    MYGL_ENTRY(
+        glPassThrough, +[](GLfloat value) { passThrough(value); }),
 };
 
 }  // namespace

@@ -54,15 +54,15 @@ void fogi(GLenum name, const GLint* p, int count) {
 }
 
 // How many values the vector forms read for `name`.
-std::size_t fogCount(GLenum name) { return name == GL_FOG_COLOR ? 4 : 1; }
-
 const EntryPoint kEntryPoints[] = {
-    {"glFogf", compiled<+[](GLenum name, GLfloat v) { fog(name, &v, 1); }>()},
-    {"glFogi", compiled<+[](GLenum name, GLint v) { fogi(name, &v, 1); }>()},
-    {"glFogfv", compiled<+[](GLenum name, const GLfloat* v) { fog(name, v, static_cast<int>(fogCount(name))); },
-                         +[](GLenum name, const GLfloat*) { return fogCount(name); }>()},
-    {"glFogiv", compiled<+[](GLenum name, const GLint* v) { fogi(name, v, static_cast<int>(fogCount(name))); },
-                         +[](GLenum name, const GLint*) { return fogCount(name); }>()},
+    MYGL_ENTRY(
+        glFogf, +[](GLenum name, GLfloat v) { fog(name, &v, 1); }),
+    MYGL_ENTRY(
+        glFogi, +[](GLenum name, GLint v) { fogi(name, &v, 1); }),
+    MYGL_ENTRY(
+        glFogfv, +[](GLenum name, const GLfloat* v) { fog(name, v, static_cast<int>(glcalls::fogCount(name, v))); }),
+    MYGL_ENTRY(
+        glFogiv, +[](GLenum name, const GLint* v) { fogi(name, v, static_cast<int>(glcalls::fogCount(name, v))); }),
 };
 
 }  // namespace

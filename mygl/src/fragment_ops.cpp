@@ -138,17 +138,27 @@ void colorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glScissor", compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h) { scissor(x, y, w, h); }>()},
-    {"glAlphaFunc", compiled<+[](GLenum func, GLclampf ref) { alphaFunc(func, ref); }>()},
-    {"glStencilFunc", compiled<+[](GLenum func, GLint ref, GLuint mask) { stencilFunc(func, ref, mask); }>()},
-    {"glStencilOp", compiled<+[](GLenum fail, GLenum zfail, GLenum zpass) { setStencilOp(fail, zfail, zpass); }>()},
-    {"glStencilMask", compiled<+[](GLuint mask) { stencilMask(mask); }>()},
-    {"glClearStencil", compiled<+[](GLint value) {
-         if (Context::State* s = stateOutsideBeginEnd()) s->fragmentOps.clearStencil = value;
-     }>()},
-    {"glBlendFunc", compiled<+[](GLenum src, GLenum dst) { blendFunc(src, dst); }>()},
-    {"glLogicOp", compiled<+[](GLenum op) { logicOp(op); }>()},
-    {"glColorMask", compiled<+[](GLboolean r, GLboolean g, GLboolean b, GLboolean a) { colorMask(r, g, b, a); }>()},
+    MYGL_ENTRY(
+        glScissor, +[](GLint x, GLint y, GLsizei w, GLsizei h) { scissor(x, y, w, h); }),
+    MYGL_ENTRY(
+        glAlphaFunc, +[](GLenum func, GLclampf ref) { alphaFunc(func, ref); }),
+    MYGL_ENTRY(
+        glStencilFunc, +[](GLenum func, GLint ref, GLuint mask) { stencilFunc(func, ref, mask); }),
+    MYGL_ENTRY(
+        glStencilOp, +[](GLenum fail, GLenum zfail, GLenum zpass) { setStencilOp(fail, zfail, zpass); }),
+    MYGL_ENTRY(
+        glStencilMask, +[](GLuint mask) { stencilMask(mask); }),
+    MYGL_ENTRY(
+        glClearStencil,
+        +[](GLint value) {
+            if (Context::State* s = stateOutsideBeginEnd()) s->fragmentOps.clearStencil = value;
+        }),
+    MYGL_ENTRY(
+        glBlendFunc, +[](GLenum src, GLenum dst) { blendFunc(src, dst); }),
+    MYGL_ENTRY(
+        glLogicOp, +[](GLenum op) { logicOp(op); }),
+    MYGL_ENTRY(
+        glColorMask, +[](GLboolean r, GLboolean g, GLboolean b, GLboolean a) { colorMask(r, g, b, a); }),
 };
 
 }  // namespace

@@ -24,7 +24,8 @@ bool* enableOf(glrenderer::PolygonOffset& o, GLenum cap) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glPolygonOffset", compiled<+[](GLfloat factor, GLfloat units) { polygonOffset(factor, units); }>()},
+    MYGL_ENTRY(
+        glPolygonOffset, +[](GLfloat factor, GLfloat units) { polygonOffset(factor, units); }),
 };
 
 }  // namespace

@@ -160,47 +160,73 @@ void hint(GLenum target, GLenum mode) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glEnable", compiled<+[](GLenum cap) { setCapability(cap, true); }>()},
-    {"glDisable", compiled<+[](GLenum cap) { setCapability(cap, false); }>()},
-    {"glIsEnabled", entry(+[](GLenum cap) { return isEnabled(cap); })},
-    {"glCullFace", compiled<+[](GLenum mode) { cullFace(mode); }>()},
-    {"glFrontFace", compiled<+[](GLenum mode) { frontFace(mode); }>()},
-    {"glDepthFunc", compiled<+[](GLenum func) { depthFunc(func); }>()},
-    {"glDepthMask", compiled<+[](GLboolean flag) {
-         if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.depthWrite, flag != GL_FALSE);
-     }>()},
-    {"glShadeModel", compiled<+[](GLenum mode) { shadeModel(mode); }>()},
-    {"glPolygonMode", compiled<+[](GLenum face, GLenum mode) { polygonMode(face, mode); }>()},
-    {"glLineWidth", compiled<+[](GLfloat width) {
-         if (Context::State* s = currentState()) positiveSize(s->draw.lineWidth, width);
-     }>()},
-    {"glPointSize", compiled<+[](GLfloat size) {
-         if (Context::State* s = currentState()) positiveSize(s->draw.pointSize, size);
-     }>()},
-    {"glViewport", compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); }>()},
-    {"glDepthRange", compiled<+[](GLdouble n, GLdouble f) { depthRange(n, f); }>()},
-    {"glClearColor", compiled<+[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
-         if (Context::State* s = stateOutsideBeginEnd())
-             s->clearColor = {clampToUnit(r), clampToUnit(g), clampToUnit(b), clampToUnit(a)};
-     }>()},
-    {"glClearDepth", compiled<+[](GLdouble depth) {
-         if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
-     }>()},
-    {"glPixelStorei", entry(+[](GLenum name, GLint value) { pixelStore(name, value); })},
-    {"glPixelStoref", entry(+[](GLenum name, GLfloat value) {
-         // Booleans are any non-zero value; counts round to the nearest integer.
-         const bool flag = name == GL_PACK_SWAP_BYTES || name == GL_PACK_LSB_FIRST || name == GL_UNPACK_SWAP_BYTES ||
-                           name == GL_UNPACK_LSB_FIRST;
-         pixelStore(name, flag ? GLint{value != 0.0f} : static_cast<GLint>(std::lround(value)));
-     })},
-    {"glHint", compiled<+[](GLenum target, GLenum mode) { hint(target, mode); }>()},
-    {"glGetError", entry(+[]() -> GLenum {
-         Context::State* s = stateOutsideBeginEnd();
-         if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)
-         const GLenum error = s->error;
-         s->error = GL_NO_ERROR;
-         return error;
-     })},
+    MYGL_ENTRY(
+        glEnable, +[](GLenum cap) { setCapability(cap, true); }),
+    MYGL_ENTRY(
+        glDisable, +[](GLenum cap) { setCapability(cap, false); }),
+    MYGL_ENTRY(
+        glIsEnabled, +[](GLenum cap) { return isEnabled(cap); }),
+    MYGL_ENTRY(
+        glCullFace, +[](GLenum mode) { cullFace(mode); }),
+    MYGL_ENTRY(
+        glFrontFace, +[](GLenum mode) { frontFace(mode); }),
+    MYGL_ENTRY(
+        glDepthFunc, +[](GLenum func) { depthFunc(func); }),
+    MYGL_ENTRY(
+        glDepthMask,
+        +[](GLboolean flag) {
+            if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.depthWrite, flag != GL_FALSE);
+        }),
+    MYGL_ENTRY(
+        glShadeModel, +[](GLenum mode) { shadeModel(mode); }),
+    MYGL_ENTRY(
+        glPolygonMode, +[](GLenum face, GLenum mode) { polygonMode(face, mode); }),
+    MYGL_ENTRY(
+        glLineWidth,
+        +[](GLfloat width) {
+            if (Context::State* s = currentState()) positiveSize(s->draw.lineWidth, width);
+        }),
+    MYGL_ENTRY(
+        glPointSize,
+        +[](GLfloat size) {
+            if (Context::State* s = currentState()) positiveSize(s->draw.pointSize, size);
+        }),
+    MYGL_ENTRY(
+        glViewport, +[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); }),
+    MYGL_ENTRY(
+        glDepthRange, +[](GLdouble n, GLdouble f) { depthRange(n, f); }),
+    MYGL_ENTRY(
+        glClearColor,
+        +[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+            if (Context::State* s = stateOutsideBeginEnd())
+                s->clearColor = {clampToUnit(r), clampToUnit(g), clampToUnit(b), clampToUnit(a)};
+        }),
+    MYGL_ENTRY(
+        glClearDepth,
+        +[](GLdouble depth) {
+            if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
+        }),
+    MYGL_ENTRY(
+        glPixelStorei, +[](GLenum name, GLint value) { pixelStore(name, value); }),
+    MYGL_ENTRY(
+        glPixelStoref,
+        +[](GLenum name, GLfloat value) {
+            // Booleans are any non-zero value; counts round to the nearest integer.
+            const bool flag = name == GL_PACK_SWAP_BYTES || name == GL_PACK_LSB_FIRST || name == GL_UNPACK_SWAP_BYTES ||
+                              name == GL_UNPACK_LSB_FIRST;
+            pixelStore(name, flag ? GLint{value != 0.0f} : static_cast<GLint>(std::lround(value)));
+        }),
+    MYGL_ENTRY(
+        glHint, +[](GLenum target, GLenum mode) { hint(target, mode); }),
+    MYGL_ENTRY(
+        glGetError,
+        +[]() -> GLenum {
+            Context::State* s = stateOutsideBeginEnd();
+            if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)
+            const GLenum error = s->error;
+            s->error = GL_NO_ERROR;
+            return error;
+        }),
 };
 
 }  // namespace

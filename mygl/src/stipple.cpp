@@ -95,9 +95,12 @@ auto* enableOf(DrawState& draw, GLenum cap) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glLineStipple", compiled<+[](GLint factor, GLushort pattern) { lineStipple(factor, pattern); }>()},
-    {"glPolygonStipple", entry(+[](const GLubyte* mask) { polygonStipple(mask); })},
-    {"glGetPolygonStipple", entry(+[](GLubyte* mask) { getPolygonStipple(mask); })},
+    MYGL_ENTRY(
+        glLineStipple, +[](GLint factor, GLushort pattern) { lineStipple(factor, pattern); }),
+    MYGL_ENTRY(
+        glPolygonStipple, +[](const GLubyte* mask) { polygonStipple(mask); }),
+    MYGL_ENTRY(
+        glGetPolygonStipple, +[](GLubyte* mask) { getPolygonStipple(mask); }),
 };
 
 }  // namespace
