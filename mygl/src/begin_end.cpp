@@ -59,25 +59,25 @@ void rect(T x1, T y1, T x2, T y2) {
 
 // glColor, glNormal, ... in every type: one line per entry point.
 // clang-format off
-#define MYGL_COLOR(suffix, T)                                                                    \
-    MYGL_ENTRY(glColor3##suffix, +[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }),  \
+#define MYGL_COLOR(suffix, T)                                                                                  \
+    MYGL_ENTRY(glColor3##suffix, +[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }),         \
     MYGL_ENTRY(glColor4##suffix, +[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); }), \
-    MYGL_ENTRY(glColor3##suffix##v, +[](const T* v) { colorv(v, 3); }),                            \
+    MYGL_ENTRY(glColor3##suffix##v, +[](const T* v) { colorv(v, 3); }),                                        \
     MYGL_ENTRY(glColor4##suffix##v, +[](const T* v) { colorv(v, 4); })
-#define MYGL_NORMAL(suffix, T)                                                                    \
-    MYGL_ENTRY(glNormal3##suffix, +[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }),  \
+#define MYGL_NORMAL(suffix, T)                                                                        \
+    MYGL_ENTRY(glNormal3##suffix, +[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }), \
     MYGL_ENTRY(glNormal3##suffix##v, +[](const T* v) { normalv(v); })
-#define MYGL_TEXCOORD(suffix, T)                                                                  \
-    MYGL_ENTRY(glTexCoord1##suffix, +[](T s) { texCoordv(&s, 1); }),                                   \
-    MYGL_ENTRY(glTexCoord2##suffix, +[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data(), 2); }),     \
-    MYGL_ENTRY(glTexCoord3##suffix, +[](T s, T t, T r) { texCoordv(std::array<T, 3>{s, t, r}.data(), 3); }), \
+#define MYGL_TEXCOORD(suffix, T)                                                                                     \
+    MYGL_ENTRY(glTexCoord1##suffix, +[](T s) { texCoordv(&s, 1); }),                                                 \
+    MYGL_ENTRY(glTexCoord2##suffix, +[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data(), 2); }),                 \
+    MYGL_ENTRY(glTexCoord3##suffix, +[](T s, T t, T r) { texCoordv(std::array<T, 3>{s, t, r}.data(), 3); }),         \
     MYGL_ENTRY(glTexCoord4##suffix, +[](T s, T t, T r, T q) { texCoordv(std::array<T, 4>{s, t, r, q}.data(), 4); }), \
-    MYGL_ENTRY(glTexCoord1##suffix##v, +[](const T* v) { texCoordv(v, 1); }),                      \
-    MYGL_ENTRY(glTexCoord2##suffix##v, +[](const T* v) { texCoordv(v, 2); }),                      \
-    MYGL_ENTRY(glTexCoord3##suffix##v, +[](const T* v) { texCoordv(v, 3); }),                      \
+    MYGL_ENTRY(glTexCoord1##suffix##v, +[](const T* v) { texCoordv(v, 1); }),                                        \
+    MYGL_ENTRY(glTexCoord2##suffix##v, +[](const T* v) { texCoordv(v, 2); }),                                        \
+    MYGL_ENTRY(glTexCoord3##suffix##v, +[](const T* v) { texCoordv(v, 3); }),                                        \
     MYGL_ENTRY(glTexCoord4##suffix##v, +[](const T* v) { texCoordv(v, 4); })
-#define MYGL_RECT(suffix, T)                                                                      \
-    MYGL_ENTRY(glRect##suffix, +[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }),               \
+#define MYGL_RECT(suffix, T)                                                           \
+    MYGL_ENTRY(glRect##suffix, +[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }), \
     MYGL_ENTRY(glRect##suffix##v, +[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); })
 // clang-format on
 

@@ -23,8 +23,8 @@ GLuint truncatedIndex(GLfloat value) {
 }
 
 // clang-format off
-#define MYGL_INDEX_ENTRIES(suffix, T)                                             \
-    MYGL_ENTRY(glIndex##suffix, +[](T c) { index(c); }),                      \
+#define MYGL_INDEX_ENTRIES(suffix, T)                    \
+    MYGL_ENTRY(glIndex##suffix, +[](T c) { index(c); }), \
     MYGL_ENTRY(glIndex##suffix##v, +[](const T* c) { if (c) index(c[0]); })
 // clang-format on
 

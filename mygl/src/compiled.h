@@ -64,12 +64,12 @@ ProcAddress listed() {
 
 // The 2, 3 and 4 component forms of a position call (glVertex, glRasterPos) in type T and their
 // vector forms, each calling `function(const T* components, int count)`.
-#define MYGL_POSITION_ENTRIES(name, suffix, T, function)                                                 \
-    MYGL_ENTRY(name##2##suffix, +[](T x, T y) { function(std::array<T, 2>{x, y}.data(), 2); }),          \
-    MYGL_ENTRY(name##3##suffix, +[](T x, T y, T z) { function(std::array<T, 3>{x, y, z}.data(), 3); }),  \
+#define MYGL_POSITION_ENTRIES(name, suffix, T, function)                                                        \
+    MYGL_ENTRY(name##2##suffix, +[](T x, T y) { function(std::array<T, 2>{x, y}.data(), 2); }),                 \
+    MYGL_ENTRY(name##3##suffix, +[](T x, T y, T z) { function(std::array<T, 3>{x, y, z}.data(), 3); }),         \
     MYGL_ENTRY(name##4##suffix, +[](T x, T y, T z, T w) { function(std::array<T, 4>{x, y, z, w}.data(), 4); }), \
-    MYGL_ENTRY(name##2##suffix##v, +[](const T* v) { function(v, 2); }),                                 \
-    MYGL_ENTRY(name##3##suffix##v, +[](const T* v) { function(v, 3); }),                                 \
+    MYGL_ENTRY(name##2##suffix##v, +[](const T* v) { function(v, 2); }),                                        \
+    MYGL_ENTRY(name##3##suffix##v, +[](const T* v) { function(v, 3); }),                                        \
     MYGL_ENTRY(name##4##suffix##v, +[](const T* v) { function(v, 4); })
 // clang-format on
 

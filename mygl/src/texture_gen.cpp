@@ -75,9 +75,9 @@ void getTexGen(GLenum coord, GLenum name, T* out) {
 }
 
 // clang-format off
-#define MYGL_TEXGEN(suffix, T)                                                                          \
+#define MYGL_TEXGEN(suffix, T)                                                                                 \
     MYGL_ENTRY(glTexGen##suffix, +[](GLenum c, GLenum n, T v) { const GLdouble d = v; texGen(c, n, &d, 1); }), \
-    MYGL_ENTRY(glTexGen##suffix##v, +[](GLenum c, GLenum n, const T* v) { texGenv(c, n, v); }),      \
+    MYGL_ENTRY(glTexGen##suffix##v, +[](GLenum c, GLenum n, const T* v) { texGenv(c, n, v); }),                \
     MYGL_ENTRY(glGetTexGen##suffix##v, +[](GLenum c, GLenum n, T* out) { getTexGen(c, n, out); })
 // clang-format on
 
