@@ -6,7 +6,7 @@
 // copies the call recorder kept: both must equal the picture the program meant, and each other.
 // A count too small shows as a different picture (and as a read past the copy under
 // AddressSanitizer); a call the list wrongly says runs at once instead of being compiled shows as
-// state set too early.
+// state lost.
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
@@ -69,6 +69,10 @@ void view() {
 void program(ProgramData& d) {
     view();
     const GLuint lists = glGenLists(3);
+    // A call the list wrongly said runs at once would change the state now and not when the list
+    // is called: the lists are compiled between a push and a pop of all state, which undoes it.
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glPushMatrix();
 
     glNewList(lists + 1, GL_COMPILE);  // lighting: rules by parameter name
     glLightfv(GL_LIGHT0, GL_POSITION, d.lightPosition);
@@ -140,6 +144,9 @@ void program(ProgramData& d) {
     glEvalMesh1(GL_LINE, 0, 12);
     glDisable(GL_MAP1_VERTEX_3);
     glEndList();
+
+    glPopMatrix();
+    glPopAttrib();
 
     // What the lists must not depend on any more.
     std::memset(static_cast<void*>(&d), 0x7F, sizeof d);
