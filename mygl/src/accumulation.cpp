@@ -36,7 +36,7 @@ void accum(GLenum op, GLfloat value) {
     if (*operation == AccumOp::Return && s->buffers.drawBuffer == GL_NONE) return;
     drawCachedBitmaps(*s);
     s->pipeline.finish();
-    const glrenderer::FragmentOps& ops = s->draw.fragmentOps;
+    const glrenderer::FragmentOps& ops = s->draw->fragmentOps;
     glrenderer::accumulate(s->framebuffer, ops.scissor, ops.colorMask, *operation, value);
 }
 
@@ -55,7 +55,7 @@ const EntryPoint kEntryPoints[] = {
 }  // namespace
 
 void clearAccumBuffer(Context::State& s) {
-    glrenderer::clearAccum(s.framebuffer, s.draw.fragmentOps.scissor, s.buffers.accumClear);
+    glrenderer::clearAccum(s.framebuffer, s.draw->fragmentOps.scissor, s.buffers.accumClear);
 }
 
 std::span<const EntryPoint> accumulationEntryPoints() { return kEntryPoints; }

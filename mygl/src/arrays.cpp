@@ -297,7 +297,7 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
     const ElementReader element(arrays);
     const std::optional<MeshArrays> mesh = MeshArrays::of(arrays);
     if (mesh && elements.indices && !s.lightingOnProgramThread &&
-        glrenderer::Pipeline::acceptsIndexedParts(s.draw, static_cast<glrenderer::PrimitiveMode>(mode))) {
+        glrenderer::Pipeline::acceptsIndexedParts(*s.draw, static_cast<glrenderer::PrimitiveMode>(mode))) {
         drawIndexedParts(s, *mesh, elements);
     } else {
         for (std::size_t k = 0; k < elements.count; ++k) {

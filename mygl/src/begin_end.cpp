@@ -24,7 +24,7 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     if (s->fog.enabled) updateFogDistance(*s);
     updateTexturing(*s);
     s->insideBeginEnd = true;
-    s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
+    s->pipeline.beginPrimitive(s->draw.interned(s->pipeline), static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
     if (s->lightingEnabled) s->pipeline.colorPerVertex();  // lit colours vary per vertex
 }
 

@@ -74,9 +74,9 @@ void updateFog(Context::State& s) {
                          : f.mode == GL_EXP    ? FogMode::Exp
                                                : FogMode::Exp2;
     const glrenderer::FogState fog =
-        glrenderer::makeFogState(mode, s.draw.fog.distance, f.density, f.start, f.end, f.color);
-    if (fog != s.draw.fog) endBatch(s);
-    s.draw.fog = fog;
+        glrenderer::makeFogState(mode, s.draw->fog.distance, f.density, f.start, f.end, f.color);
+    if (fog != s.draw->fog) endBatch(s);
+    s.draw.edit().fog = fog;
 }
 
 void updateFogDistance(Context::State& s) {
@@ -87,7 +87,8 @@ void updateFogDistance(Context::State& s) {
         for (const glrenderer::LightSource& l : s.lighting.lights)
             eyePosition = eyePosition || (l.enabled && l.position.w != 0.0f);
     }
-    s.draw.fog.distance = eyePosition ? glrenderer::FogDistance::EyePosition : glrenderer::FogDistance::OwnDotProduct;
+    s.draw.edit().fog.distance =
+        eyePosition ? glrenderer::FogDistance::EyePosition : glrenderer::FogDistance::OwnDotProduct;
 }
 
 std::optional<std::vector<double>> fogQuery(const Context::State& s, GLenum name) {

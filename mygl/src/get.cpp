@@ -31,7 +31,7 @@ Value query(const Context::State& s, GLenum name) {
         for (float f : m) v.numbers.push_back(f);
         return v;
     };
-    const auto& d = s.draw;
+    const auto& d = *s.draw;
     switch (name) {
     case GL_VIEWPORT:
         return Value{{double(d.viewport.x), double(d.viewport.y), double(d.viewport.width), double(d.viewport.height)}};

@@ -396,12 +396,12 @@ void prepareLighting(Context::State& s) {
 }
 
 void updateLitColors(Context::State& s) {
-    s.draw.twoSidedColors = s.lightingEnabled && s.lighting.twoSide;
-    s.draw.secondaryColors = s.lightingEnabled && s.lighting.separateSpecular;
+    s.draw.edit().twoSidedColors = s.lightingEnabled && s.lighting.twoSide;
+    s.draw.edit().secondaryColors = s.lightingEnabled && s.lighting.separateSpecular;
 }
 
 void lightVertex(Context::State& s, glrenderer::Vertex& v) {
-    preparedLighting(s).lightVertex(v, s.draw.twoSidedColors);
+    preparedLighting(s).lightVertex(v, s.draw->twoSidedColors);
 }
 
 }  // namespace mygl

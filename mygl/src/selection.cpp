@@ -66,8 +66,8 @@ GLint renderMode(GLenum mode) {
         setError(*s, GL_INVALID_OPERATION);
     if (mode != s->renderMode) endBatch(*s);
     s->renderMode = mode;
-    s->draw.selection = mode == GL_SELECT;
-    s->draw.feedback = mode == GL_FEEDBACK;
+    s->draw.edit().selection = mode == GL_SELECT;
+    s->draw.edit().feedback = mode == GL_FEEDBACK;
     return result;
 }
 

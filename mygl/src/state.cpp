@@ -55,7 +55,10 @@ void cullFace(GLenum mode) {
     if (!s) return;
     if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return setError(*s, GL_INVALID_ENUM);
     s->cullFaceMode = mode;
-    assign(*s, s->draw.cullFace, mode == GL_FRONT ? Face::Front : mode == GL_BACK ? Face::Back : Face::FrontAndBack);
+    assign(*s, s->draw.edit().cullFace,
+           mode == GL_FRONT  ? Face::Front
+           : mode == GL_BACK ? Face::Back
+                             : Face::FrontAndBack);
 }
 
 void frontFace(GLenum mode) {
@@ -63,7 +66,7 @@ void frontFace(GLenum mode) {
     if (!s) return;
     if (mode != GL_CW && mode != GL_CCW) return setError(*s, GL_INVALID_ENUM);
     s->frontFace = mode;
-    assign(*s, s->draw.frontFaceCCW, mode == GL_CCW);
+    assign(*s, s->draw.edit().frontFaceCCW, mode == GL_CCW);
 }
 
 void depthFunc(GLenum func) {
@@ -71,7 +74,7 @@ void depthFunc(GLenum func) {
     if (!s) return;
     if (func < GL_NEVER || func > GL_ALWAYS) return setError(*s, GL_INVALID_ENUM);
     s->depthFunc = func;
-    assign(*s, s->draw.depthFunc, static_cast<CompareFunc>(func - GL_NEVER));
+    assign(*s, s->draw.edit().depthFunc, static_cast<CompareFunc>(func - GL_NEVER));
 }
 
 void shadeModel(GLenum mode) {
@@ -79,7 +82,8 @@ void shadeModel(GLenum mode) {
     if (!s) return;
     if (mode != GL_FLAT && mode != GL_SMOOTH) return setError(*s, GL_INVALID_ENUM);
     s->shadeModel = mode;
-    assign(*s, s->draw.shadeModel, mode == GL_FLAT ? glrenderer::ShadeModel::Flat : glrenderer::ShadeModel::Smooth);
+    assign(*s, s->draw.edit().shadeModel,
+           mode == GL_FLAT ? glrenderer::ShadeModel::Flat : glrenderer::ShadeModel::Smooth);
 }
 
 void polygonMode(GLenum face, GLenum mode) {
@@ -90,11 +94,11 @@ void polygonMode(GLenum face, GLenum mode) {
     const auto value = static_cast<PolygonMode>(mode - GL_POINT);
     if (face != GL_BACK) {
         s->polygonModeFront = mode;
-        assign(*s, s->draw.polygonFront, value);
+        assign(*s, s->draw.edit().polygonFront, value);
     }
     if (face != GL_FRONT) {
         s->polygonModeBack = mode;
-        assign(*s, s->draw.polygonBack, value);
+        assign(*s, s->draw.edit().polygonBack, value);
     }
 }
 
@@ -116,14 +120,14 @@ void viewport(GLint x, GLint y, GLsizei width, GLsizei height) {
     const int bound = 2 * kMaxViewportDimension;
     const glrenderer::Viewport v{std::clamp(x, -bound, bound - 1), std::clamp(y, -bound, bound - 1),
                                  std::min(width, kMaxViewportDimension), std::min(height, kMaxViewportDimension)};
-    assign(*s, s->draw.viewport, v);
+    assign(*s, s->draw.edit().viewport, v);
 }
 
 void depthRange(GLdouble nearVal, GLdouble farVal) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    assign(*s, s->draw.depthNear, static_cast<float>(clampToUnit(nearVal)));
-    assign(*s, s->draw.depthFar, static_cast<float>(clampToUnit(farVal)));
+    assign(*s, s->draw.edit().depthNear, static_cast<float>(clampToUnit(nearVal)));
+    assign(*s, s->draw.edit().depthFar, static_cast<float>(clampToUnit(farVal)));
 }
 
 void pixelStore(GLenum name, GLint value) {
@@ -167,15 +171,15 @@ const EntryPoint kEntryPoints[] = {
     {"glFrontFace", compiled<+[](GLenum mode) { frontFace(mode); }>()},
     {"glDepthFunc", compiled<+[](GLenum func) { depthFunc(func); }>()},
     {"glDepthMask", compiled<+[](GLboolean flag) {
-         if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.depthWrite, flag != GL_FALSE);
+         if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.edit().depthWrite, flag != GL_FALSE);
      }>()},
     {"glShadeModel", compiled<+[](GLenum mode) { shadeModel(mode); }>()},
     {"glPolygonMode", compiled<+[](GLenum face, GLenum mode) { polygonMode(face, mode); }>()},
     {"glLineWidth", compiled<+[](GLfloat width) {
-         if (Context::State* s = currentState()) positiveSize(s->draw.lineWidth, width);
+         if (Context::State* s = currentState()) positiveSize(s->draw.edit().lineWidth, width);
      }>()},
     {"glPointSize", compiled<+[](GLfloat size) {
-         if (Context::State* s = currentState()) positiveSize(s->draw.pointSize, size);
+         if (Context::State* s = currentState()) positiveSize(s->draw.edit().pointSize, size);
      }>()},
     {"glViewport", compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); }>()},
     {"glDepthRange", compiled<+[](GLdouble n, GLdouble f) { depthRange(n, f); }>()},
@@ -207,10 +211,10 @@ const EntryPoint kEntryPoints[] = {
 
 bool setCapability(Context::State& s, GLenum cap, bool enabled) {
     if (cap == GL_CULL_FACE || cap == GL_DEPTH_TEST || cap == GL_POINT_SMOOTH || cap == GL_LINE_SMOOTH) {
-        bool& flag = cap == GL_CULL_FACE      ? s.draw.cullEnabled
-                     : cap == GL_DEPTH_TEST   ? s.draw.depthTest
-                     : cap == GL_POINT_SMOOTH ? s.draw.pointSmooth
-                                              : s.draw.lineSmooth;
+        bool& flag = cap == GL_CULL_FACE      ? s.draw.edit().cullEnabled
+                     : cap == GL_DEPTH_TEST   ? s.draw.edit().depthTest
+                     : cap == GL_POINT_SMOOTH ? s.draw.edit().pointSmooth
+                                              : s.draw.edit().lineSmooth;
         if (flag != enabled) endBatch(s);
         flag = enabled;
         return true;
@@ -235,10 +239,10 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
 }
 
 std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
-    if (cap == GL_CULL_FACE) return s.draw.cullEnabled;
-    if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
-    if (cap == GL_POINT_SMOOTH) return s.draw.pointSmooth;
-    if (cap == GL_LINE_SMOOTH) return s.draw.lineSmooth;
+    if (cap == GL_CULL_FACE) return s.draw->cullEnabled;
+    if (cap == GL_DEPTH_TEST) return s.draw->depthTest;
+    if (cap == GL_POINT_SMOOTH) return s.draw->pointSmooth;
+    if (cap == GL_LINE_SMOOTH) return s.draw->lineSmooth;
     if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
     if (const std::optional<bool> plane = clipPlaneCapability(s, cap)) return *plane;
     if (cap == GL_FOG) return s.fog.enabled;

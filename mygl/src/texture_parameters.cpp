@@ -341,7 +341,7 @@ void updateTexturing(Context::State& s) {
         next.identityMatrix = next.matrix == kIdentity;
         next.texture = t->snapshot;
     }
-    if (!(next == s.draw.texture)) s.draw.texture = std::move(next);
+    if (!(next == s.draw->texture)) s.draw.edit().texture = std::move(next);
 }
 
 bool setTextureCapability(Context::State& s, GLenum cap, bool enabled) {
