@@ -43,9 +43,7 @@ void BatchDrawer::draw(const SubmittedBatch& submitted) {
     if (isTriangleMode(batch.mode)) {
         drawUnfilled(batch);
     } else {
-        flush();  // points and lines are drawn at once: queued triangles first
-        drawPointsAndLines(batch.mode, batch.vertices, *batch.state, stippler_, framebuffer_, stats_);
-        tiles_.forgetClearedTiles();
+        drawPointsAndLines(batch.mode, batch.vertices, *batch.state, stippler_, framebuffer_, tiles_);
     }
 }
 
@@ -53,10 +51,8 @@ void BatchDrawer::draw(BatchChunk& chunk) {
     if (!chunk.setUp) {
         lightChunk(chunk);
         for (const BatchEntry& entry : chunk.batches) {
-            draw(chunk.batch(entry));
-            // Kept after drawing: a later point or line batch's flush forgets the textures kept
-            // so far, and a texture kept before it would be freed with the chunk while queued.
             keepTexture(entry.state->texture);
+            draw(chunk.batch(entry));
         }
         return;
     }
@@ -89,7 +85,7 @@ void BatchDrawer::feedbackUnfilled(const SubmittedBatch& submitted, FeedbackOutp
                                     if (flat) v0.color = v1.color = v2.color = flatColor;
                                     feedback.triangle(v0, v1, v2);
                                 },
-                                [] {}, &feedback};
+                                nullptr, &feedback};
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
                       ViewportTransform(*batch.state, framebuffer_.height()), *batch.state, anyEdgeShown(batch),
                       framebuffer_, stats_, target);
@@ -100,11 +96,10 @@ void BatchDrawer::drawUnfilled(const Batch& batch) {
         [&](const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const glm::vec4& flatColor) {
             setup_.setUpTriangle(batch, v0, v1, v2, flatColor, tiles_, stats_);
         },
-        [&] { flush(); }, nullptr, &stippler_};
+        &tiles_, nullptr, &stippler_};
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
                       ViewportTransform(*batch.state, framebuffer_.height()), *batch.state, anyEdgeShown(batch),
                       framebuffer_, stats_, target);
-    tiles_.forgetClearedTiles();  // its lines and points were drawn at once
 }
 
 }  // namespace glrenderer
