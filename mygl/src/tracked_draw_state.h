@@ -20,8 +20,9 @@ public:
     }
     const glrenderer::StateRef& interned(glrenderer::Pipeline& pipeline) {
         if (!interned_) interned_ = pipeline.intern(state_);
-        // Every change went through edit(): interning again finds the same object.
-        MYGL_INVARIANT(interned_ == pipeline.intern(state_));
+        // Every change went through edit(): interning again finds the same object (unless a
+        // NaN makes the state unequal to itself: then no object is ever found again).
+        MYGL_INVARIANT(!(state_ == state_) || interned_ == pipeline.intern(state_));
         return interned_;
     }
 
