@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "glrenderer/draw_state.h"
+#include "glrenderer/state_interner.h"
 #include "glrenderer/lighting.h"
 #include "glrenderer/methods.h"
 #include "glrenderer/pipeline.h"
@@ -18,7 +19,7 @@ namespace glrenderer {
 // What a draw is, as the reference sees it: consecutive submissions of one mode under one
 // state, merged, with the methods in force when they were submitted.
 struct BatchHeader {
-    DrawState state;
+    StateRef state;  // as drawn: flat when the reference draws the batch flat (Pipeline::closeBatch)
     VertexTransform transform;
     Methods methods;
     PrimitiveMode mode = PrimitiveMode::Points;
@@ -80,17 +81,10 @@ struct BatchChunk {
     std::vector<const RasterTriangle*> setUpTriangles;
     Stats setupStats;
 
-    // The entry's batch as the reference draws it. Without a color per vertex the color is a
-    // constant of the draw, not an interpolation of equal values (which perspective would blur
-    // by one unit here and there): flat. Under texturing only when the reference's vertex
-    // format has no colour either (Mesa's vertex program then reads the current colour as a
-    // uniform, which the fragment shader takes exactly).
+    // The entry's batch with its vertices and indices.
     SubmittedBatch batch(const BatchEntry& entry) const {
-        SubmittedBatch batch{entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count),
-                             std::span<const std::uint32_t>(indices).subspan(entry.firstIndex, entry.indexCount)};
-        const bool textured = batch.state.texture.env != TextureEnv::Off;
-        if (!batch.colorsPerVertex && !(textured && batch.colorInFormat)) batch.state.shadeModel = ShadeModel::Flat;
-        return batch;
+        return {entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count),
+                std::span<const std::uint32_t>(indices).subspan(entry.firstIndex, entry.indexCount)};
     }
     void clear() {
         vertices.clear();

@@ -33,7 +33,7 @@ void BatchDrawer::keepTexture(const TextureState& texture) {
 }
 
 void BatchDrawer::draw(const SubmittedBatch& submitted) {
-    if (submitted.state.selection || submitted.state.feedback) return select(submitted);
+    if (submitted.state->selection || submitted.state->feedback) return select(submitted);
     paintersSort_ = submitted.methods.hiddenSurface == HiddenSurface::PaintersSort;
     if (BatchSetup::handles(submitted)) {
         setup_.setUp(submitted, tiles_, stats_);
@@ -43,9 +43,7 @@ void BatchDrawer::draw(const SubmittedBatch& submitted) {
     if (isTriangleMode(batch.mode)) {
         drawUnfilled(batch);
     } else {
-        flush();  // points and lines are drawn at once: queued triangles first
-        drawPointsAndLines(batch.mode, batch.vertices, batch.state, stippler_, framebuffer_, stats_);
-        tiles_.forgetClearedTiles();
+        drawPointsAndLines(batch.mode, batch.vertices, *batch.state, stippler_, framebuffer_, tiles_);
     }
 }
 
@@ -53,14 +51,12 @@ void BatchDrawer::draw(BatchChunk& chunk) {
     if (!chunk.setUp) {
         lightChunk(chunk);
         for (const BatchEntry& entry : chunk.batches) {
+            keepTexture(entry.state->texture);
             draw(chunk.batch(entry));
-            // Kept after drawing: a later point or line batch's flush forgets the textures kept
-            // so far, and a texture kept before it would be freed with the chunk while queued.
-            keepTexture(entry.state.texture);
         }
         return;
     }
-    for (const BatchEntry& entry : chunk.batches) keepTexture(entry.state.texture);
+    for (const BatchEntry& entry : chunk.batches) keepTexture(entry.state->texture);
     tiles_.queue(chunk.setUpTriangles);
     stats_ = stats_ + chunk.setupStats;
     paintersSort_ = chunk.batches.back().methods.hiddenSurface == HiddenSurface::PaintersSort;
@@ -71,11 +67,11 @@ void BatchDrawer::draw(BatchChunk& chunk) {
 // polygons count as filled whatever their polygon mode.
 void BatchDrawer::select(const SubmittedBatch& submitted) {
     FeedbackOutput feedback(feedback_, feedbackLineReset_, framebuffer_.height());
-    FeedbackOutput* output = submitted.state.feedback ? &feedback : nullptr;
-    if (output && isTriangleMode(submitted.mode) && !BatchSetup::filled(submitted.state))
+    FeedbackOutput* output = submitted.state->feedback ? &feedback : nullptr;
+    if (output && isTriangleMode(submitted.mode) && !BatchSetup::filled(*submitted.state))
         return feedbackUnfilled(submitted, feedback);
     if (isTriangleMode(submitted.mode)) return setup_.select(submitted, hits_, output, stats_);
-    selectPointsAndLines(submitted.mode, setup_.stage(submitted).vertices, submitted.state, framebuffer_.height(),
+    selectPointsAndLines(submitted.mode, setup_.stage(submitted).vertices, *submitted.state, framebuffer_.height(),
                          hits_, output);
 }
 
@@ -84,14 +80,14 @@ void BatchDrawer::select(const SubmittedBatch& submitted) {
 // flatshade stage, in its pipeline with the unfilled stage, colours a filled one too.
 void BatchDrawer::feedbackUnfilled(const SubmittedBatch& submitted, FeedbackOutput& feedback) {
     const Batch batch = setup_.stage(submitted);
-    const bool flat = batch.state.shadeModel == ShadeModel::Flat;
+    const bool flat = batch.state->shadeModel == ShadeModel::Flat;
     const UnfilledTarget target{[&](WindowVertex v0, WindowVertex v1, WindowVertex v2, const glm::vec4& flatColor) {
                                     if (flat) v0.color = v1.color = v2.color = flatColor;
                                     feedback.triangle(v0, v1, v2);
                                 },
-                                [] {}, &feedback};
+                                nullptr, &feedback};
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
-                      ViewportTransform(batch.state, framebuffer_.height()), batch.state, anyEdgeShown(batch),
+                      ViewportTransform(*batch.state, framebuffer_.height()), *batch.state, anyEdgeShown(batch),
                       framebuffer_, stats_, target);
 }
 
@@ -100,11 +96,10 @@ void BatchDrawer::drawUnfilled(const Batch& batch) {
         [&](const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2, const glm::vec4& flatColor) {
             setup_.setUpTriangle(batch, v0, v1, v2, flatColor, tiles_, stats_);
         },
-        [&] { flush(); }, nullptr, &stippler_};
+        &tiles_, nullptr, &stippler_};
     drawUnfilledBatch(batch.mode, batch.vertices, setup_.outcodes(), setup_.windowVertices(),
-                      ViewportTransform(batch.state, framebuffer_.height()), batch.state, anyEdgeShown(batch),
+                      ViewportTransform(*batch.state, framebuffer_.height()), *batch.state, anyEdgeShown(batch),
                       framebuffer_, stats_, target);
-    tiles_.forgetClearedTiles();  // its lines and points were drawn at once
 }
 
 }  // namespace glrenderer

@@ -67,7 +67,7 @@ private:
 bool BatchSetup::handles(const BatchHeader& batch) {
     // (Selection and feedback draw no triangles: BatchDrawer::select takes them, also when a
     // chunk is set up ahead on another thread.)
-    return isTriangleMode(batch.mode) && !batch.state.selection && !batch.state.feedback && filled(batch.state);
+    return isTriangleMode(batch.mode) && !batch.state->selection && !batch.state->feedback && filled(*batch.state);
 }
 
 bool BatchSetup::setUp(BatchChunk& chunk, ArenaWriter& writer) {
@@ -82,7 +82,7 @@ bool BatchSetup::setUp(BatchChunk& chunk, ArenaWriter& writer) {
 }
 
 Outcode BatchSetup::run(const SubmittedBatch& batch) {
-    return vertexStage_.run(batch, ViewportTransform(batch.state, framebuffer_.height()));
+    return vertexStage_.run(batch, ViewportTransform(*batch.state, framebuffer_.height()));
 }
 
 Batch BatchSetup::stage(const SubmittedBatch& batch) {
@@ -101,14 +101,14 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
         anyOutside = 0;
         for (std::uint32_t i = 0; i < batch.indices.size(); ++i) anyOutside |= outcodeAt(i);
     }
-    const ViewportTransform viewport(batch.state, framebuffer_.height());
+    const ViewportTransform viewport(*batch.state, framebuffer_.height());
     const bool v1v3Quads =
-        (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) || batch.quadSplit == QuadSplit::V1V3;
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
+        (batch.state->shadeModel == ShadeModel::Flat && batch.colorsPerVertex) || batch.quadSplit == QuadSplit::V1V3;
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(*batch.state, batch.methods), *batch.state);
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
     const PixelRect drawable =
-        drawableRect(batch.state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
+        drawableRect(batch.state->fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
     // The vertices first .. first + count, on the direct path or through the draw module.
     const auto decompose = [&](std::uint32_t first, std::uint32_t count, Outcode outside) {
         const DecompositionPath path = outside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
@@ -118,7 +118,7 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
                         &target,
                         stats,
                         &fragments,
-                        path == DecompositionPath::DrawModule && batch.state.cullEnabled &&
+                        path == DecompositionPath::DrawModule && batch.state->cullEnabled &&
                             batch.methods.culling == CullMethod::WindowArea,
                         nullptr,
                         nullptr,
@@ -145,9 +145,9 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
 
 void BatchSetup::select(const SubmittedBatch& batch, HitRange& hits, FeedbackOutput* feedback, Stats& stats) {
     run(batch);
-    const ViewportTransform viewport(batch.state, framebuffer_.height());
+    const ViewportTransform viewport(*batch.state, framebuffer_.height());
     const bool v1v3Quads =
-        (batch.state.shadeModel == ShadeModel::Flat && batch.colorsPerVertex) || batch.quadSplit == QuadSplit::V1V3;
+        (batch.state->shadeModel == ShadeModel::Flat && batch.colorsPerVertex) || batch.quadSplit == QuadSplit::V1V3;
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
     const Call call{batch,
@@ -156,7 +156,7 @@ void BatchSetup::select(const SubmittedBatch& batch, HitRange& hits, FeedbackOut
                     nullptr,
                     stats,
                     nullptr,
-                    batch.state.cullEnabled,
+                    batch.state->cullEnabled,
                     feedback ? nullptr : &hits,
                     feedback};
     decomposeTriangles(batch.mode, static_cast<std::uint32_t>(batch.vertices.size()), DecompositionPath::DrawModule,
@@ -168,11 +168,11 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     const std::span<const Outcode> outcodes = vertexStage_.outcodes();
     const std::span<const WindowVertex> windowVertices = vertexStage_.windowVertices();
     ++call.stats.triangles;
-    if (batch.methods.culling != CullMethod::WindowArea && batch.state.cullEnabled) {
+    if (batch.methods.culling != CullMethod::WindowArea && batch.state->cullEnabled) {
         const auto& eye = call.assembled;
         const Facing facing =
-            seedFacing(batch.methods.culling, eye[t.v[0]], eye[t.v[1]], eye[t.v[2]], batch.state.frontFaceCCW);
-        if (facing != Facing::ZeroArea && isCulled(batch.state, facing)) {  // edge-on: the seeds keep it
+            seedFacing(batch.methods.culling, eye[t.v[0]], eye[t.v[1]], eye[t.v[2]], batch.state->frontFaceCCW);
+        if (facing != Facing::ZeroArea && isCulled(*batch.state, facing)) {  // edge-on: the seeds keep it
             ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
             return;
         }
@@ -191,7 +191,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     }
     const ClippedPolygon polygon =
         clipTriangle(vertexStage_.clipVertex(call.vertices, t.v[0]), vertexStage_.clipVertex(call.vertices, t.v[1]),
-                     vertexStage_.clipVertex(call.vertices, t.v[2]), outsideAny, batch.state.clipPlanes);
+                     vertexStage_.clipVertex(call.vertices, t.v[2]), outsideAny, batch.state->clipPlanes);
     if (polygon.count < 3) {
         ++call.stats.clippedAway;
         return;
@@ -222,7 +222,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
 template <class Record>
 void BatchSetup::setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
                                     std::array<const Record*, 3> records, const Vertex& provoking) {
-    const DrawState& state = call.batch.state;
+    const DrawState& state = *call.batch.state;
     const bool back = state.twoSidedColors && facingOf(fixedArea(snap(*window[0]), snap(*window[1]), snap(*window[2])),
                                                        state.frontFaceCCW) == Facing::Back;
     const glm::vec4& flatColor = back ? provoking.backColor : provoking.color;
@@ -243,9 +243,9 @@ void BatchSetup::setUpSidedTriangle(const Call& call, const std::array<const Win
 void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(batch.state, batch.methods), batch.state);
+    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(*batch.state, batch.methods), *batch.state);
     const PixelRect drawable =
-        drawableRect(batch.state.fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
+        drawableRect(batch.state->fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
     setUpTriangle(Call{batch, {}, {}, &target, stats, &fragments, false, nullptr, nullptr, drawable}, v0, v1, v2,
                   flatColor);
 }
@@ -253,7 +253,7 @@ void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0,
 // Snaps, culls by the fixed-point area and prepares one triangle in window coordinates.
 void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                                const glm::vec4& flatColor) {
-    const DrawState& state = call.batch.state;
+    const DrawState& state = *call.batch.state;
     const Methods& methods = call.batch.methods;
     if (!areUsable(v0, v1, v2)) {
         ++call.stats.clippedAway;

@@ -120,8 +120,8 @@ void Pipeline::drawPixels(const DrawState& state, const PixelImage& image) {
     const Stats counted = submitted_;
     setTransform(kQuadTransform);
     setUnlit();
-    submit(quadState(state, fb.width(), fb.height(), imageTexture(image), image.use), PrimitiveMode::TriangleFan,
-           vertices);
+    submit(intern(quadState(state, fb.width(), fb.height(), imageTexture(image), image.use)),
+           PrimitiveMode::TriangleFan, vertices);
     endBatch();
     setTransform(transform);
     batch_->lighting = lighting;

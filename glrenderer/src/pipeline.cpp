@@ -23,8 +23,8 @@ bool isMergeable(PrimitiveMode mode) {
 // batch is drawn in parts while the program goes on. (Quads are not: the batch as a whole
 // decides their diagonal.)
 bool canCut(const BatchHeader& batch) {
-    return batch.mode == PrimitiveMode::Triangles && batch.state.polygonFront == PolygonMode::Fill &&
-           batch.state.polygonBack == PolygonMode::Fill;
+    return batch.mode == PrimitiveMode::Triangles && batch.state->polygonFront == PolygonMode::Fill &&
+           batch.state->polygonBack == PolygonMode::Fill;
 }
 
 // Chunks in circulation with a batch thread: one being filled, the others queued or drawn.
@@ -64,18 +64,20 @@ Pipeline::~Pipeline() = default;
 
 std::size_t Pipeline::batchSize() const { return chunk_->vertices.size() - batch_->first; }
 
-void Pipeline::beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSplit quadSplit) {
+StateRef Pipeline::intern(const DrawState& state) { return states_.intern(withCulledFaceModes(state)); }
+
+void Pipeline::beginPrimitive(const StateRef& state, PrimitiveMode mode, QuadSplit quadSplit) {
     BatchEntry& batch = *batch_;
-    const DrawState drawn = withCulledFaceModes(state);
     buffer_.beginPrimitive();
     const bool edgeFlags = buffer_.has(VertexAttribute::EdgeFlag);
-    if (batchSize() > 0 && (mode != batch.mode || quadSplit != batch.quadSplit || !isMergeable(mode) ||
-                            !(drawn == batch.state) || edgeFlags != batch.edgeFlagsPerVertex)) {
+    if (batchSize() > 0 &&
+        (mode != batch.mode || quadSplit != batch.quadSplit || !isMergeable(mode) ||
+         (state != batch.state && !(*state == *batch.state)) || edgeFlags != batch.edgeFlagsPerVertex)) {
         closeBatch();
     }
     batch.edgeFlagsPerVertex = edgeFlags;
     batch.colorInFormat = buffer_.has(VertexAttribute::Color);
-    batch.state = drawn;
+    batch.state = state;
     batch.methods = methods_;
     batch.mode = mode;
     batch.quadSplit = quadSplit;
@@ -191,7 +193,7 @@ Pipeline::IndexedPart Pipeline::addIndexedPart(std::size_t vertexCount, std::siz
     return {std::span(chunk.vertices).subspan(firstVertex), std::span(chunk.indices).subspan(firstIndex)};
 }
 
-void Pipeline::submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
+void Pipeline::submit(const StateRef& state, PrimitiveMode mode, std::span<const Vertex> vertices) {
     beginPrimitive(state, mode, QuadSplit::ByPath);
     colorPerVertex();  // vertices given whole carry their own colors and edge flags
     batch_->edgeFlagsPerVertex = true;
@@ -219,7 +221,7 @@ void Pipeline::setUnlit() {
 
 void Pipeline::lightOpenBatch() {
     if (!batch_->lighting) return;
-    const bool twoSided = batch_->state.twoSidedColors;
+    const bool twoSided = batch_->state->twoSidedColors;
     batch_->lighting->lightVertices(std::span(chunk_->vertices).subspan(batch_->first), twoSided);
     batch_->lighting->lightVertices(open_, twoSided);
     batch_->lighting = nullptr;
@@ -233,12 +235,28 @@ void Pipeline::endBatch() {
 void Pipeline::closeBatch() {
     if (batchSize() == 0) return;
     batch_->count = batchSize();
-    chunk_->batches.push_back(*batch_);
+    BatchEntry& closed = chunk_->batches.emplace_back(*batch_);
+    // Without a color per vertex the color is a constant of the draw, not an interpolation of
+    // equal values (which perspective would blur by one unit here and there): flat. Under
+    // texturing only when the reference's vertex format has no colour either (Mesa's vertex
+    // program then reads the current colour as a uniform, which the fragment shader takes exactly).
+    const bool textured = closed.state->texture.env != TextureEnv::Off;
+    if (!closed.colorsPerVertex && !(textured && closed.colorInFormat)) closed.state = flatVersion(closed.state);
     batch_->first = chunk_->vertices.size();
     batch_->firstIndex = chunk_->indices.size();
     batch_->indexCount = 0;
     batch_->colorsPerVertex = false;
     if (chunk_->vertices.size() >= kPartVertices || chunk_->indices.size() >= kPartVertices) handOverChunk();
+}
+
+StateRef Pipeline::flatVersion(const StateRef& state) {
+    if (state->shadeModel == ShadeModel::Flat) return state;
+    if (lastFlatVersion_.first != state) {
+        DrawState flat = *state;
+        flat.shadeModel = ShadeModel::Flat;
+        lastFlatVersion_ = {state, states_.intern(flat)};
+    }
+    return lastFlatVersion_.second;
 }
 
 void Pipeline::handOverChunk() {

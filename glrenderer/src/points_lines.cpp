@@ -55,23 +55,24 @@ void forEachPrimitive(PrimitiveMode mode, std::span<const ClipVertex> vertices, 
 }  // namespace
 
 void drawPointsAndLines(PrimitiveMode mode, std::span<const ClipVertex> vertices, const DrawState& state,
-                        LineStippler& stippler, Framebuffer& framebuffer, Stats& stats) {
+                        LineStippler& stippler, const Framebuffer& framebuffer, PrimitiveQueue& queue) {
     // Points are drawn flat; lines as the state says; smooth ones as smoothFragmentKey says.
     const bool smooth = mode == PrimitiveMode::Points ? state.pointSmooth : state.lineSmooth;
     const FragmentKey key = smooth                          ? smoothFragmentKey(state)
                             : mode == PrimitiveMode::Points ? flatFragmentKey(state)
                                                             : fragmentKey(state);
     const FragmentChoice fragments(bestFragmentPaths(), key, state);
+    const PixelRect drawable = drawableRect(state.fragmentOps.scissor, framebuffer.width(), framebuffer.height());
     forEachPrimitive(
         mode, vertices, state, ViewportTransform(state, framebuffer.height()),
         [&](const WindowVertex& v) {
-            if (smooth) return rasterizeSmoothPoint(v, state, fragments, framebuffer, stats);
-            rasterizePoint(v, state, fragments, framebuffer, stats);
+            if (smooth) return queueSmoothPoint(v, state, fragments, drawable, queue);
+            queuePoint(v, state, fragments, drawable, queue);
         },
         [&](const WindowVertex& a, const WindowVertex& b, const glm::vec4& flatColor, bool restart) {
             const auto draw = [&](const WindowVertex& from, const WindowVertex& to) {
-                if (smooth) return rasterizeSmoothLine(from, to, flatColor, state, fragments, framebuffer, stats);
-                rasterizeLine(from, to, flatColor, state.lineWidth, fragments, framebuffer, stats);
+                if (smooth) return queueSmoothLine(from, to, flatColor, state, fragments, drawable, queue);
+                queueLine(from, to, flatColor, state.lineWidth, fragments, drawable, queue);
             };
             if (!state.lineStipple.enabled) return draw(a, b);
             if (restart) stippler.restart();

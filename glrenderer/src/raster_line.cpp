@@ -201,41 +201,63 @@ private:
     float dx_, dy_, oneOverLengthSquared_, x1Center_, y1Center_;
 };
 
-// Draws the quad's pixels: per row, the span the four edges bound, through the fragment stage.
-void fillQuad(const LineQuad& q, const FragmentInputs& fragment, const PixelRect& drawable, Framebuffer& fb,
-              Stats& stats) {
-    const LineEdge edges[4] = {LineEdge(q.x[0], q.y[0], q.x[1], q.y[1]), LineEdge(q.x[1], q.y[1], q.x[2], q.y[2]),
-                               LineEdge(q.x[2], q.y[2], q.x[3], q.y[3]), LineEdge(q.x[3], q.y[3], q.x[0], q.y[0])};
-    // The reference's bounding box (rounded for the bottom-left convention), then the drawable rect.
+// The pixels the quad may cover: the reference's bounding box (rounded for the bottom-left
+// convention) cut to the drawable rect; empty (minX > maxX or minY > maxY) when they do not meet.
+PixelRect quadBounds(const LineQuad& q, const PixelRect& drawable) {
+    if (drawable.minX > drawable.maxX || drawable.minY > drawable.maxY) return drawable;
     const std::int64_t one = 1 << kSubpixelBits;
-    const std::int64_t minX =
-        std::max<std::int64_t>((std::min({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits, drawable.minX);
-    const std::int64_t maxX = std::min<std::int64_t>(
-        ((std::max({q.x[0], q.x[1], q.x[2], q.x[3]}) + one - 1) >> kSubpixelBits) - 1, drawable.maxX);
-    const std::int64_t minY =
-        std::max<std::int64_t>((std::min({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits, drawable.minY);
-    const std::int64_t maxY = std::min<std::int64_t>(
-        ((std::max({q.y[0], q.y[1], q.y[2], q.y[3]}) + one) >> kSubpixelBits) - 1, drawable.maxY);
-    FragmentCounts counts;
-    for (std::int64_t py = minY; py <= maxY; ++py) {
-        // Each edge bounds the row's span: value(px) = a * px + b > 0.
-        std::int64_t first = minX, last = maxX;
-        for (const LineEdge& e : edges) {
-            const std::int64_t a = -e.dcdx * one;
-            const std::int64_t b = e.c + e.dcdy * py * one;
-            if (a > 0)
-                first = std::max(first, floorDiv(-b, a) + 1);
-            else if (a < 0)
-                last = std::min(last, -floorDiv(-b, -a) - 1);
-            else if (b <= 0)
-                last = first - 1;
-        }
-        if (first <= last) {
-            fragment.shadeSpan(static_cast<int>(py), static_cast<int>(first), static_cast<int>(last), fb, counts);
+    const auto [minX, maxX] = std::minmax({q.x[0], q.x[1], q.x[2], q.x[3]});
+    const auto [minY, maxY] = std::minmax({q.y[0], q.y[1], q.y[2], q.y[3]});
+    // Lows at least the drawable's, highs at most its (in 64 bits, then within one of it).
+    const auto low = [](std::int64_t v, int min, int max) {
+        return static_cast<int>(std::clamp<std::int64_t>(v, min, std::int64_t{max} + 1));
+    };
+    const auto high = [](std::int64_t v, int min, int max) {
+        return static_cast<int>(std::clamp<std::int64_t>(v, std::int64_t{min} - 1, max));
+    };
+    return {low((minX + one - 1) >> kSubpixelBits, drawable.minX, drawable.maxX),
+            high(((maxX + one - 1) >> kSubpixelBits) - 1, drawable.minX, drawable.maxX),
+            low((minY + one) >> kSubpixelBits, drawable.minY, drawable.maxY),
+            high(((maxY + one) >> kSubpixelBits) - 1, drawable.minY, drawable.maxY)};
+}
+
+// A line's quad queued for the tiles: per row, the span its four edges bound, through the
+// fragment stage.
+class QueuedLine final : public TiledPrimitive {
+public:
+    QueuedLine(const LineQuad& q, const PixelRect& pixels, const FragmentInputs& fragment, float depth)
+        : TiledPrimitive(pixels, depth),
+          edges_{LineEdge(q.x[0], q.y[0], q.x[1], q.y[1]), LineEdge(q.x[1], q.y[1], q.x[2], q.y[2]),
+                 LineEdge(q.x[2], q.y[2], q.x[3], q.y[3]), LineEdge(q.x[3], q.y[3], q.x[0], q.y[0])},
+          fragment_(fragment) {}
+
+    void draw(const PixelRect& tile, Framebuffer& fb, FragmentCounts& counts) const override {
+        const std::int64_t one = 1 << kSubpixelBits;
+        const int minX = std::max(bounds.minX, tile.minX), maxX = std::min(bounds.maxX, tile.maxX);
+        const int minY = std::max(bounds.minY, tile.minY), maxY = std::min(bounds.maxY, tile.maxY);
+        for (std::int64_t py = minY; py <= maxY; ++py) {
+            // Each edge bounds the row's span: value(px) = a * px + b > 0.
+            std::int64_t first = minX, last = maxX;
+            for (const LineEdge& e : edges_) {
+                const std::int64_t a = -e.dcdx * one;
+                const std::int64_t b = e.c + e.dcdy * py * one;
+                if (a > 0)
+                    first = std::max(first, floorDiv(-b, a) + 1);
+                else if (a < 0)
+                    last = std::min(last, -floorDiv(-b, -a) - 1);
+                else if (b <= 0)
+                    last = first - 1;
+            }
+            if (first <= last) {
+                fragment_.shadeSpan(static_cast<int>(py), static_cast<int>(first), static_cast<int>(last), fb, counts);
+            }
         }
     }
-    addFragmentCounts(stats, counts);
-}
+
+private:
+    LineEdge edges_[4];
+    FragmentInputs fragment_;
+};
 
 bool isUsable(const WindowVertex& v) {
     return std::fabs(v.x) < kMaxLineCoordinate && std::fabs(v.y) < kMaxLineCoordinate && std::isfinite(v.z) &&
@@ -244,8 +266,8 @@ bool isUsable(const WindowVertex& v) {
 
 }  // namespace
 
-void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor, float lineWidth,
-                   const FragmentChoice& fragments, Framebuffer& framebuffer, Stats& stats) {
+void queueLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor, float lineWidth,
+               const FragmentChoice& fragments, const PixelRect& drawable, PrimitiveQueue& queue) {
     if (!isUsable(start) || !isUsable(end)) return;
     if (start.x == end.x && start.y == end.y) return;  // zero length draws nothing
     // Width rounded to an integer (halves up), at least one pixel; NaN draws as 1, as the
@@ -253,6 +275,8 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
     const float width = lineWidth > 1.0f ? std::min(lineWidth, kMaxLineWidth) : 1.0f;
     const std::int64_t fixedWidth = roundHalfAway(width) << kSubpixelBits;
     const LineQuad quad = buildQuad(start.x, start.y, end.x, end.y, fixedWidth);
+    const PixelRect bounds = quadBounds(quad, drawable);
+    if (bounds.minX > bounds.maxX || bounds.minY > bounds.maxY) return;
 
     const LinePlaneBuilder builder(start, end);
     FragmentInputs fragment;
@@ -284,8 +308,7 @@ void rasterizeLine(const WindowVertex& start, const WindowVertex& end, const glm
         fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, builder, start,
                             end);
     }
-    fillQuad(quad, fragment, drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height()), framebuffer,
-             stats);
+    queue.queue(queue.make<QueuedLine>(quad, bounds, fragment, 0.5f * (start.z + end.z)));
 }
 
 }  // namespace glrenderer

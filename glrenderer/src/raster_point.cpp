@@ -44,17 +44,33 @@ PixelBox pointBox(const WindowVertex& v, float size) {
     return {x0, y0, x0 + s - 1, y0 + s - 1};
 }
 
+// A point's square queued for the tiles: one constant colour and depth.
+class QueuedPoint final : public TiledPrimitive {
+public:
+    QueuedPoint(const PixelRect& pixels, const FragmentInputs& fragment, float depth)
+        : TiledPrimitive(pixels, depth), fragment_(fragment) {}
+
+    void draw(const PixelRect& tile, Framebuffer& fb, FragmentCounts& counts) const override {
+        const int minX = std::max(bounds.minX, tile.minX), maxX = std::min(bounds.maxX, tile.maxX);
+        const int minY = std::max(bounds.minY, tile.minY), maxY = std::min(bounds.maxY, tile.maxY);
+        if (minX > maxX) return;
+        for (int row = minY; row <= maxY; ++row) fragment_.shadeSpan(row, minX, maxX, fb, counts);
+    }
+
+private:
+    FragmentInputs fragment_;
+};
+
 }  // namespace
 
-void rasterizePoint(const WindowVertex& point, const DrawState& state, const FragmentChoice& fragments,
-                    Framebuffer& framebuffer, Stats& stats) {
+void queuePoint(const WindowVertex& point, const DrawState& state, const FragmentChoice& fragments,
+                const PixelRect& drawable, PrimitiveQueue& queue) {
     if (!(std::fabs(point.x) < kMaxPointCoordinate && std::fabs(point.y) < kMaxPointCoordinate &&
           std::isfinite(point.z) && std::isfinite(point.invW))) {
         return;
     }
     const float size = state.pointSize > 1.0f ? std::min(state.pointSize, kMaxPointSize) : 1.0f;  // NaN: 1
     PixelBox box = pointBox(point, size);
-    const PixelRect drawable = drawableRect(state.fragmentOps.scissor, framebuffer.width(), framebuffer.height());
     box.x0 = std::max<std::int64_t>(box.x0, drawable.minX);
     box.y0 = std::max<std::int64_t>(box.y0, drawable.minY);
     box.x1 = std::min<std::int64_t>(box.x1, drawable.maxX);
@@ -83,12 +99,9 @@ void rasterizePoint(const WindowVertex& point, const DrawState& state, const Fra
         fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor,
                             ConstantPlanes{}, point);
     }
-    FragmentCounts counts;
-    for (std::int64_t row = box.y0; row <= box.y1; ++row) {
-        fragment.shadeSpan(static_cast<int>(row), static_cast<int>(box.x0), static_cast<int>(box.x1), framebuffer,
-                           counts);
-    }
-    addFragmentCounts(stats, counts);
+    const PixelRect bounds{static_cast<int>(box.x0), static_cast<int>(box.x1), static_cast<int>(box.y0),
+                           static_cast<int>(box.y1)};
+    queue.queue(queue.make<QueuedPoint>(bounds, fragment, point.z));
 }
 
 }  // namespace glrenderer

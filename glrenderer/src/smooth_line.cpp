@@ -21,9 +21,9 @@ Coverage lineCoverage(const glm::vec4& aa) {
 
 }  // namespace
 
-void rasterizeSmoothLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor,
-                         const DrawState& state, const FragmentChoice& fragments, Framebuffer& framebuffer,
-                         Stats& stats) {
+void queueSmoothLine(const WindowVertex& start, const WindowVertex& end, const glm::vec4& flatColor,
+                     const DrawState& state, const FragmentChoice& fragments, const PixelRect& drawable,
+                     PrimitiveQueue& queue) {
     if (!(state.lineWidth >= 0.0f)) return;  // NaN: the reference's quad has no area
     const float width = std::min(state.lineWidth, kMaxSmoothLineWidth);
     const float halfWidth = width <= 1.0f ? 1.0f : 0.5f * width + 0.5f;
@@ -50,11 +50,8 @@ void rasterizeSmoothLine(const WindowVertex& start, const WindowVertex& end, con
     if (shading.flat) {
         for (SmoothVertex& s : v) s.v.color = flatColor;
     }
-    const PixelRect drawable = drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height());
-    FragmentCounts counts;
-    drawSmoothTriangle(v[2], v[1], v[0], shading, flatColor, lineCoverage, fragments, drawable, framebuffer, counts);
-    drawSmoothTriangle(v[3], v[1], v[2], shading, flatColor, lineCoverage, fragments, drawable, framebuffer, counts);
-    addFragmentCounts(stats, counts);
+    queueSmoothTriangle(v[2], v[1], v[0], shading, flatColor, lineCoverage, fragments, drawable, queue);
+    queueSmoothTriangle(v[3], v[1], v[2], shading, flatColor, lineCoverage, fragments, drawable, queue);
 }
 
 }  // namespace glrenderer

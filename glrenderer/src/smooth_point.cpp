@@ -21,8 +21,8 @@ Coverage pointCoverage(const glm::vec4& aa) {
 
 }  // namespace
 
-void rasterizeSmoothPoint(const WindowVertex& point, const DrawState& state, const FragmentChoice& fragments,
-                          Framebuffer& framebuffer, Stats& stats) {
+void queueSmoothPoint(const WindowVertex& point, const DrawState& state, const FragmentChoice& fragments,
+                      const PixelRect& drawable, PrimitiveQueue& queue) {
     if (!(state.pointSize >= 0.0f)) return;  // NaN: the reference's quad has no area
     const float size = std::min(state.pointSize, kMaxSmoothPointSize);
     const float radius = size <= 2.0f ? 1.0f : 0.5f * size;
@@ -37,11 +37,8 @@ void rasterizeSmoothPoint(const WindowVertex& point, const DrawState& state, con
         v[i].aa = {corners[i][0], corners[i][1], k, 1.0f};
     }
     const SmoothShading shading = smoothShading(state);
-    const PixelRect drawable = drawableRect(fragments.scissor, framebuffer.width(), framebuffer.height());
-    FragmentCounts counts;
-    drawSmoothTriangle(v[0], v[1], v[2], shading, point.color, pointCoverage, fragments, drawable, framebuffer, counts);
-    drawSmoothTriangle(v[0], v[2], v[3], shading, point.color, pointCoverage, fragments, drawable, framebuffer, counts);
-    addFragmentCounts(stats, counts);
+    queueSmoothTriangle(v[0], v[1], v[2], shading, point.color, pointCoverage, fragments, drawable, queue);
+    queueSmoothTriangle(v[0], v[2], v[3], shading, point.color, pointCoverage, fragments, drawable, queue);
 }
 
 }  // namespace glrenderer

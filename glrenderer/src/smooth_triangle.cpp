@@ -22,29 +22,40 @@ bool isUsable(const WindowVertex& v) {
            std::isfinite(v.invW);
 }
 
-}  // namespace
+// The pixels in `area` the triangle may cover; empty (minX > maxX or minY > maxY) when it draws
+// nothing there.
+PixelRect smoothTriangleBounds(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
+                               const PixelRect& area) {
+    constexpr PixelRect kNothing{0, -1, 0, -1};
+    if (!isUsable(a.v) || !isUsable(b.v) || !isUsable(c.v)) return kNothing;
+    const FixedPoint fa = snap(a.v), fb = snap(b.v), fc = snap(c.v);
+    if (fixedArea(fa, fb, fc) == 0) return kNothing;
+    const auto low = [](std::int64_t fixed, int min) {
+        return static_cast<int>(std::max<std::int64_t>(ceilToPixel(fixed), min));
+    };
+    const auto high = [](std::int64_t fixed, int max) {
+        return static_cast<int>(std::min<std::int64_t>(floorToPixel(fixed), max));
+    };
+    return {low(std::min({fa.x, fb.x, fc.x}), area.minX), high(std::max({fa.x, fb.x, fc.x}), area.maxX),
+            low(std::min({fa.y, fb.y, fc.y}), area.minY), high(std::max({fa.y, fb.y, fc.y}), area.maxY)};
+}
 
+// Draws the triangle's fragments in `area` (see queueSmoothTriangle).
 void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
                         const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage,
-                        const FragmentChoice& fragments, const PixelRect& drawable, Framebuffer& framebuffer,
+                        const FragmentChoice& fragments, const PixelRect& area, Framebuffer& framebuffer,
                         FragmentCounts& counts) {
-    if (!isUsable(a.v) || !isUsable(b.v) || !isUsable(c.v)) return;
+    const PixelRect bounds = smoothTriangleBounds(a, b, c, area);
+    if (bounds.minX > bounds.maxX || bounds.minY > bounds.maxY) return;
     const FixedPoint fa = snap(a.v), fb = snap(b.v), fc = snap(c.v);
-    const std::int64_t area = fixedArea(fa, fb, fc);
-    if (area == 0) return;
+    const std::int64_t area2 = fixedArea(fa, fb, fc);
     // Edges oriented with the interior positive; planes anchored as setup anchors them (a
     // triangle clockwise in GL's window is set up as (b, a, c)).
-    const bool clockwise = area > 0;
+    const bool clockwise = area2 > 0;
     const FixedPoint& e1 = clockwise ? fb : fc;
     const FixedPoint& e2 = clockwise ? fc : fb;
     const EdgeFunction edges[3] = {EdgeFunction(fa, e1), EdgeFunction(e1, e2), EdgeFunction(e2, fa)};
-    const int minX = static_cast<int>(std::max<std::int64_t>(ceilToPixel(std::min({fa.x, fb.x, fc.x})), drawable.minX));
-    const int maxX =
-        static_cast<int>(std::min<std::int64_t>(floorToPixel(std::max({fa.x, fb.x, fc.x})), drawable.maxX));
-    const int minY = static_cast<int>(std::max<std::int64_t>(ceilToPixel(std::min({fa.y, fb.y, fc.y})), drawable.minY));
-    const int maxY =
-        static_cast<int>(std::min<std::int64_t>(floorToPixel(std::max({fa.y, fb.y, fc.y})), drawable.maxY));
-    if (minX > maxX || minY > maxY) return;
+    const auto [minX, maxX, minY, maxY] = bounds;
 
     const SmoothVertex& s0 = clockwise ? b : a;
     const SmoothVertex& s1 = clockwise ? a : b;
@@ -97,6 +108,43 @@ void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const Smoo
             fragment.shadeSpan(py, px, px, framebuffer, counts);
         }
     }
+}
+
+// A smooth primitive's triangle queued for the tiles, with everything it is drawn with.
+class QueuedSmoothTriangle final : public TiledPrimitive {
+public:
+    QueuedSmoothTriangle(const PixelRect& pixels, const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
+                         const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage,
+                         const FragmentChoice& fragments)
+        : TiledPrimitive(pixels, (a.v.z + b.v.z + c.v.z) / 3.0f),
+          v_{a, b, c},
+          shading_(shading),
+          flatColor_(flatColor),
+          coverage_(coverage),
+          fragments_(fragments) {}
+
+    void draw(const PixelRect& tile, Framebuffer& fb, FragmentCounts& counts) const override {
+        const PixelRect area{std::max(bounds.minX, tile.minX), std::min(bounds.maxX, tile.maxX),
+                             std::max(bounds.minY, tile.minY), std::min(bounds.maxY, tile.maxY)};
+        drawSmoothTriangle(v_[0], v_[1], v_[2], shading_, flatColor_, coverage_, fragments_, area, fb, counts);
+    }
+
+private:
+    SmoothVertex v_[3];
+    SmoothShading shading_;
+    glm::vec4 flatColor_;
+    CoverageShader coverage_;
+    FragmentChoice fragments_;
+};
+
+}  // namespace
+
+void queueSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
+                         const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage,
+                         const FragmentChoice& fragments, const PixelRect& drawable, PrimitiveQueue& queue) {
+    const PixelRect bounds = smoothTriangleBounds(a, b, c, drawable);
+    if (bounds.minX > bounds.maxX || bounds.minY > bounds.maxY) return;
+    queue.queue(queue.make<QueuedSmoothTriangle>(bounds, a, b, c, shading, flatColor, coverage, fragments));
 }
 
 }  // namespace glrenderer

@@ -5,6 +5,7 @@
 #include "glrenderer/draw_state.h"
 #include "glrenderer/framebuffer.h"
 #include "pixel_rect.h"
+#include "tiled_primitive.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -37,15 +38,14 @@ struct SmoothShading {
 // The shading of a draw's smooth primitives.
 SmoothShading smoothShading(const DrawState& state);
 
-// Rasterizes one triangle of such a quad as llvmpipe rasterizes any triangle (snapped edges,
-// its fill rule, planes anchored as its setup anchors them), interpolating colour, depth, fog,
-// texture coordinates and `aa` with perspective, then multiplies each fragment's alpha by
-// `coverage` of its `aa` and hands it to the fragment stage of `fragments` (a flat key: the
-// colour reaches it per fragment). `flatColor` is the colour under flat shading.
-// The shading's `covered` gives the colour the stage takes (smoothShading).
-void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
-                        const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage,
-                        const FragmentChoice& fragments, const PixelRect& drawable, Framebuffer& framebuffer,
-                        FragmentCounts& counts);
+// Queues for the tiles one triangle of such a quad, to be rasterized as llvmpipe rasterizes any triangle (snapped
+// edges, its fill rule, planes anchored as its setup anchors them), interpolating colour, depth, fog, texture
+// coordinates and `aa` with perspective, then multiplies each fragment's alpha by `coverage` of its `aa` and hands it
+// to the fragment stage of `fragments` (a flat key: the colour reaches it per fragment). `flatColor` is the colour
+// under flat shading. The shading's `covered` gives the colour the stage takes (smoothShading). The fragments lie in
+// `drawable`.
+void queueSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const SmoothVertex& c,
+                         const SmoothShading& shading, const glm::vec4& flatColor, CoverageShader coverage,
+                         const FragmentChoice& fragments, const PixelRect& drawable, PrimitiveQueue& queue);
 
 }  // namespace glrenderer

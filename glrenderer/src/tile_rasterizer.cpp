@@ -1,5 +1,6 @@
 #include "tile_rasterizer.h"
 
+#include "glrenderer/invariant.h"
 #include "raster_float_methods.h"
 #include "thread_count.h"
 
@@ -92,18 +93,32 @@ void TileRasterizer::queue(std::span<const RasterTriangle* const> triangles) {
 void TileRasterizer::releaseTriangles() {
     writer_.release();
     arena_.reset();
+    records_.reset();
+}
+
+void TileRasterizer::queue(const TiledPrimitive& primitive) {
+    fitTilesToFramebuffer();
+    const PixelRect& r = primitive.bounds;
+    MYGL_INVARIANT(r.minX >= 0 && r.minX <= r.maxX && r.maxX < binnedWidth_ && r.minY >= 0 && r.minY <= r.maxY &&
+                   r.maxY < binnedHeight_);
+    ++queued_;
+    const int shift = tileShift_;
+    binInto(BinEntry(&primitive), r.minX >> shift, r.maxX >> shift, r.minY >> shift, r.maxY >> shift);
 }
 
 void TileRasterizer::bin(const RasterTriangle& triangle) {
     ++queued_;
     const int shift = tileShift_;
-    const int firstX = triangle.minX >> shift, lastX = triangle.maxX >> shift;
-    const int firstY = triangle.minY >> shift, lastY = triangle.maxY >> shift;
+    binInto(BinEntry(&triangle), triangle.minX >> shift, triangle.maxX >> shift, triangle.minY >> shift,
+            triangle.maxY >> shift);
+}
+
+void TileRasterizer::binInto(BinEntry entry, int firstX, int lastX, int firstY, int lastY) {
     const auto tileAt = [this](int tx, int ty) {
         return static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX_) + static_cast<std::size_t>(tx);
     };
     const auto add = [&](std::size_t tile) {
-        bins_[tile].push_back(&triangle);
+        bins_[tile].push_back(entry);
         ++binnedSinceFlush_[tile];
     };
     // Most of a mesh's triangles lie in one tile.
@@ -154,10 +169,10 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     const int size = tileSize();
     const PixelRect rect{tx * size, std::min((tx + 1) * size, binnedWidth_) - 1, ty * size,
                          std::min((ty + 1) * size, binnedHeight_) - 1};
-    std::vector<const RasterTriangle*>& bin = bins_[tile];
+    std::vector<BinEntry>& bin = bins_[tile];
     if (paintersSort) {
         std::stable_sort(bin.begin(), bin.end(),
-                         [](const RasterTriangle* a, const RasterTriangle* b) { return a->meanDepth > b->meanDepth; });
+                         [](const BinEntry& a, const BinEntry& b) { return a.meanDepth() > b.meanDepth(); });
     }
     if (clearPending_[tile]) {
         clearTile(tile, rect, !bin.empty());
@@ -168,8 +183,13 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     // ahead while drawing the current one.
     constexpr std::size_t kPrefetchAhead = 4;
     for (std::size_t i = 0; i < bin.size(); ++i) {
-        if (i + kPrefetchAhead < bin.size()) prefetch(*bin[i + kPrefetchAhead]);
-        rasterizeWithMethod(*bin[i], rect, framebuffer_, counts);
+        if (i + kPrefetchAhead < bin.size()) {
+            if (const RasterTriangle* ahead = bin[i + kPrefetchAhead].triangle()) prefetch(*ahead);
+        }
+        if (const RasterTriangle* triangle = bin[i].triangle())
+            rasterizeWithMethod(*triangle, rect, framebuffer_, counts);
+        else
+            bin[i].other().draw(rect, framebuffer_, counts);
     }
     bin.clear();
 }

@@ -6,16 +6,18 @@
 
 #include "glrenderer/framebuffer.h"
 #include "glrenderer/stats.h"
+#include "tiled_primitive.h"
 #include "triangle_arena.h"
 #include "worker_pool.h"
 
 namespace glrenderer {
 
-// Defers rasterization: triangles are binned into screen tiles and drawn at flush(), tiles in
-// parallel, each tile's triangles in submission order; drawSomeTiles() may draw part of the
-// queue earlier on a thread that would otherwise wait. Every pixel is computed exactly as the
-// immediate kernel computes it, so the result does not depend on tiling, threads or timing.
-class TileRasterizer final : public TriangleTarget {
+// Defers rasterization: triangles, points and lines are binned into screen tiles and drawn at
+// flush(), tiles in parallel, each tile's primitives in submission order; drawSomeTiles() may
+// draw part of the queue earlier on a thread that would otherwise wait. Every pixel is computed
+// exactly as the immediate kernel computes it, so the result does not depend on tiling, threads
+// or timing.
+class TileRasterizer final : public TriangleTarget, public PrimitiveQueue {
 public:
     explicit TileRasterizer(Framebuffer& framebuffer);
 
@@ -28,6 +30,8 @@ public:
         writer_.keep();
         bin(writer_.last());
     }
+    // A point, a line or a smooth primitive's triangle, made with make().
+    void queue(const TiledPrimitive& primitive) override;
     // Queues triangles set up elsewhere in arena() slots, in order.
     void queue(std::span<const RasterTriangle* const> triangles);
     // Where triangles are set up for queue(). Its slots stay taken until releaseTriangles().
@@ -39,9 +43,6 @@ public:
     // while it is in cache, instead of one pass over the whole framebuffer now. A tile that still
     // holds the same clear values (nothing drawn there since) is not written again.
     void clearAtFlush(bool color, std::uint32_t rgba, bool depth, std::uint32_t depth24);
-    // After pixels were drawn other than through the tiles (points and lines): no tile is then
-    // known to hold its clear values.
-    void forgetClearedTiles() { std::fill(holdsClear_.begin(), holdsClear_.end(), std::uint8_t{0}); }
     // Draws everything queued and every pending clear; adds fragment counts to stats. The
     // framebuffer must keep its size between queuing and flush(); if it changed, the queued
     // triangles are dropped. With paintersSort each tile draws its triangles far to near by
@@ -64,6 +65,26 @@ public:
     std::size_t queued() const { return queued_; }
 
 private:
+    // A tile's queued primitive: a triangle, or with the low bit set (records are aligned) another.
+    class BinEntry {
+    public:
+        explicit BinEntry(const RasterTriangle* triangle) : bits_(reinterpret_cast<std::uintptr_t>(triangle)) {}
+        explicit BinEntry(const TiledPrimitive* other) : bits_(reinterpret_cast<std::uintptr_t>(other) | 1) {}
+        const RasterTriangle* triangle() const {
+            return bits_ & 1 ? nullptr : reinterpret_cast<const RasterTriangle*>(bits_);
+        }
+        const TiledPrimitive& other() const {
+            return *reinterpret_cast<const TiledPrimitive*>(bits_ & ~std::uintptr_t{1});
+        }
+        float meanDepth() const { return triangle() ? triangle()->meanDepth : other().meanDepth; }
+
+    private:
+        std::uintptr_t bits_;
+    };
+
+    void* allocate(std::size_t bytes, std::size_t alignment) override { return records_.allocate(bytes, alignment); }
+    // No tile is known to hold its clear values any more.
+    void forgetClearedTiles() { std::fill(holdsClear_.begin(), holdsClear_.end(), std::uint8_t{0}); }
     // Tiles are 2^tileShift_ pixels square, chosen per framebuffer size in refitTiles().
     int tileSize() const { return 1 << tileShift_; }
     void fitTilesToFramebuffer() {
@@ -71,6 +92,8 @@ private:
     }
     void refitTiles();
     void bin(const RasterTriangle& triangle);
+    // Adds `entry` to the bins of the tiles from (firstX, firstY) to (lastX, lastY).
+    void binInto(BinEntry entry, int firstX, int lastX, int firstY, int lastY);
     // Clears the tile if a clear is pending for it, draws its queued triangles, empties its bin.
     void drawTile(std::size_t tile, FragmentCounts& counts, bool paintersSort);
     // Before tiles are drawn: which tiles hold the pending clear's values already.
@@ -102,9 +125,10 @@ private:
     std::uint32_t heldRgba_ = 0, heldDepth24_ = 0;
     std::uint64_t heldGeneration_ = 0;
     TriangleArena arena_;
-    ArenaWriter writer_{arena_};                            // for slot() and keep()
-    std::size_t queued_ = 0;                                // binned and not drawn yet
-    std::vector<std::vector<const RasterTriangle*>> bins_;  // per tile, in submission order
+    ArenaWriter writer_{arena_};               // for slot() and keep()
+    RecordPool records_;                       // of the queued points and lines
+    std::size_t queued_ = 0;                   // binned and not drawn yet
+    std::vector<std::vector<BinEntry>> bins_;  // per tile, in submission order
     // Per tile, triangles binned since the last flush: what its bin may have to hold next time,
     // however much of it is drawn early (which depends on timing).
     std::vector<std::uint32_t> binnedSinceFlush_;

@@ -121,7 +121,7 @@ public:
                    const UnfilledTarget& target)
         : state_(state),
           anyEdgeShown_(anyEdgeShown),
-          framebuffer_(framebuffer),
+          drawable_(drawableRect(state.fragmentOps.scissor, framebuffer.width(), framebuffer.height())),
           stats_(stats),
           target_(target),
           lineFragments_(bestFragmentPaths(), state.lineSmooth ? smoothFragmentKey(state) : fragmentKey(state), state),
@@ -172,7 +172,6 @@ public:
         // Polygon offset of line and point modes: the draw module's, on the vertices.
         if (offsetStage_) offsetInDrawModule(offset, w0, w1, w2);
         ++stats_.rasterized;
-        target_.beforeLinesOrPoints();
         const bool flat = state_.shadeModel == ShadeModel::Flat;
         if (mode == PolygonMode::Line && (edges & kResetStipple) && target_.feedback)
             target_.feedback->resetLineStipple();
@@ -206,8 +205,8 @@ private:
         if (target_.feedback) return target_.feedback->line(flatColored(from, flatColor), flatColored(to, flatColor));
         const auto draw = [&](const WindowVertex& a, const WindowVertex& b) {
             if (state_.lineSmooth)
-                return rasterizeSmoothLine(a, b, flatColor, state_, lineFragments_, framebuffer_, stats_);
-            rasterizeLine(a, b, flatColor, state_.lineWidth, lineFragments_, framebuffer_, stats_);
+                return queueSmoothLine(a, b, flatColor, state_, lineFragments_, drawable_, *target_.queue);
+            queueLine(a, b, flatColor, state_.lineWidth, lineFragments_, drawable_, *target_.queue);
         };
         if (stippling_) return target_.stippler->cut(state_.lineStipple, from, to, state_.lineSmooth, draw);
         draw(from, to);
@@ -216,8 +215,8 @@ private:
         if (target_.feedback) return target_.feedback->point(flatColored(p, flatColor));
         WindowVertex colored = p;
         if (flat) colored.color = flatColor;
-        if (state_.pointSmooth) return rasterizeSmoothPoint(colored, state_, pointFragments_, framebuffer_, stats_);
-        rasterizePoint(colored, state_, pointFragments_, framebuffer_, stats_);
+        if (state_.pointSmooth) return queueSmoothPoint(colored, state_, pointFragments_, drawable_, *target_.queue);
+        queuePoint(colored, state_, pointFragments_, drawable_, *target_.queue);
     }
 
     // Feedback's vertex: with flat shading the draw module's flatshade stage has given it the
@@ -232,7 +231,7 @@ private:
     const bool anyEdgeShown_;  // false: the batch's edges are all hidden by the current edge flag
     const bool offsetStage_ = state_.polygonOffset.fill || state_.polygonOffset.line || state_.polygonOffset.point;
     bool offsetChosen_ = false, offsetOn_ = false;
-    Framebuffer& framebuffer_;
+    const PixelRect drawable_;
     Stats& stats_;
     const UnfilledTarget& target_;
     const bool stippling_ = state_.lineStipple.enabled && target_.stippler;

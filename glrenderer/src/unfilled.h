@@ -12,6 +12,7 @@
 #include "clip_vertex.h"
 #include "feedback_output.h"
 #include "line_stipple.h"
+#include "tiled_primitive.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -20,8 +21,8 @@ namespace glrenderer {
 struct UnfilledTarget {
     // A triangle of a face whose polygon mode is FILL, already clipped, to snap, cull and fill.
     std::function<void(const WindowVertex&, const WindowVertex&, const WindowVertex&, const glm::vec4&)> fill;
-    // Called before lines or points are drawn, so that filled triangles queued earlier land first.
-    std::function<void()> beforeLinesOrPoints;
+    // Where lines and points are queued, after the filled triangles before them (drawing only).
+    PrimitiveQueue* queue = nullptr;
     // GL_FEEDBACK: lines and points go there instead of being drawn.
     FeedbackOutput* feedback = nullptr;
     // Cuts the lines under the line stipple (the pipeline's; drawing only).

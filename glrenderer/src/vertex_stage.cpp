@@ -37,21 +37,21 @@ Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& v
     Outcode anyOutside = cpuHasFma() ? stageVerticesFma(batch.vertices, mvp, viewport, out)
                                      : stageVertices(batch.vertices, mvp, viewport, out);
     fogCoordinates_.clear();
-    if (batch.state.fog.mode != FogMode::Off) {
+    if (batch.state->fog.mode != FogMode::Off) {
         fogCoordinates_.resize(count);
-        fogCoordinates(batch.vertices, batch.transform.modelview, batch.state.fog.distance, fogCoordinates_);
+        fogCoordinates(batch.vertices, batch.transform.modelview, batch.state->fog.distance, fogCoordinates_);
         for (std::size_t i = 0; i < count; ++i) windowVertices_[i].fogCoord = fogCoordinates_[i];
     }
     texCoordinates_.clear();
-    if (batch.state.texture.env != TextureEnv::Off) {
+    if (batch.state->texture.env != TextureEnv::Off) {
         texCoordinates_.resize(count);
-        textureCoordinates(batch.vertices, batch.state.texture, batch.transform.modelview, texCoordinates_);
+        textureCoordinates(batch.vertices, batch.state->texture, batch.transform.modelview, texCoordinates_);
         for (std::size_t i = 0; i < count; ++i) windowVertices_[i].texCoord = texCoordinates_[i];
     }
-    if (batch.state.secondaryColors) {
+    if (batch.state->secondaryColors) {
         for (std::size_t i = 0; i < count; ++i) windowVertices_[i].secondaryColor = batch.vertices[i].secondaryColor;
     }
-    const UserClipPlanes& user = batch.state.clipPlanes;
+    const UserClipPlanes& user = batch.state->clipPlanes;
     if (user.enabled) {
         for (std::size_t i = 0; i < count; ++i) {
             outcodes_[i] |= userClipOutcode(clipPositions_[i], user);
@@ -95,7 +95,7 @@ void lightChunk(BatchChunk& chunk) {
     for (const BatchEntry& batch : chunk.batches) {
         if (batch.lighting) {
             batch.lighting->lightVertices(std::span(chunk.vertices).subspan(batch.first, batch.count),
-                                          batch.state.twoSidedColors);
+                                          batch.state->twoSidedColors);
         }
     }
 }

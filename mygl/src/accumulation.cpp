@@ -36,7 +36,7 @@ void accum(GLenum op, GLfloat value) {
     if (*operation == AccumOp::Return && s->buffers.drawBuffer == GL_NONE) return;
     drawCachedBitmaps(*s);
     s->pipeline.finish();
-    const glrenderer::FragmentOps& ops = s->draw.fragmentOps;
+    const glrenderer::FragmentOps& ops = s->draw->fragmentOps;
     glrenderer::accumulate(s->framebuffer, ops.scissor, ops.colorMask, *operation, value);
 }
 
@@ -44,21 +44,19 @@ void accum(GLenum op, GLfloat value) {
 float clampToSigned(GLfloat v) { return v > -1.0f ? std::min(v, 1.0f) : -1.0f; }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glClearAccum,
-        +[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
-            if (Context::State* s = stateOutsideBeginEnd()) {
-                s->buffers.accumClear = {clampToSigned(r), clampToSigned(g), clampToSigned(b), clampToSigned(a)};
-            }
-        }),
-    MYGL_ENTRY(
-        glAccum, +[](GLenum op, GLfloat value) { accum(op, value); }),
+    listed<gl::glClearAccum,
+           +[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+               if (Context::State* s = stateOutsideBeginEnd()) {
+                   s->buffers.accumClear = {clampToSigned(r), clampToSigned(g), clampToSigned(b), clampToSigned(a)};
+               }
+           }>(),
+    listed<gl::glAccum, +[](GLenum op, GLfloat value) { accum(op, value); }>(),
 };
 
 }  // namespace
 
 void clearAccumBuffer(Context::State& s) {
-    glrenderer::clearAccum(s.framebuffer, s.draw.fragmentOps.scissor, s.buffers.accumClear);
+    glrenderer::clearAccum(s.framebuffer, s.draw->fragmentOps.scissor, s.buffers.accumClear);
 }
 
 std::span<const EntryPoint> accumulationEntryPoints() { return kEntryPoints; }

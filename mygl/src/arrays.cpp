@@ -297,7 +297,7 @@ void drawElementsOf(Context::State& s, GLenum mode, const ClientArrays& arrays, 
     const ElementReader element(arrays);
     const std::optional<MeshArrays> mesh = MeshArrays::of(arrays);
     if (mesh && elements.indices && !s.lightingOnProgramThread &&
-        glrenderer::Pipeline::acceptsIndexedParts(s.draw, static_cast<glrenderer::PrimitiveMode>(mode))) {
+        glrenderer::Pipeline::acceptsIndexedParts(*s.draw, static_cast<glrenderer::PrimitiveMode>(mode))) {
         drawIndexedParts(s, *mesh, elements);
     } else {
         for (std::size_t k = 0; k < elements.count; ++k) {
@@ -468,69 +468,58 @@ ClientArray& texCoordArray(ClientArrays& a) { return a.texCoord; }
 ClientArray& edgeFlagArray(ClientArrays& a) { return a.edgeFlag; }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glVertexPointer,
-        +[](GLint size, GLenum type, GLsizei stride, const void* p) {
-            setPointer(vertexArray, size, size >= 2 && size <= 4, type,
-                       isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
-        }),
-    MYGL_ENTRY(
-        glNormalPointer,
-        +[](GLenum type, GLsizei stride, const void* p) {
-            setPointer(normalArray, 3, true, type, isOneOf(type, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}),
-                       stride, p);
-        }),
-    MYGL_ENTRY(
-        glColorPointer,
-        +[](GLint size, GLenum type, GLsizei stride, const void* p) {
-            setPointer(colorArray, size, size == 3 || size == 4, type,
-                       isOneOf(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT,
-                                      GL_FLOAT, GL_DOUBLE}),
-                       stride, p);
-        }),
-    MYGL_ENTRY(
-        glIndexPointer,
-        +[](GLenum type, GLsizei stride, const void* p) {
-            setPointer(indexArray, 1, true, type,
-                       isOneOf(type, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
-        }),
-    MYGL_ENTRY(
-        glTexCoordPointer,
-        +[](GLint size, GLenum type, GLsizei stride, const void* p) {
-            setPointer(texCoordArray, size, size >= 1 && size <= 4, type,
-                       isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
-        }),
-    MYGL_ENTRY(
-        glEdgeFlagPointer,
-        +[](GLsizei stride, const void* p) { setPointer(edgeFlagArray, 1, true, GL_UNSIGNED_BYTE, true, stride, p); }),
-    MYGL_ENTRY(
-        glEnableClientState, +[](GLenum name) { enableClientState(name, true); }),
-    MYGL_ENTRY(
-        glDisableClientState, +[](GLenum name) { enableClientState(name, false); }),
-    MYGL_ENTRY(
-        glInterleavedArrays,
-        +[](GLenum format, GLsizei stride, const void* p) { interleavedArrays(format, stride, p); }),
-    MYGL_ENTRY(
-        glArrayElement, +[](GLint i) { arrayElement(i); }),
-    MYGL_ENTRY(
-        glDrawArrays, +[](GLenum mode, GLint first, GLsizei count) { drawArrays(mode, first, count); }),
-    MYGL_ENTRY(
-        glDrawElements, +[](GLenum mode, GLsizei count, GLenum type,
-                            const void* indices) { drawElements(mode, count, type, indices); }),
-    MYGL_ENTRY(
-        glGetPointerv,
-        +[](GLenum name, void** out) {
-            Context::State* s = stateOutsideBeginEnd();
-            if (!s || !out) return;
-            if (name == GL_SELECTION_BUFFER_POINTER || name == GL_FEEDBACK_BUFFER_POINTER) {
-                *out =
-                    name == GL_SELECTION_BUFFER_POINTER ? static_cast<void*>(s->selection.buffer) : s->feedback.buffer;
-                return;
-            }
-            const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;
-            if (!known) return setError(*s, GL_INVALID_ENUM);
-            *out = const_cast<void*>(arrayPointer(*s, name));
-        }),
+    listed<gl::glVertexPointer,
+           +[](GLint size, GLenum type, GLsizei stride, const void* p) {
+               setPointer(vertexArray, size, size >= 2 && size <= 4, type,
+                          isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+           }>(),
+    listed<gl::glNormalPointer,
+           +[](GLenum type, GLsizei stride, const void* p) {
+               setPointer(normalArray, 3, true, type, isOneOf(type, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}),
+                          stride, p);
+           }>(),
+    listed<gl::glColorPointer,
+           +[](GLint size, GLenum type, GLsizei stride, const void* p) {
+               setPointer(colorArray, size, size == 3 || size == 4, type,
+                          isOneOf(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT,
+                                         GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE}),
+                          stride, p);
+           }>(),
+    listed<gl::glIndexPointer,
+           +[](GLenum type, GLsizei stride, const void* p) {
+               setPointer(indexArray, 1, true, type,
+                          isOneOf(type, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+           }>(),
+    listed<gl::glTexCoordPointer,
+           +[](GLint size, GLenum type, GLsizei stride, const void* p) {
+               setPointer(texCoordArray, size, size >= 1 && size <= 4, type,
+                          isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+           }>(),
+    listed<gl::glEdgeFlagPointer,
+           +[](GLsizei stride, const void* p) {
+               setPointer(edgeFlagArray, 1, true, GL_UNSIGNED_BYTE, true, stride, p);
+           }>(),
+    listed<gl::glEnableClientState, +[](GLenum name) { enableClientState(name, true); }>(),
+    listed<gl::glDisableClientState, +[](GLenum name) { enableClientState(name, false); }>(),
+    listed<gl::glInterleavedArrays,
+           +[](GLenum format, GLsizei stride, const void* p) { interleavedArrays(format, stride, p); }>(),
+    listed<gl::glArrayElement, +[](GLint i) { arrayElement(i); }>(),
+    listed<gl::glDrawArrays, +[](GLenum mode, GLint first, GLsizei count) { drawArrays(mode, first, count); }>(),
+    listed<gl::glDrawElements, +[](GLenum mode, GLsizei count, GLenum type,
+                                   const void* indices) { drawElements(mode, count, type, indices); }>(),
+    listed<gl::glGetPointerv,
+           +[](GLenum name, void** out) {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s || !out) return;
+               if (name == GL_SELECTION_BUFFER_POINTER || name == GL_FEEDBACK_BUFFER_POINTER) {
+                   *out = name == GL_SELECTION_BUFFER_POINTER ? static_cast<void*>(s->selection.buffer)
+                                                              : s->feedback.buffer;
+                   return;
+               }
+               const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;
+               if (!known) return setError(*s, GL_INVALID_ENUM);
+               *out = const_cast<void*>(arrayPointer(*s, name));
+           }>(),
 };
 
 }  // namespace

@@ -11,6 +11,10 @@ namespace {
 
 using State = Context::State;
 
+// The draw state in a group's fields: changed when a restore assigns them.
+glrenderer::DrawState& drawOf(State& s) { return s.draw.edit(); }
+const glrenderer::DrawState& drawOf(const State& s) { return *s.draw; }
+
 // Saves the fields `Select(state)` ties together; the restore assigns them back.
 template <auto Select>
 RestoreGroup saveFields(const State& state) {
@@ -152,16 +156,17 @@ const AttribGroup kServerGroups[] = {
     {GL_ENABLE_BIT, kEnableCapabilities, nullptr},
     {GL_COLOR_BUFFER_BIT, kColorBufferCapabilities, saveFields<[](auto& s) {
          auto& p = s.fragmentOps;
-         auto& o = s.draw.fragmentOps;
+         auto& o = drawOf(s).fragmentOps;
          return std::tie(s.clearColor, s.buffers.drawBuffer, s.buffers.clearIndex, s.buffers.indexMask, p.alphaFunc,
                          p.alphaRef, p.blendSrc, p.blendDst, p.logicOp, p.colorMask, o.alphaFunc, o.alphaRef,
                          o.blendSrc, o.blendDst, o.logicOp, o.colorMask);
      }>},
     {GL_ACCUM_BUFFER_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.accumClear); }>},
     {GL_PIXEL_MODE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.buffers.readBuffer, s.pixelModes); }>},
-    {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities,
-     saveFields<[](auto& s) { return std::tie(s.depthFunc, s.draw.depthFunc, s.draw.depthWrite, s.clearDepth); }>},
-    {GL_FOG_BIT, kFogCapabilities, saveFields<[](auto& s) { return std::tie(s.fog, s.draw.fog); }>},
+    {GL_DEPTH_BUFFER_BIT, kDepthBufferCapabilities, saveFields<[](auto& s) {
+         return std::tie(s.depthFunc, drawOf(s).depthFunc, drawOf(s).depthWrite, s.clearDepth);
+     }>},
+    {GL_FOG_BIT, kFogCapabilities, saveFields<[](auto& s) { return std::tie(s.fog, drawOf(s).fog); }>},
     {GL_EVAL_BIT, kEvalCapabilities, saveFields<[](auto& s) {
          auto& e = s.evaluators;
          return std::tie(e.grid1un, e.grid1u1, e.grid1u2, e.grid1du, e.grid2un, e.grid2u1, e.grid2u2, e.grid2du,
@@ -170,31 +175,31 @@ const AttribGroup kServerGroups[] = {
     {GL_LIGHTING_BIT, kLightingCapabilities, saveFields<[](auto& s) {
          // (GL_NORMALIZE and GL_RESCALE_NORMAL, kept in the lighting state, belong to other groups.)
          auto& l = s.lighting;
-         return std::tie(s.shadeModel, s.draw.shadeModel, l.lights, l.modelAmbient, l.localViewer, l.twoSide,
+         return std::tie(s.shadeModel, drawOf(s).shadeModel, l.lights, l.modelAmbient, l.localViewer, l.twoSide,
                          l.separateSpecular, l.materials, l.colorMaterial, s.colorMaterialFace, s.colorMaterialMode);
      }>},
     {GL_LINE_BIT, kLineCapabilities, saveFields<[](auto& s) {
-         return std::tie(s.draw.lineWidth, s.draw.lineStipple.pattern, s.draw.lineStipple.factor);
+         return std::tie(drawOf(s).lineWidth, drawOf(s).lineStipple.pattern, drawOf(s).lineStipple.factor);
      }>},
-    {GL_POLYGON_STIPPLE_BIT, {}, saveFields<[](auto& s) { return std::tie(s.draw.polygonStipple.pattern); }>},
-    {GL_POINT_BIT, kPointCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.pointSize); }>},
+    {GL_POLYGON_STIPPLE_BIT, {}, saveFields<[](auto& s) { return std::tie(drawOf(s).polygonStipple.pattern); }>},
+    {GL_POINT_BIT, kPointCapabilities, saveFields<[](auto& s) { return std::tie(drawOf(s).pointSize); }>},
     {GL_POLYGON_BIT, kPolygonCapabilities, saveFields<[](auto& s) {
-         return std::tie(s.cullFaceMode, s.draw.cullFace, s.frontFace, s.draw.frontFaceCCW, s.polygonModeFront,
-                         s.draw.polygonFront, s.polygonModeBack, s.draw.polygonBack, s.draw.polygonOffset.factor,
-                         s.draw.polygonOffset.units);
+         return std::tie(s.cullFaceMode, drawOf(s).cullFace, s.frontFace, drawOf(s).frontFaceCCW, s.polygonModeFront,
+                         drawOf(s).polygonFront, s.polygonModeBack, drawOf(s).polygonBack,
+                         drawOf(s).polygonOffset.factor, drawOf(s).polygonOffset.units);
      }>},
-    {GL_SCISSOR_BIT, kScissorCapabilities, saveFields<[](auto& s) { return std::tie(s.draw.fragmentOps.scissor); }>},
+    {GL_SCISSOR_BIT, kScissorCapabilities, saveFields<[](auto& s) { return std::tie(drawOf(s).fragmentOps.scissor); }>},
     {GL_STENCIL_BUFFER_BIT, kStencilCapabilities, saveFields<[](auto& s) {
          auto& p = s.fragmentOps;
          return std::tie(p.stencilFunc, p.stencilRef, p.stencilValueMask, p.stencilWriteMask, p.stencilFail,
-                         p.stencilDepthFail, p.stencilDepthPass, p.clearStencil, s.draw.fragmentOps.stencil);
+                         p.stencilDepthFail, p.stencilDepthPass, p.clearStencil, drawOf(s).fragmentOps.stencil);
      }>},
     {GL_TEXTURE_BIT, kTextureCapabilities, saveTextures},
     {GL_TRANSFORM_BIT, kTransformCapabilities,
      saveFields<[](auto& s) { return std::tie(s.matrixMode, s.eyeClipPlanes); }>},
     {GL_VIEWPORT_BIT,
      {},
-     saveFields<[](auto& s) { return std::tie(s.draw.viewport, s.draw.depthNear, s.draw.depthFar); }>},
+     saveFields<[](auto& s) { return std::tie(drawOf(s).viewport, drawOf(s).depthNear, drawOf(s).depthFar); }>},
     {GL_HINT_BIT, {}, saveFields<[](auto& s) { return std::tie(s.hints); }>},
     {GL_LIST_BIT, {}, saveFields<[](auto& s) { return std::tie(s.lists.base); }>},
 };

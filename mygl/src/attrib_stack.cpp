@@ -41,38 +41,35 @@ void pushAttrib(Context::State* s, AttribStack& stack, GLbitfield mask, std::spa
 void popAttrib(Context::State* s, AttribStack& stack) {
     const std::optional<std::vector<RestoreGroup>> saved = stack.pop();
     if (!saved) return setError(*s, GL_STACK_UNDERFLOW);
-    const glrenderer::DrawState before = s->draw;
+    const glrenderer::DrawState before = *s->draw;
     for (const RestoreGroup& restore : *saved) restore(*s);
     updateLitColors(*s);
     s->lightingStale = true;  // the lights may have been restored
     updateClipPlanes(*s);     // so may the clip planes' equations
     // The batch keeps its own copy of the draw state, so it can end after the change.
-    if (!(s->draw == before)) endBatch(*s);
+    if (!(*s->draw == before)) endBatch(*s);
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glPushAttrib,
-        +[](GLbitfield mask) {
-            if (Context::State* s = stateOutsideBeginEnd()) pushAttrib(s, s->attribStack, mask, serverAttribGroups());
-        }),
-    MYGL_ENTRY(
-        glPopAttrib,
-        +[]() {
-            if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->attribStack);
-        }),
+    listed<gl::glPushAttrib,
+           +[](GLbitfield mask) {
+               if (Context::State* s = stateOutsideBeginEnd())
+                   pushAttrib(s, s->attribStack, mask, serverAttribGroups());
+           }>(),
+    listed<gl::glPopAttrib,
+           +[]() {
+               if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->attribStack);
+           }>(),
     // Client state is not compiled into display lists.
-    MYGL_ENTRY(
-        glPushClientAttrib,
-        +[](GLbitfield mask) {
-            if (Context::State* s = stateOutsideBeginEnd())
-                pushAttrib(s, s->clientAttribStack, mask, clientAttribGroups());
-        }),
-    MYGL_ENTRY(
-        glPopClientAttrib,
-        +[]() {
-            if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->clientAttribStack);
-        }),
+    listed<gl::glPushClientAttrib,
+           +[](GLbitfield mask) {
+               if (Context::State* s = stateOutsideBeginEnd())
+                   pushAttrib(s, s->clientAttribStack, mask, clientAttribGroups());
+           }>(),
+    listed<gl::glPopClientAttrib,
+           +[]() {
+               if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->clientAttribStack);
+           }>(),
 };
 
 }  // namespace

@@ -24,7 +24,7 @@ void begin(GLenum mode, glrenderer::QuadSplit quadSplit) {
     if (s->fog.enabled) updateFogDistance(*s);
     updateTexturing(*s);
     s->insideBeginEnd = true;
-    s->pipeline.beginPrimitive(s->draw, static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
+    s->pipeline.beginPrimitive(s->draw.interned(s->pipeline), static_cast<glrenderer::PrimitiveMode>(mode), quadSplit);
     if (s->lightingEnabled) s->pipeline.colorPerVertex();  // lit colours vary per vertex
 }
 
@@ -59,36 +59,34 @@ void rect(T x1, T y1, T x2, T y2) {
 
 // glColor, glNormal, ... in every type: one line per entry point.
 // clang-format off
-#define MYGL_COLOR(suffix, T)                                                                                  \
-    MYGL_ENTRY(glColor3##suffix, +[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }),         \
-    MYGL_ENTRY(glColor4##suffix, +[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); }), \
-    MYGL_ENTRY(glColor3##suffix##v, +[](const T* v) { colorv(v, 3); }),                                        \
-    MYGL_ENTRY(glColor4##suffix##v, +[](const T* v) { colorv(v, 4); })
-#define MYGL_NORMAL(suffix, T)                                                                        \
-    MYGL_ENTRY(glNormal3##suffix, +[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }), \
-    MYGL_ENTRY(glNormal3##suffix##v, +[](const T* v) { normalv(v); })
-#define MYGL_TEXCOORD(suffix, T)                                                                                     \
-    MYGL_ENTRY(glTexCoord1##suffix, +[](T s) { texCoordv(&s, 1); }),                                                 \
-    MYGL_ENTRY(glTexCoord2##suffix, +[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data(), 2); }),                 \
-    MYGL_ENTRY(glTexCoord3##suffix, +[](T s, T t, T r) { texCoordv(std::array<T, 3>{s, t, r}.data(), 3); }),         \
-    MYGL_ENTRY(glTexCoord4##suffix, +[](T s, T t, T r, T q) { texCoordv(std::array<T, 4>{s, t, r, q}.data(), 4); }), \
-    MYGL_ENTRY(glTexCoord1##suffix##v, +[](const T* v) { texCoordv(v, 1); }),                                        \
-    MYGL_ENTRY(glTexCoord2##suffix##v, +[](const T* v) { texCoordv(v, 2); }),                                        \
-    MYGL_ENTRY(glTexCoord3##suffix##v, +[](const T* v) { texCoordv(v, 3); }),                                        \
-    MYGL_ENTRY(glTexCoord4##suffix##v, +[](const T* v) { texCoordv(v, 4); })
-#define MYGL_RECT(suffix, T)                                                           \
-    MYGL_ENTRY(glRect##suffix, +[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }), \
-    MYGL_ENTRY(glRect##suffix##v, +[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); })
+#define MYGL_COLOR(suffix, T)                                                                                    \
+    listed<gl::glColor3##suffix, +[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }>(),         \
+    listed<gl::glColor4##suffix, +[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); }>(), \
+    listed<gl::glColor3##suffix##v, +[](const T* v) { colorv(v, 3); }>(),                                        \
+    listed<gl::glColor4##suffix##v, +[](const T* v) { colorv(v, 4); }>()
+#define MYGL_NORMAL(suffix, T)                                                                          \
+    listed<gl::glNormal3##suffix, +[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }>(), \
+    listed<gl::glNormal3##suffix##v, +[](const T* v) { normalv(v); }>()
+#define MYGL_TEXCOORD(suffix, T)                                                                                       \
+    listed<gl::glTexCoord1##suffix, +[](T s) { texCoordv(&s, 1); }>(),                                                 \
+    listed<gl::glTexCoord2##suffix, +[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data(), 2); }>(),                 \
+    listed<gl::glTexCoord3##suffix, +[](T s, T t, T r) { texCoordv(std::array<T, 3>{s, t, r}.data(), 3); }>(),         \
+    listed<gl::glTexCoord4##suffix, +[](T s, T t, T r, T q) { texCoordv(std::array<T, 4>{s, t, r, q}.data(), 4); }>(), \
+    listed<gl::glTexCoord1##suffix##v, +[](const T* v) { texCoordv(v, 1); }>(),                                        \
+    listed<gl::glTexCoord2##suffix##v, +[](const T* v) { texCoordv(v, 2); }>(),                                        \
+    listed<gl::glTexCoord3##suffix##v, +[](const T* v) { texCoordv(v, 3); }>(),                                        \
+    listed<gl::glTexCoord4##suffix##v, +[](const T* v) { texCoordv(v, 4); }>()
+#define MYGL_RECT(suffix, T)                                                             \
+    listed<gl::glRect##suffix, +[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }>(), \
+    listed<gl::glRect##suffix##v, +[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); }>()
 // clang-format on
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glBegin,
-        +[](GLenum mode) {
-            if (Context::State* s = currentState()) begin(mode, quadSplitOf(*s));
-        }),
-    MYGL_ENTRY(
-        glEnd, +[] { end(); }),
+    listed<gl::glBegin,
+           +[](GLenum mode) {
+               if (Context::State* s = currentState()) begin(mode, quadSplitOf(*s));
+           }>(),
+    listed<gl::glEnd, +[] { end(); }>(),
     MYGL_POSITION_ENTRIES(glVertex, s, GLshort, vertexv),
     MYGL_POSITION_ENTRIES(glVertex, i, GLint, vertexv),
     MYGL_POSITION_ENTRIES(glVertex, f, GLfloat, vertexv),
@@ -114,13 +112,11 @@ const EntryPoint kEntryPoints[] = {
     MYGL_RECT(i, GLint),
     MYGL_RECT(f, GLfloat),
     MYGL_RECT(d, GLdouble),
-    MYGL_ENTRY(
-        glEdgeFlag, +[](GLboolean flag) { setEdgeFlag(flag != GL_FALSE); }),
-    MYGL_ENTRY(
-        glEdgeFlagv,
-        +[](const GLboolean* flag) {
-            if (flag) setEdgeFlag(*flag != GL_FALSE);
-        }),
+    listed<gl::glEdgeFlag, +[](GLboolean flag) { setEdgeFlag(flag != GL_FALSE); }>(),
+    listed<gl::glEdgeFlagv,
+           +[](const GLboolean* flag) {
+               if (flag) setEdgeFlag(*flag != GL_FALSE);
+           }>(),
 };
 
 }  // namespace

@@ -21,7 +21,7 @@ void clear(GLbitfield mask) {
     drawCachedBitmaps(*s);
     const bool color = (mask & GL_COLOR_BUFFER_BIT) && s->buffers.drawBuffer != GL_NONE;
     // The scissor and the colour, depth and stencil masks apply.
-    const glrenderer::FragmentOps& ops = s->draw.fragmentOps;
+    const glrenderer::FragmentOps& ops = s->draw->fragmentOps;
     // The reference's state tracker clears depth with a quad when the scissor box leaves part of
     // the window out, or when the stencil is cleared with it under a partial write mask
     // (st_Clear: depth and stencil are cleared together): its depth takes the float path.
@@ -32,7 +32,7 @@ void clear(GLbitfield mask) {
     const std::uint32_t depth24 = scissored || stencilMasked ? glrenderer::quadClearDepth24(s->clearDepth)
                                                              : glrenderer::clearDepth24(s->clearDepth);
     s->pipeline.clear({.color = color,
-                       .depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw.depthWrite,
+                       .depth = (mask & GL_DEPTH_BUFFER_BIT) && s->draw->depthWrite,
                        .stencil = (mask & GL_STENCIL_BUFFER_BIT) != 0,
                        .rgba = glrenderer::clearColorRgba8(s->clearColor),
                        .depth24 = depth24,
@@ -48,27 +48,23 @@ void clear(GLbitfield mask) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glClear, +[](GLbitfield mask) { clear(mask); }),
-    MYGL_ENTRY(
-        glFlush,
-        +[] {
-            if (Context::State* s = stateOutsideBeginEnd()) {
-                drawCachedBitmaps(*s);
-                s->pipeline.endBatch();
-            }
-        }),
-    MYGL_ENTRY(
-        glFinish,
-        +[] {
-            if (Context::State* s = stateOutsideBeginEnd()) {
-                drawCachedBitmaps(*s);
-                s->pipeline.finish();
-            }
-        }),
-    MYGL_ENTRY(
-        glReadPixels, +[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type,
-                          void* pixels) { readPixels(x, y, w, h, format, type, pixels); }),
+    listed<gl::glClear, +[](GLbitfield mask) { clear(mask); }>(),
+    listed<gl::glFlush,
+           +[] {
+               if (Context::State* s = stateOutsideBeginEnd()) {
+                   drawCachedBitmaps(*s);
+                   s->pipeline.endBatch();
+               }
+           }>(),
+    listed<gl::glFinish,
+           +[] {
+               if (Context::State* s = stateOutsideBeginEnd()) {
+                   drawCachedBitmaps(*s);
+                   s->pipeline.finish();
+               }
+           }>(),
+    listed<gl::glReadPixels, +[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type,
+                                 void* pixels) { readPixels(x, y, w, h, format, type, pixels); }>(),
 };
 
 }  // namespace

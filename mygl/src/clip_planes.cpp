@@ -18,7 +18,7 @@ std::optional<std::size_t> planeIndex(GLenum plane) {
 }
 
 void updateClipPlane(Context::State& s, std::size_t i, const Matrix& projectionInverse) {
-    s.draw.clipPlanes.planes[i] = timesMatrix(s.eyeClipPlanes[i], projectionInverse);
+    s.draw.edit().clipPlanes.planes[i] = timesMatrix(s.eyeClipPlanes[i], projectionInverse);
 }
 
 Matrix projectionInverse(Context::State& s) {
@@ -35,7 +35,7 @@ void clipPlane(GLenum plane, const GLdouble* equation) {
     const glm::vec4 given{float(equation[0]), float(equation[1]), float(equation[2]), float(equation[3])};
     s->modelview.top().settleKind();
     s->eyeClipPlanes[*i] = timesMatrix(given, s->modelview.top().inverse());
-    if (s->draw.clipPlanes.enabled >> *i & 1u) updateClipPlane(*s, *i, projectionInverse(*s));
+    if (s->draw->clipPlanes.enabled >> *i & 1u) updateClipPlane(*s, *i, projectionInverse(*s));
 }
 
 void getClipPlane(GLenum plane, GLdouble* out) {
@@ -47,10 +47,8 @@ void getClipPlane(GLenum plane, GLdouble* out) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glClipPlane, +[](GLenum plane, const GLdouble* equation) { clipPlane(plane, equation); }),
-    MYGL_ENTRY(
-        glGetClipPlane, +[](GLenum plane, GLdouble* out) { getClipPlane(plane, out); }),
+    listed<gl::glClipPlane, +[](GLenum plane, const GLdouble* equation) { clipPlane(plane, equation); }>(),
+    listed<gl::glGetClipPlane, +[](GLenum plane, GLdouble* out) { getClipPlane(plane, out); }>(),
 };
 
 }  // namespace
@@ -61,7 +59,7 @@ bool setClipPlaneCapability(Context::State& s, GLenum cap, bool enabled) {
     const std::optional<std::size_t> i = planeIndex(cap);
     if (!i) return false;
     const auto bit = static_cast<std::uint8_t>(1u << *i);
-    std::uint8_t& mask = s.draw.clipPlanes.enabled;
+    std::uint8_t& mask = s.draw.edit().clipPlanes.enabled;
     if (((mask & bit) != 0) == enabled) return true;
     endBatch(s);
     mask = static_cast<std::uint8_t>(enabled ? mask | bit : mask & ~bit);
@@ -72,14 +70,14 @@ bool setClipPlaneCapability(Context::State& s, GLenum cap, bool enabled) {
 std::optional<bool> clipPlaneCapability(const Context::State& s, GLenum cap) {
     const std::optional<std::size_t> i = planeIndex(cap);
     if (!i) return std::nullopt;
-    return (s.draw.clipPlanes.enabled >> *i & 1u) != 0;
+    return (s.draw->clipPlanes.enabled >> *i & 1u) != 0;
 }
 
 void updateClipPlanes(Context::State& s) {
-    if (!s.draw.clipPlanes.enabled) return;
+    if (!s.draw->clipPlanes.enabled) return;
     const Matrix inverse = projectionInverse(s);
     for (std::size_t i = 0; i < kPlanes; ++i) {
-        if (s.draw.clipPlanes.enabled >> i & 1u) updateClipPlane(s, i, inverse);
+        if (s.draw->clipPlanes.enabled >> i & 1u) updateClipPlane(s, i, inverse);
     }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Entry points made from the one list of GL functions (glcalls/gl11_calls.h). MYGL_ENTRY(name,
-// implementation) gives `name` the wrapper its list class asks for: a command the list says is
+// Entry points made from the one list of GL functions (glcalls/gl11_calls.h). listed<gl::NAME,
+// implementation>() gives NAME the wrapper its list class asks for: a command the list says is
 // compiled is kept in a display list being compiled (with its pointer data copied by the list's
 // count rule) and, in GL_COMPILE mode, not executed; the other classes (dereferenced: the
 // implementation keeps what it read itself; immediate; query) call the implementation directly.
@@ -47,30 +47,31 @@ struct Compiled<Implementation, Count, R (*)(Args...)> {
     }
 };
 
-// The entry point of the list's function `Call` (glcalls::call::NAME), which `Implementation`
-// implements with glad's signature for it.
+// The functions of the list, as types: gl::glEnable (glad's macro makes it gl::glad_glEnable).
+namespace gl = glcalls::call;
+
+// The entry point of the list's function `Call` (gl::NAME), which `Implementation` implements
+// with glad's signature for it.
 template <class Call, auto Implementation>
-ProcAddress listed() {
+EntryPoint listed() {
     static_assert(std::is_same_v<decltype(Implementation), typename Call::Signature>,
                   "the implementation's signature is not glad's for this function");
     if constexpr (Call::kClass == glcalls::ListClass::compiled)
-        return entry(&Compiled<Implementation, Call::kCount>::call);
+        return {Call::kName, entry(&Compiled<Implementation, Call::kCount>::call)};
     else
-        return entry(Implementation);
+        return {Call::kName, entry(Implementation)};
 }
-
-// clang-format off
-#define MYGL_ENTRY(name, ...) {#name, ::mygl::listed<::glcalls::call::name, __VA_ARGS__>()}
 
 // The 2, 3 and 4 component forms of a position call (glVertex, glRasterPos) in type T and their
 // vector forms, each calling `function(const T* components, int count)`.
-#define MYGL_POSITION_ENTRIES(name, suffix, T, function)                                                        \
-    MYGL_ENTRY(name##2##suffix, +[](T x, T y) { function(std::array<T, 2>{x, y}.data(), 2); }),                 \
-    MYGL_ENTRY(name##3##suffix, +[](T x, T y, T z) { function(std::array<T, 3>{x, y, z}.data(), 3); }),         \
-    MYGL_ENTRY(name##4##suffix, +[](T x, T y, T z, T w) { function(std::array<T, 4>{x, y, z, w}.data(), 4); }), \
-    MYGL_ENTRY(name##2##suffix##v, +[](const T* v) { function(v, 2); }),                                        \
-    MYGL_ENTRY(name##3##suffix##v, +[](const T* v) { function(v, 3); }),                                        \
-    MYGL_ENTRY(name##4##suffix##v, +[](const T* v) { function(v, 4); })
+// clang-format off
+#define MYGL_POSITION_ENTRIES(name, suffix, T, function)                                                          \
+    listed<gl::name##2##suffix, +[](T x, T y) { function(std::array<T, 2>{x, y}.data(), 2); }>(),                 \
+    listed<gl::name##3##suffix, +[](T x, T y, T z) { function(std::array<T, 3>{x, y, z}.data(), 3); }>(),         \
+    listed<gl::name##4##suffix, +[](T x, T y, T z, T w) { function(std::array<T, 4>{x, y, z, w}.data(), 4); }>(), \
+    listed<gl::name##2##suffix##v, +[](const T* v) { function(v, 2); }>(),                                        \
+    listed<gl::name##3##suffix##v, +[](const T* v) { function(v, 3); }>(),                                        \
+    listed<gl::name##4##suffix##v, +[](const T* v) { function(v, 4); }>()
 // clang-format on
 
 }  // namespace mygl

@@ -24,6 +24,7 @@
 #include "pixel_modes.h"
 #include "pixel_store.h"
 #include "texture_state.h"
+#include "tracked_draw_state.h"
 
 namespace mygl {
 
@@ -88,8 +89,8 @@ struct FragmentOpsParameters {
 
 struct Context::State {
     State(int width, int height) : framebuffer(width, height), pipeline(framebuffer) {
-        draw.viewport = {0, 0, width, height};
-        draw.fragmentOps.scissor = {false, 0, 0, width, height};
+        draw.edit().viewport = {0, 0, width, height};
+        draw.edit().fragmentOps.scissor = {false, 0, 0, width, height};
     }
 
     glrenderer::Framebuffer framebuffer;
@@ -117,7 +118,7 @@ struct Context::State {
     Evaluators evaluators;
 
     // Fixed-function state, kept as GL values where glGet returns them.
-    glrenderer::DrawState draw;
+    TrackedDrawState draw;
     GLenum cullFaceMode = GL_BACK;
     GLenum frontFace = GL_CCW;
     GLenum depthFunc = GL_LESS;

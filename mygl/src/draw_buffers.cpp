@@ -40,10 +40,8 @@ void selectBuffer(GLenum buffer, GLenum BufferState::*field) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glDrawBuffer, +[](GLenum buffer) { selectBuffer(buffer, &BufferState::drawBuffer); }),
-    MYGL_ENTRY(
-        glReadBuffer, +[](GLenum buffer) { selectBuffer(buffer, &BufferState::readBuffer); }),
+    listed<gl::glDrawBuffer, +[](GLenum buffer) { selectBuffer(buffer, &BufferState::drawBuffer); }>(),
+    listed<gl::glReadBuffer, +[](GLenum buffer) { selectBuffer(buffer, &BufferState::readBuffer); }>(),
 };
 
 }  // namespace

@@ -360,74 +360,54 @@ void getMap(GLenum target, GLenum query, T* out, Convert convert) {
 GLint roundToInt(float x) { return static_cast<GLint>(std::lround(x)); }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glMap1f, +[](GLenum t, GLfloat u1, GLfloat u2, GLint stride, GLint order,
-                     const GLfloat* p) { map1(t, u1, u2, stride, order, p); }),
-    MYGL_ENTRY(
-        glMap1d, +[](GLenum t, GLdouble u1, GLdouble u2, GLint stride, GLint order,
-                     const GLdouble* p) { map1(t, u1, u2, stride, order, p); }),
-    MYGL_ENTRY(
-        glMap2f, +[](GLenum t, GLfloat u1, GLfloat u2, GLint us, GLint uo, GLfloat v1, GLfloat v2, GLint vs, GLint vo,
-                     const GLfloat* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); }),
-    MYGL_ENTRY(
-        glMap2d, +[](GLenum t, GLdouble u1, GLdouble u2, GLint us, GLint uo, GLdouble v1, GLdouble v2, GLint vs,
-                     GLint vo, const GLdouble* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); }),
-    MYGL_ENTRY(
-        glMapGrid1f, +[](GLint un, GLfloat u1, GLfloat u2) { mapGrid1(un, u1, u2); }),
-    MYGL_ENTRY(
-        glMapGrid1d,
-        +[](GLint un, GLdouble u1, GLdouble u2) { mapGrid1(un, static_cast<float>(u1), static_cast<float>(u2)); }),
-    MYGL_ENTRY(
-        glMapGrid2f,
-        +[](GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat v2) { mapGrid2(un, u1, u2, vn, v1, v2); }),
-    MYGL_ENTRY(
-        glMapGrid2d,
-        +[](GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2) {
-            mapGrid2(un, static_cast<float>(u1), static_cast<float>(u2), vn, static_cast<float>(v1),
-                     static_cast<float>(v2));
-        }),
-    MYGL_ENTRY(
-        glEvalCoord1f, +[](GLfloat u) { evalCoord1(u); }),
-    MYGL_ENTRY(
-        glEvalCoord1d, +[](GLdouble u) { evalCoord1(static_cast<float>(u)); }),
-    MYGL_ENTRY(
-        glEvalCoord1fv,
-        +[](const GLfloat* u) {
-            if (u) evalCoord1(u[0]);
-        }),
-    MYGL_ENTRY(
-        glEvalCoord1dv,
-        +[](const GLdouble* u) {
-            if (u) evalCoord1(static_cast<float>(u[0]));
-        }),
-    MYGL_ENTRY(
-        glEvalCoord2f, +[](GLfloat u, GLfloat v) { evalCoord2(u, v); }),
-    MYGL_ENTRY(
-        glEvalCoord2d, +[](GLdouble u, GLdouble v) { evalCoord2(static_cast<float>(u), static_cast<float>(v)); }),
-    MYGL_ENTRY(
-        glEvalCoord2fv,
-        +[](const GLfloat* u) {
-            if (u) evalCoord2(u[0], u[1]);
-        }),
-    MYGL_ENTRY(
-        glEvalCoord2dv,
-        +[](const GLdouble* u) {
-            if (u) evalCoord2(static_cast<float>(u[0]), static_cast<float>(u[1]));
-        }),
-    MYGL_ENTRY(
-        glEvalPoint1, +[](GLint i) { evalPoint1(i); }),
-    MYGL_ENTRY(
-        glEvalPoint2, +[](GLint i, GLint j) { evalPoint2(i, j); }),
-    MYGL_ENTRY(
-        glEvalMesh1, +[](GLenum mode, GLint i1, GLint i2) { evalMesh1(mode, i1, i2); }),
-    MYGL_ENTRY(
-        glEvalMesh2, +[](GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) { evalMesh2(mode, i1, i2, j1, j2); }),
-    MYGL_ENTRY(
-        glGetMapdv, +[](GLenum t, GLenum q, GLdouble* v) { getMap(t, q, v, [](float x) { return double(x); }); }),
-    MYGL_ENTRY(
-        glGetMapfv, +[](GLenum t, GLenum q, GLfloat* v) { getMap(t, q, v, [](float x) { return x; }); }),
-    MYGL_ENTRY(
-        glGetMapiv, +[](GLenum t, GLenum q, GLint* v) { getMap(t, q, v, roundToInt); }),
+    listed<gl::glMap1f, +[](GLenum t, GLfloat u1, GLfloat u2, GLint stride, GLint order,
+                            const GLfloat* p) { map1(t, u1, u2, stride, order, p); }>(),
+    listed<gl::glMap1d, +[](GLenum t, GLdouble u1, GLdouble u2, GLint stride, GLint order,
+                            const GLdouble* p) { map1(t, u1, u2, stride, order, p); }>(),
+    listed<gl::glMap2f, +[](GLenum t, GLfloat u1, GLfloat u2, GLint us, GLint uo, GLfloat v1, GLfloat v2, GLint vs,
+                            GLint vo, const GLfloat* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); }>(),
+    listed<gl::glMap2d, +[](GLenum t, GLdouble u1, GLdouble u2, GLint us, GLint uo, GLdouble v1, GLdouble v2, GLint vs,
+                            GLint vo, const GLdouble* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); }>(),
+    listed<gl::glMapGrid1f, +[](GLint un, GLfloat u1, GLfloat u2) { mapGrid1(un, u1, u2); }>(),
+    listed<gl::glMapGrid1d,
+           +[](GLint un, GLdouble u1, GLdouble u2) { mapGrid1(un, static_cast<float>(u1), static_cast<float>(u2)); }>(),
+    listed<gl::glMapGrid2f, +[](GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1,
+                                GLfloat v2) { mapGrid2(un, u1, u2, vn, v1, v2); }>(),
+    listed<gl::glMapGrid2d,
+           +[](GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2) {
+               mapGrid2(un, static_cast<float>(u1), static_cast<float>(u2), vn, static_cast<float>(v1),
+                        static_cast<float>(v2));
+           }>(),
+    listed<gl::glEvalCoord1f, +[](GLfloat u) { evalCoord1(u); }>(),
+    listed<gl::glEvalCoord1d, +[](GLdouble u) { evalCoord1(static_cast<float>(u)); }>(),
+    listed<gl::glEvalCoord1fv,
+           +[](const GLfloat* u) {
+               if (u) evalCoord1(u[0]);
+           }>(),
+    listed<gl::glEvalCoord1dv,
+           +[](const GLdouble* u) {
+               if (u) evalCoord1(static_cast<float>(u[0]));
+           }>(),
+    listed<gl::glEvalCoord2f, +[](GLfloat u, GLfloat v) { evalCoord2(u, v); }>(),
+    listed<gl::glEvalCoord2d,
+           +[](GLdouble u, GLdouble v) { evalCoord2(static_cast<float>(u), static_cast<float>(v)); }>(),
+    listed<gl::glEvalCoord2fv,
+           +[](const GLfloat* u) {
+               if (u) evalCoord2(u[0], u[1]);
+           }>(),
+    listed<gl::glEvalCoord2dv,
+           +[](const GLdouble* u) {
+               if (u) evalCoord2(static_cast<float>(u[0]), static_cast<float>(u[1]));
+           }>(),
+    listed<gl::glEvalPoint1, +[](GLint i) { evalPoint1(i); }>(),
+    listed<gl::glEvalPoint2, +[](GLint i, GLint j) { evalPoint2(i, j); }>(),
+    listed<gl::glEvalMesh1, +[](GLenum mode, GLint i1, GLint i2) { evalMesh1(mode, i1, i2); }>(),
+    listed<gl::glEvalMesh2,
+           +[](GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) { evalMesh2(mode, i1, i2, j1, j2); }>(),
+    listed<gl::glGetMapdv,
+           +[](GLenum t, GLenum q, GLdouble* v) { getMap(t, q, v, [](float x) { return double(x); }); }>(),
+    listed<gl::glGetMapfv, +[](GLenum t, GLenum q, GLfloat* v) { getMap(t, q, v, [](float x) { return x; }); }>(),
+    listed<gl::glGetMapiv, +[](GLenum t, GLenum q, GLint* v) { getMap(t, q, v, roundToInt); }>(),
 };
 
 }  // namespace

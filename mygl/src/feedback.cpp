@@ -63,10 +63,9 @@ void passThrough(GLfloat value) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glFeedbackBuffer, +[](GLsizei size, GLenum type, GLfloat* buffer) { feedbackBuffer(size, type, buffer); }),
-    MYGL_ENTRY(
-        glPassThrough, +[](GLfloat value) { passThrough(value); }),
+    listed<gl::glFeedbackBuffer,
+           +[](GLsizei size, GLenum type, GLfloat* buffer) { feedbackBuffer(size, type, buffer); }>(),
+    listed<gl::glPassThrough, +[](GLfloat value) { passThrough(value); }>(),
 };
 
 }  // namespace

@@ -55,14 +55,12 @@ void fogi(GLenum name, const GLint* p, int count) {
 
 // How many values the vector forms read for `name`.
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glFogf, +[](GLenum name, GLfloat v) { fog(name, &v, 1); }),
-    MYGL_ENTRY(
-        glFogi, +[](GLenum name, GLint v) { fogi(name, &v, 1); }),
-    MYGL_ENTRY(
-        glFogfv, +[](GLenum name, const GLfloat* v) { fog(name, v, static_cast<int>(glcalls::fogCount(name, v))); }),
-    MYGL_ENTRY(
-        glFogiv, +[](GLenum name, const GLint* v) { fogi(name, v, static_cast<int>(glcalls::fogCount(name, v))); }),
+    listed<gl::glFogf, +[](GLenum name, GLfloat v) { fog(name, &v, 1); }>(),
+    listed<gl::glFogi, +[](GLenum name, GLint v) { fogi(name, &v, 1); }>(),
+    listed<gl::glFogfv,
+           +[](GLenum name, const GLfloat* v) { fog(name, v, static_cast<int>(glcalls::fogCount(name, v))); }>(),
+    listed<gl::glFogiv,
+           +[](GLenum name, const GLint* v) { fogi(name, v, static_cast<int>(glcalls::fogCount(name, v))); }>(),
 };
 
 }  // namespace
@@ -74,9 +72,9 @@ void updateFog(Context::State& s) {
                          : f.mode == GL_EXP    ? FogMode::Exp
                                                : FogMode::Exp2;
     const glrenderer::FogState fog =
-        glrenderer::makeFogState(mode, s.draw.fog.distance, f.density, f.start, f.end, f.color);
-    if (fog != s.draw.fog) endBatch(s);
-    s.draw.fog = fog;
+        glrenderer::makeFogState(mode, s.draw->fog.distance, f.density, f.start, f.end, f.color);
+    if (fog != s.draw->fog) endBatch(s);
+    s.draw.edit().fog = fog;
 }
 
 void updateFogDistance(Context::State& s) {
@@ -87,7 +85,8 @@ void updateFogDistance(Context::State& s) {
         for (const glrenderer::LightSource& l : s.lighting.lights)
             eyePosition = eyePosition || (l.enabled && l.position.w != 0.0f);
     }
-    s.draw.fog.distance = eyePosition ? glrenderer::FogDistance::EyePosition : glrenderer::FogDistance::OwnDotProduct;
+    s.draw.edit().fog.distance =
+        eyePosition ? glrenderer::FogDistance::EyePosition : glrenderer::FogDistance::OwnDotProduct;
 }
 
 std::optional<std::vector<double>> fogQuery(const Context::State& s, GLenum name) {

@@ -50,15 +50,15 @@ std::optional<BlendFactor> blendFactor(GLenum factor) {
 
 // Sets the pipeline's operations, ending the batch only when they change.
 void update(Context::State& s, const glrenderer::FragmentOps& ops) {
-    if (s.draw.fragmentOps != ops) endBatch(s);
-    s.draw.fragmentOps = ops;
+    if (s.draw->fragmentOps != ops) endBatch(s);
+    s.draw.edit().fragmentOps = ops;
 }
 
 void scissor(GLint x, GLint y, GLsizei width, GLsizei height) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
-    glrenderer::FragmentOps ops = s->draw.fragmentOps;
+    glrenderer::FragmentOps ops = s->draw->fragmentOps;
     ops.scissor = {ops.scissor.enabled, x, y, width, height};
     update(*s, ops);
 }
@@ -69,7 +69,7 @@ void alphaFunc(GLenum func, GLclampf ref) {
     if (!isCompareFunc(func)) return setError(*s, GL_INVALID_ENUM);
     s->fragmentOps.alphaFunc = func;
     s->fragmentOps.alphaRef = clampToUnit(ref);
-    glrenderer::FragmentOps ops = s->draw.fragmentOps;
+    glrenderer::FragmentOps ops = s->draw->fragmentOps;
     ops.alphaFunc = compareFunc(func);
     ops.alphaRef = glrenderer::fragmentToUnorm8(s->fragmentOps.alphaRef);
     update(*s, ops);
@@ -81,7 +81,7 @@ void stencilFunc(GLenum func, GLint ref, GLuint mask) {
     if (!isCompareFunc(func)) return setError(*s, GL_INVALID_ENUM);
     FragmentOpsParameters& p = s->fragmentOps;
     p.stencilFunc = func, p.stencilRef = ref, p.stencilValueMask = mask;
-    glrenderer::FragmentOps ops = s->draw.fragmentOps;
+    glrenderer::FragmentOps ops = s->draw->fragmentOps;
     ops.stencil.func = compareFunc(func);
     ops.stencil.ref = static_cast<std::uint8_t>(std::clamp(ref, 0, 0xFF));
     ops.stencil.valueMask = static_cast<std::uint8_t>(mask & 0xFF);
@@ -95,7 +95,7 @@ void setStencilOp(GLenum fail, GLenum depthFail, GLenum depthPass) {
     if (!f || !zf || !zp) return setError(*s, GL_INVALID_ENUM);
     FragmentOpsParameters& p = s->fragmentOps;
     p.stencilFail = fail, p.stencilDepthFail = depthFail, p.stencilDepthPass = depthPass;
-    glrenderer::FragmentOps ops = s->draw.fragmentOps;
+    glrenderer::FragmentOps ops = s->draw->fragmentOps;
     ops.stencil.fail = *f, ops.stencil.depthFail = *zf, ops.stencil.depthPass = *zp;
     update(*s, ops);
 }
@@ -104,7 +104,7 @@ void stencilMask(GLuint mask) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     s->fragmentOps.stencilWriteMask = mask;
-    glrenderer::FragmentOps ops = s->draw.fragmentOps;
+    glrenderer::FragmentOps ops = s->draw->fragmentOps;
     ops.stencil.writeMask = static_cast<std::uint8_t>(mask & 0xFF);
     update(*s, ops);
 }
@@ -115,7 +115,7 @@ void blendFunc(GLenum src, GLenum dst) {
     const auto sf = blendFactor(src), df = blendFactor(dst);
     if (!sf || !df) return setError(*s, GL_INVALID_ENUM);
     s->fragmentOps.blendSrc = src, s->fragmentOps.blendDst = dst;
-    glrenderer::FragmentOps ops = s->draw.fragmentOps;
+    glrenderer::FragmentOps ops = s->draw->fragmentOps;
     ops.blendSrc = *sf, ops.blendDst = *df;
     update(*s, ops);
 }
@@ -125,7 +125,7 @@ void logicOp(GLenum op) {
     if (!s) return;
     if (op < GL_CLEAR || op > GL_SET) return setError(*s, GL_INVALID_ENUM);
     s->fragmentOps.logicOp = op;
-    glrenderer::FragmentOps ops = s->draw.fragmentOps;
+    glrenderer::FragmentOps ops = s->draw->fragmentOps;
     ops.logicOp = static_cast<glrenderer::LogicOp>(op - GL_CLEAR);
     update(*s, ops);
 }
@@ -138,27 +138,18 @@ void colorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glScissor, +[](GLint x, GLint y, GLsizei w, GLsizei h) { scissor(x, y, w, h); }),
-    MYGL_ENTRY(
-        glAlphaFunc, +[](GLenum func, GLclampf ref) { alphaFunc(func, ref); }),
-    MYGL_ENTRY(
-        glStencilFunc, +[](GLenum func, GLint ref, GLuint mask) { stencilFunc(func, ref, mask); }),
-    MYGL_ENTRY(
-        glStencilOp, +[](GLenum fail, GLenum zfail, GLenum zpass) { setStencilOp(fail, zfail, zpass); }),
-    MYGL_ENTRY(
-        glStencilMask, +[](GLuint mask) { stencilMask(mask); }),
-    MYGL_ENTRY(
-        glClearStencil,
-        +[](GLint value) {
-            if (Context::State* s = stateOutsideBeginEnd()) s->fragmentOps.clearStencil = value;
-        }),
-    MYGL_ENTRY(
-        glBlendFunc, +[](GLenum src, GLenum dst) { blendFunc(src, dst); }),
-    MYGL_ENTRY(
-        glLogicOp, +[](GLenum op) { logicOp(op); }),
-    MYGL_ENTRY(
-        glColorMask, +[](GLboolean r, GLboolean g, GLboolean b, GLboolean a) { colorMask(r, g, b, a); }),
+    listed<gl::glScissor, +[](GLint x, GLint y, GLsizei w, GLsizei h) { scissor(x, y, w, h); }>(),
+    listed<gl::glAlphaFunc, +[](GLenum func, GLclampf ref) { alphaFunc(func, ref); }>(),
+    listed<gl::glStencilFunc, +[](GLenum func, GLint ref, GLuint mask) { stencilFunc(func, ref, mask); }>(),
+    listed<gl::glStencilOp, +[](GLenum fail, GLenum zfail, GLenum zpass) { setStencilOp(fail, zfail, zpass); }>(),
+    listed<gl::glStencilMask, +[](GLuint mask) { stencilMask(mask); }>(),
+    listed<gl::glClearStencil,
+           +[](GLint value) {
+               if (Context::State* s = stateOutsideBeginEnd()) s->fragmentOps.clearStencil = value;
+           }>(),
+    listed<gl::glBlendFunc, +[](GLenum src, GLenum dst) { blendFunc(src, dst); }>(),
+    listed<gl::glLogicOp, +[](GLenum op) { logicOp(op); }>(),
+    listed<gl::glColorMask, +[](GLboolean r, GLboolean g, GLboolean b, GLboolean a) { colorMask(r, g, b, a); }>(),
 };
 
 }  // namespace
@@ -168,7 +159,7 @@ bool setFragmentOpsCapability(Context::State& s, GLenum cap, bool enabled) {
         s.fragmentOps.indexLogicOp = enabled;
         return true;
     }
-    glrenderer::FragmentOps ops = s.draw.fragmentOps;
+    glrenderer::FragmentOps ops = s.draw->fragmentOps;
     switch (cap) {
     case GL_SCISSOR_TEST: ops.scissor.enabled = enabled; break;
     case GL_ALPHA_TEST: ops.alphaTest = enabled; break;
@@ -182,7 +173,7 @@ bool setFragmentOpsCapability(Context::State& s, GLenum cap, bool enabled) {
 }
 
 std::optional<bool> fragmentOpsCapability(const Context::State& s, GLenum cap) {
-    const glrenderer::FragmentOps& ops = s.draw.fragmentOps;
+    const glrenderer::FragmentOps& ops = s.draw->fragmentOps;
     switch (cap) {
     case GL_SCISSOR_TEST: return ops.scissor.enabled;
     case GL_ALPHA_TEST: return ops.alphaTest;
@@ -196,7 +187,7 @@ std::optional<bool> fragmentOpsCapability(const Context::State& s, GLenum cap) {
 
 std::optional<std::vector<double>> fragmentOpsQuery(const Context::State& s, GLenum name) {
     const FragmentOpsParameters& p = s.fragmentOps;
-    const glrenderer::ScissorBox& box = s.draw.fragmentOps.scissor;
+    const glrenderer::ScissorBox& box = s.draw->fragmentOps.scissor;
     switch (name) {
     case GL_SCISSOR_BOX:
         return std::vector<double>{double(box.x), double(box.y), double(box.width), double(box.height)};
@@ -225,7 +216,7 @@ std::optional<std::vector<double>> fragmentOpsQuery(const Context::State& s, GLe
 std::span<const EntryPoint> fragmentOpsEntryPoints() { return kEntryPoints; }
 
 void updateColorWrites(Context::State& s) {
-    glrenderer::FragmentOps ops = s.draw.fragmentOps;
+    glrenderer::FragmentOps ops = s.draw->fragmentOps;
     ops.colorMask = 0;
     if (s.buffers.drawBuffer != GL_NONE) {
         for (int c = 0; c < 4; ++c) {

@@ -32,7 +32,7 @@ Value query(const Context::State& s, GLenum name) {
         for (float f : m) v.numbers.push_back(f);
         return v;
     };
-    const auto& d = s.draw;
+    const auto& d = *s.draw;
     switch (name) {
     case GL_VIEWPORT:
         return Value{{double(d.viewport.x), double(d.viewport.y), double(d.viewport.width), double(d.viewport.height)}};
@@ -220,33 +220,29 @@ GLint toInteger(const Value& v, double x) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glGetDoublev, +[](GLenum name, GLdouble* out) { get(name, out, [](const Value&, double x) { return x; }); }),
-    MYGL_ENTRY(
-        glGetFloatv,
-        +[](GLenum name, GLfloat* out) {
-            get(name, out, [](const Value&, double x) { return static_cast<GLfloat>(x); });
-        }),
-    MYGL_ENTRY(
-        glGetIntegerv, +[](GLenum name, GLint* out) { get(name, out, toInteger); }),
-    MYGL_ENTRY(
-        glGetBooleanv,
-        +[](GLenum name, GLboolean* out) {
-            get(name, out, [](const Value&, double x) -> GLboolean { return x != 0.0 ? GL_TRUE : GL_FALSE; });
-        }),
-    MYGL_ENTRY(
-        glGetString,
-        +[](GLenum name) -> const GLubyte* {
-            Context::State* s = stateOutsideBeginEnd();
-            if (!s) return nullptr;
-            const char* text = name == GL_VENDOR       ? "MyGL"
-                               : name == GL_RENDERER   ? "MyGL software rasterizer"
-                               : name == GL_VERSION    ? "1.1 MyGL"
-                               : name == GL_EXTENSIONS ? ""
-                                                       : nullptr;
-            if (!text) setError(*s, GL_INVALID_ENUM);
-            return reinterpret_cast<const GLubyte*>(text);
-        }),
+    listed<gl::glGetDoublev,
+           +[](GLenum name, GLdouble* out) { get(name, out, [](const Value&, double x) { return x; }); }>(),
+    listed<gl::glGetFloatv,
+           +[](GLenum name, GLfloat* out) {
+               get(name, out, [](const Value&, double x) { return static_cast<GLfloat>(x); });
+           }>(),
+    listed<gl::glGetIntegerv, +[](GLenum name, GLint* out) { get(name, out, toInteger); }>(),
+    listed<gl::glGetBooleanv,
+           +[](GLenum name, GLboolean* out) {
+               get(name, out, [](const Value&, double x) -> GLboolean { return x != 0.0 ? GL_TRUE : GL_FALSE; });
+           }>(),
+    listed<gl::glGetString,
+           +[](GLenum name) -> const GLubyte* {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s) return nullptr;
+               const char* text = name == GL_VENDOR       ? "MyGL"
+                                  : name == GL_RENDERER   ? "MyGL software rasterizer"
+                                  : name == GL_VERSION    ? "1.1 MyGL"
+                                  : name == GL_EXTENSIONS ? ""
+                                                          : nullptr;
+               if (!text) setError(*s, GL_INVALID_ENUM);
+               return reinterpret_cast<const GLubyte*>(text);
+           }>(),
 };
 
 }  // namespace

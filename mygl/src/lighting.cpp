@@ -276,45 +276,32 @@ GLint toMaterialInteger(bool color, float v) {
 GLfloat asFloat(bool, float v) { return v; }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glLightf, +[](GLenum l, GLenum name, GLfloat v) { lightv(l, name, std::array<GLfloat, 4>{v}.data()); }),
-    MYGL_ENTRY(
-        glLighti, +[](GLenum l, GLenum name,
-                      GLint v) { lightv(l, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data()); }),
-    MYGL_ENTRY(
-        glLightfv, +[](GLenum l, GLenum name, const GLfloat* v) { lightv(l, name, v); }),
-    MYGL_ENTRY(
-        glLightiv, +[](GLenum l, GLenum name, const GLint* v) { lightv(l, name, v); }),
-    MYGL_ENTRY(
-        glMaterialf,
-        +[](GLenum face, GLenum name, GLfloat v) { materialv(face, name, std::array<GLfloat, 4>{v}.data()); }),
-    MYGL_ENTRY(
-        glMateriali, +[](GLenum face, GLenum name,
-                         GLint v) { materialv(face, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data()); }),
-    MYGL_ENTRY(
-        glMaterialfv, +[](GLenum face, GLenum name, const GLfloat* v) { materialv(face, name, v); }),
-    MYGL_ENTRY(
-        glMaterialiv, +[](GLenum face, GLenum name, const GLint* v) { materialv(face, name, v); }),
-    MYGL_ENTRY(
-        glLightModelf, +[](GLenum name, GLfloat v) { lightModelv(name, std::array<GLfloat, 4>{v}.data()); }),
-    MYGL_ENTRY(
-        glLightModeli,
-        +[](GLenum name, GLint v) { lightModelv(name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data()); }),
-    MYGL_ENTRY(
-        glLightModelfv, +[](GLenum name, const GLfloat* v) { lightModelv(name, v); }),
-    MYGL_ENTRY(
-        glLightModeliv, +[](GLenum name, const GLint* v) { lightModelv(name, v); }),
-    MYGL_ENTRY(
-        glColorMaterial, +[](GLenum face, GLenum mode) { colorMaterial(face, mode); }),
-    MYGL_ENTRY(
-        glGetLightfv, +[](GLenum l, GLenum name, GLfloat* out) { getLight(l, name, out, asFloat); }),
-    MYGL_ENTRY(
-        glGetLightiv, +[](GLenum l, GLenum name, GLint* out) { getLight(l, name, out, toInteger); }),
-    MYGL_ENTRY(
-        glGetMaterialfv, +[](GLenum face, GLenum name, GLfloat* out) { getMaterial(face, name, out, asFloat); }),
-    MYGL_ENTRY(
-        glGetMaterialiv,
-        +[](GLenum face, GLenum name, GLint* out) { getMaterial(face, name, out, toMaterialInteger); }),
+    listed<gl::glLightf,
+           +[](GLenum l, GLenum name, GLfloat v) { lightv(l, name, std::array<GLfloat, 4>{v}.data()); }>(),
+    listed<gl::glLighti, +[](GLenum l, GLenum name,
+                             GLint v) { lightv(l, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data()); }>(),
+    listed<gl::glLightfv, +[](GLenum l, GLenum name, const GLfloat* v) { lightv(l, name, v); }>(),
+    listed<gl::glLightiv, +[](GLenum l, GLenum name, const GLint* v) { lightv(l, name, v); }>(),
+    listed<gl::glMaterialf,
+           +[](GLenum face, GLenum name, GLfloat v) { materialv(face, name, std::array<GLfloat, 4>{v}.data()); }>(),
+    listed<gl::glMateriali,
+           +[](GLenum face, GLenum name, GLint v) {
+               materialv(face, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
+           }>(),
+    listed<gl::glMaterialfv, +[](GLenum face, GLenum name, const GLfloat* v) { materialv(face, name, v); }>(),
+    listed<gl::glMaterialiv, +[](GLenum face, GLenum name, const GLint* v) { materialv(face, name, v); }>(),
+    listed<gl::glLightModelf, +[](GLenum name, GLfloat v) { lightModelv(name, std::array<GLfloat, 4>{v}.data()); }>(),
+    listed<gl::glLightModeli,
+           +[](GLenum name, GLint v) { lightModelv(name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data()); }>(),
+    listed<gl::glLightModelfv, +[](GLenum name, const GLfloat* v) { lightModelv(name, v); }>(),
+    listed<gl::glLightModeliv, +[](GLenum name, const GLint* v) { lightModelv(name, v); }>(),
+    listed<gl::glColorMaterial, +[](GLenum face, GLenum mode) { colorMaterial(face, mode); }>(),
+    listed<gl::glGetLightfv, +[](GLenum l, GLenum name, GLfloat* out) { getLight(l, name, out, asFloat); }>(),
+    listed<gl::glGetLightiv, +[](GLenum l, GLenum name, GLint* out) { getLight(l, name, out, toInteger); }>(),
+    listed<gl::glGetMaterialfv,
+           +[](GLenum face, GLenum name, GLfloat* out) { getMaterial(face, name, out, asFloat); }>(),
+    listed<gl::glGetMaterialiv,
+           +[](GLenum face, GLenum name, GLint* out) { getMaterial(face, name, out, toMaterialInteger); }>(),
 };
 
 }  // namespace
@@ -380,12 +367,12 @@ void prepareLighting(Context::State& s) {
 }
 
 void updateLitColors(Context::State& s) {
-    s.draw.twoSidedColors = s.lightingEnabled && s.lighting.twoSide;
-    s.draw.secondaryColors = s.lightingEnabled && s.lighting.separateSpecular;
+    s.draw.edit().twoSidedColors = s.lightingEnabled && s.lighting.twoSide;
+    s.draw.edit().secondaryColors = s.lightingEnabled && s.lighting.separateSpecular;
 }
 
 void lightVertex(Context::State& s, glrenderer::Vertex& v) {
-    preparedLighting(s).lightVertex(v, s.draw.twoSidedColors);
+    preparedLighting(s).lightVertex(v, s.draw->twoSidedColors);
 }
 
 }  // namespace mygl

@@ -85,44 +85,36 @@ void callLists(GLsizei n, GLenum type, const void* lists) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glNewList, +[](GLuint name, GLenum mode) { newList(name, mode); }),
-    MYGL_ENTRY(
-        glEndList, +[] { endList(); }),
-    MYGL_ENTRY(
-        glCallList, +[](GLuint name) { callList(name); }),
-    MYGL_ENTRY(
-        glCallLists, +[](GLsizei n, GLenum type, const void* lists) { callLists(n, type, lists); }),
-    MYGL_ENTRY(
-        glGenLists,
-        +[](GLsizei range) -> GLuint {
-            Context::State* s = stateOutsideBeginEnd();
-            if (!s) return 0;
-            if (range < 0) {
-                setError(*s, GL_INVALID_VALUE);
-                return 0;
-            }
-            return s->lists.generate(range);
-        }),
-    MYGL_ENTRY(
-        glDeleteLists,
-        +[](GLuint first, GLsizei range) {
-            Context::State* s = stateOutsideBeginEnd();
-            if (!s) return;
-            if (range < 0) return setError(*s, GL_INVALID_VALUE);
-            s->lists.remove(first, range);
-        }),
-    MYGL_ENTRY(
-        glIsList,
-        +[](GLuint name) -> GLboolean {
-            Context::State* s = stateOutsideBeginEnd();
-            return s && s->lists.exists(name) ? GL_TRUE : GL_FALSE;
-        }),
-    MYGL_ENTRY(
-        glListBase,
-        +[](GLuint base) {
-            if (Context::State* s = stateOutsideBeginEnd()) s->lists.base = base;
-        }),
+    listed<gl::glNewList, +[](GLuint name, GLenum mode) { newList(name, mode); }>(),
+    listed<gl::glEndList, +[] { endList(); }>(),
+    listed<gl::glCallList, +[](GLuint name) { callList(name); }>(),
+    listed<gl::glCallLists, +[](GLsizei n, GLenum type, const void* lists) { callLists(n, type, lists); }>(),
+    listed<gl::glGenLists,
+           +[](GLsizei range) -> GLuint {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s) return 0;
+               if (range < 0) {
+                   setError(*s, GL_INVALID_VALUE);
+                   return 0;
+               }
+               return s->lists.generate(range);
+           }>(),
+    listed<gl::glDeleteLists,
+           +[](GLuint first, GLsizei range) {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s) return;
+               if (range < 0) return setError(*s, GL_INVALID_VALUE);
+               s->lists.remove(first, range);
+           }>(),
+    listed<gl::glIsList,
+           +[](GLuint name) -> GLboolean {
+               Context::State* s = stateOutsideBeginEnd();
+               return s && s->lists.exists(name) ? GL_TRUE : GL_FALSE;
+           }>(),
+    listed<gl::glListBase,
+           +[](GLuint base) {
+               if (Context::State* s = stateOutsideBeginEnd()) s->lists.base = base;
+           }>(),
 };
 
 }  // namespace

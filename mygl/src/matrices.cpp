@@ -82,44 +82,30 @@ void frustumOrOrtho(bool isFrustum, float l, float r, float b, float t, float n,
 float F(double v) { return static_cast<float>(v); }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glMatrixMode, +[](GLenum mode) { matrixMode(mode); }),
-    MYGL_ENTRY(
-        glPushMatrix, +[] { pushMatrix(); }),
-    MYGL_ENTRY(
-        glPopMatrix, +[] { popMatrix(); }),
-    MYGL_ENTRY(
-        glLoadIdentity, +[] { alwaysChange([](StackMatrix& top) { top.loadIdentity(); }); }),
-    MYGL_ENTRY(
-        glLoadMatrixf, +[](const GLfloat* m) { loadMatrix(m); }),
-    MYGL_ENTRY(
-        glLoadMatrixd, +[](const GLdouble* m) { loadMatrix(m); }),
-    MYGL_ENTRY(
-        glMultMatrixf, +[](const GLfloat* m) { multMatrix(m); }),
-    MYGL_ENTRY(
-        glMultMatrixd, +[](const GLdouble* m) { multMatrix(m); }),
-    MYGL_ENTRY(
-        glTranslatef,
-        +[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.translate(x, y, z); }); }),
-    MYGL_ENTRY(
-        glTranslated, +[](GLdouble x, GLdouble y,
-                          GLdouble z) { alwaysChange([&](StackMatrix& top) { top.translate(F(x), F(y), F(z)); }); }),
-    MYGL_ENTRY(
-        glScalef,
-        +[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); }),
-    MYGL_ENTRY(
-        glScaled, +[](GLdouble x, GLdouble y,
-                      GLdouble z) { alwaysChange([&](StackMatrix& top) { top.scale(F(x), F(y), F(z)); }); }),
-    MYGL_ENTRY(
-        glRotatef, +[](GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); }),
-    MYGL_ENTRY(
-        glRotated, +[](GLdouble a, GLdouble x, GLdouble y, GLdouble z) { rotate(F(a), F(x), F(y), F(z)); }),
-    MYGL_ENTRY(
-        glFrustum, +[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n,
-                       GLdouble f) { frustumOrOrtho(true, F(l), F(r), F(b), F(t), F(n), F(f)); }),
-    MYGL_ENTRY(
-        glOrtho, +[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n,
-                     GLdouble f) { frustumOrOrtho(false, F(l), F(r), F(b), F(t), F(n), F(f)); }),
+    listed<gl::glMatrixMode, +[](GLenum mode) { matrixMode(mode); }>(),
+    listed<gl::glPushMatrix, +[] { pushMatrix(); }>(),
+    listed<gl::glPopMatrix, +[] { popMatrix(); }>(),
+    listed<gl::glLoadIdentity, +[] { alwaysChange([](StackMatrix& top) { top.loadIdentity(); }); }>(),
+    listed<gl::glLoadMatrixf, +[](const GLfloat* m) { loadMatrix(m); }>(),
+    listed<gl::glLoadMatrixd, +[](const GLdouble* m) { loadMatrix(m); }>(),
+    listed<gl::glMultMatrixf, +[](const GLfloat* m) { multMatrix(m); }>(),
+    listed<gl::glMultMatrixd, +[](const GLdouble* m) { multMatrix(m); }>(),
+    listed<gl::glTranslatef,
+           +[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.translate(x, y, z); }); }>(),
+    listed<gl::glTranslated,
+           +[](GLdouble x, GLdouble y, GLdouble z) {
+               alwaysChange([&](StackMatrix& top) { top.translate(F(x), F(y), F(z)); });
+           }>(),
+    listed<gl::glScalef,
+           +[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); }>(),
+    listed<gl::glScaled, +[](GLdouble x, GLdouble y,
+                             GLdouble z) { alwaysChange([&](StackMatrix& top) { top.scale(F(x), F(y), F(z)); }); }>(),
+    listed<gl::glRotatef, +[](GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); }>(),
+    listed<gl::glRotated, +[](GLdouble a, GLdouble x, GLdouble y, GLdouble z) { rotate(F(a), F(x), F(y), F(z)); }>(),
+    listed<gl::glFrustum, +[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n,
+                              GLdouble f) { frustumOrOrtho(true, F(l), F(r), F(b), F(t), F(n), F(f)); }>(),
+    listed<gl::glOrtho, +[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n,
+                            GLdouble f) { frustumOrOrtho(false, F(l), F(r), F(b), F(t), F(n), F(f)); }>(),
 };
 
 }  // namespace

@@ -164,22 +164,14 @@ void getPixelMap(GLenum map, T* values) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glPixelTransferf, +[](GLenum name, GLfloat value) { pixelTransfer(name, value); }),
-    MYGL_ENTRY(
-        glPixelTransferi, +[](GLenum name, GLint value) { pixelTransfer(name, static_cast<float>(value)); }),
-    MYGL_ENTRY(
-        glPixelMapfv, +[](GLenum map, GLsizei size, const GLfloat* v) { pixelMap(map, size, v); }),
-    MYGL_ENTRY(
-        glPixelMapuiv, +[](GLenum map, GLsizei size, const GLuint* v) { pixelMap(map, size, v); }),
-    MYGL_ENTRY(
-        glPixelMapusv, +[](GLenum map, GLsizei size, const GLushort* v) { pixelMap(map, size, v); }),
-    MYGL_ENTRY(
-        glGetPixelMapfv, +[](GLenum map, GLfloat* v) { getPixelMap(map, v); }),
-    MYGL_ENTRY(
-        glGetPixelMapuiv, +[](GLenum map, GLuint* v) { getPixelMap(map, v); }),
-    MYGL_ENTRY(
-        glGetPixelMapusv, +[](GLenum map, GLushort* v) { getPixelMap(map, v); }),
+    listed<gl::glPixelTransferf, +[](GLenum name, GLfloat value) { pixelTransfer(name, value); }>(),
+    listed<gl::glPixelTransferi, +[](GLenum name, GLint value) { pixelTransfer(name, static_cast<float>(value)); }>(),
+    listed<gl::glPixelMapfv, +[](GLenum map, GLsizei size, const GLfloat* v) { pixelMap(map, size, v); }>(),
+    listed<gl::glPixelMapuiv, +[](GLenum map, GLsizei size, const GLuint* v) { pixelMap(map, size, v); }>(),
+    listed<gl::glPixelMapusv, +[](GLenum map, GLsizei size, const GLushort* v) { pixelMap(map, size, v); }>(),
+    listed<gl::glGetPixelMapfv, +[](GLenum map, GLfloat* v) { getPixelMap(map, v); }>(),
+    listed<gl::glGetPixelMapuiv, +[](GLenum map, GLuint* v) { getPixelMap(map, v); }>(),
+    listed<gl::glGetPixelMapusv, +[](GLenum map, GLushort* v) { getPixelMap(map, v); }>(),
 };
 
 }  // namespace

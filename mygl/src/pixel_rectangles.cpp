@@ -57,7 +57,7 @@ void drawImage(Context::State& s, glrenderer::PixelImage image) {
     image.z = s.rasterPosition.z;
     drawCachedBitmaps(s);
     endBatch(s);
-    s.pipeline.drawPixels(s.draw, image);
+    s.pipeline.drawPixels(*s.draw, image);
 }
 
 // Draws width x height colours (bottom row first) through the pixel transfer (unless they
@@ -226,7 +226,7 @@ void windowValues(std::span<const std::uint32_t> buffer, int fbWidth, int fbHeig
 // depth-stencil format with a blit: measured, they draw).
 bool blitsColors(const Context::State& s) {
     if (s.pixelModes.zoomX != 1.0f || s.pixelModes.zoomY != 1.0f) return false;
-    const glrenderer::DrawState& d = s.draw;
+    const glrenderer::DrawState& d = *s.draw;
     const glrenderer::FragmentOps& ops = d.fragmentOps;
     const glrenderer::StencilState& stencil = ops.stencil;
     const bool stencilKeeps = !stencil.enabled || (stencil.fail == glrenderer::StencilOp::Keep &&
@@ -255,7 +255,7 @@ bool blitColors(Context::State& s, GLint x, GLint y, GLsizei width, GLsizei heig
         const std::int64_t end = std::min<std::int64_t>(run.first + run.length, std::int64_t{boxStart} + boxLength);
         return Run{first, std::max<std::int64_t>(end - first, 0)};
     };
-    const glrenderer::ScissorBox& box = s.draw.fragmentOps.scissor;
+    const glrenderer::ScissorBox& box = s.draw->fragmentOps.scissor;
     const Run targetColumns = targetRun(toX, columns.length, fb.width(), box.enabled, box.x, box.width);
     const Run targetRows = targetRun(toY, rows.length, fb.height(), box.enabled, box.y, box.height);
     columns = {columns.first + (targetColumns.first - toX), targetColumns.length};
@@ -323,21 +323,19 @@ void pixelZoom(GLfloat x, GLfloat y) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glDrawPixels,
-        +[](GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
-            Context::State* s = currentState();
-            if (!s) return;
-            if (s->lists.compiling()) {
-                s->lists.add(keptDrawPixels(*s, w, h, format, type, pixels));
-                if (!s->lists.executingWhileCompiling()) return;
-            }
-            drawPixels(w, h, format, type, pixels);
-        }),
-    MYGL_ENTRY(
-        glCopyPixels, +[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { copyPixels(x, y, w, h, type); }),
-    MYGL_ENTRY(
-        glPixelZoom, +[](GLfloat x, GLfloat y) { pixelZoom(x, y); }),
+    listed<gl::glDrawPixels,
+           +[](GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
+               Context::State* s = currentState();
+               if (!s) return;
+               if (s->lists.compiling()) {
+                   s->lists.add(keptDrawPixels(*s, w, h, format, type, pixels));
+                   if (!s->lists.executingWhileCompiling()) return;
+               }
+               drawPixels(w, h, format, type, pixels);
+           }>(),
+    listed<gl::glCopyPixels,
+           +[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { copyPixels(x, y, w, h, type); }>(),
+    listed<gl::glPixelZoom, +[](GLfloat x, GLfloat y) { pixelZoom(x, y); }>(),
 };
 
 }  // namespace

@@ -8,7 +8,7 @@ namespace {
 void polygonOffset(GLfloat factor, GLfloat units) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    glrenderer::PolygonOffset& o = s->draw.polygonOffset;
+    glrenderer::PolygonOffset& o = s->draw.edit().polygonOffset;
     if (o.factor != factor || o.units != units) endBatch(*s);
     o.factor = factor;
     o.units = units;
@@ -24,14 +24,13 @@ bool* enableOf(glrenderer::PolygonOffset& o, GLenum cap) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glPolygonOffset, +[](GLfloat factor, GLfloat units) { polygonOffset(factor, units); }),
+    listed<gl::glPolygonOffset, +[](GLfloat factor, GLfloat units) { polygonOffset(factor, units); }>(),
 };
 
 }  // namespace
 
 bool setPolygonOffsetCapability(Context::State& state, GLenum cap, bool enabled) {
-    bool* flag = enableOf(state.draw.polygonOffset, cap);
+    bool* flag = enableOf(state.draw.edit().polygonOffset, cap);
     if (!flag) return false;
     if (*flag != enabled) endBatch(state);
     *flag = enabled;
@@ -39,7 +38,7 @@ bool setPolygonOffsetCapability(Context::State& state, GLenum cap, bool enabled)
 }
 
 std::optional<bool> polygonOffsetCapability(const Context::State& state, GLenum cap) {
-    glrenderer::PolygonOffset o = state.draw.polygonOffset;
+    glrenderer::PolygonOffset o = state.draw->polygonOffset;
     const bool* flag = enableOf(o, cap);
     return flag ? std::optional<bool>(*flag) : std::nullopt;
 }

@@ -41,14 +41,14 @@ void rasterPos(const glm::vec4& object) {
         s->clipPlanesStale = false;
         updateClipPlanes(*s);
     }
-    s->rasterValid = insideViewVolume(clip) && insideClipPlanes(s->draw.clipPlanes, clip);
+    s->rasterValid = insideViewVolume(clip) && insideClipPlanes(s->draw->clipPlanes, clip);
     if (!s->rasterValid) return;
     const float d = clip.w == 0.0f ? 1.0f : 1.0f / clip.w;
-    const auto& v = s->draw.viewport;
+    const auto& v = s->draw->viewport;
     const float halfWidth = static_cast<float>(v.width) * 0.5f, halfHeight = static_cast<float>(v.height) * 0.5f;
     s->rasterPosition = {clip.x * d * halfWidth + (halfWidth + static_cast<float>(v.x)),
                          clip.y * d * halfHeight + (halfHeight + static_cast<float>(v.y)),
-                         clip.z * d * s->draw.depthScale() + s->draw.depthTranslate(), clip.w};
+                         clip.z * d * s->draw->depthScale() + s->draw->depthTranslate(), clip.w};
     s->rasterDistance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
     s->rasterColor = s->color;
     if (s->lightingEnabled) {  // lit by the same vertex program as a vertex (the draw module's)
@@ -95,7 +95,7 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
         const int x = static_cast<int>(std::floor(s->rasterPosition.x + kEpsilon - xorig));
         const int y = static_cast<int>(std::floor(s->rasterPosition.y + kEpsilon - yorig));
         const float z = s->rasterPosition.z;
-        s->bitmapCache.setDrawState(s->draw);
+        s->bitmapCache.setDrawState(*s->draw);
         if (BitmapCache::cacheable(width, height)) {
             if (!s->bitmapCache.accepts(x, y, width, height, s->rasterColor, z)) drawCachedBitmaps(*s);
             s->bitmapCache.add(x, y, width, height, bits, stride, s->rasterColor, z);
@@ -110,7 +110,7 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
             b.color = s->rasterColor;
             b.z = z;
             endBatch(*s);
-            s->pipeline.drawBitmap(s->draw, b);
+            s->pipeline.drawBitmap(*s->draw, b);
         }
     }
     s->rasterPosition.x += xmove;
@@ -138,17 +138,16 @@ const EntryPoint kEntryPoints[] = {
     MYGL_POSITION_ENTRIES(glRasterPos, i, GLint, rasterPosv),
     MYGL_POSITION_ENTRIES(glRasterPos, f, GLfloat, rasterPosv),
     MYGL_POSITION_ENTRIES(glRasterPos, d, GLdouble, rasterPosv),
-    MYGL_ENTRY(
-        glBitmap,
-        +[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
-            Context::State* s = currentState();
-            if (!s) return;
-            if (s->lists.compiling()) {
-                s->lists.add(keptBitmap(*s, w, h, xo, yo, xm, ym, bits));
-                if (!s->lists.executingWhileCompiling()) return;
-            }
-            bitmap(w, h, xo, yo, xm, ym, bits, w > 0 ? bitmapRowStride(w, s->unpack.alignment) : 0);
-        }),
+    listed<gl::glBitmap,
+           +[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
+               Context::State* s = currentState();
+               if (!s) return;
+               if (s->lists.compiling()) {
+                   s->lists.add(keptBitmap(*s, w, h, xo, yo, xm, ym, bits));
+                   if (!s->lists.executingWhileCompiling()) return;
+               }
+               bitmap(w, h, xo, yo, xm, ym, bits, w > 0 ? bitmapRowStride(w, s->unpack.alignment) : 0);
+           }>(),
 };
 
 }  // namespace

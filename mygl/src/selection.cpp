@@ -66,8 +66,8 @@ GLint renderMode(GLenum mode) {
         setError(*s, GL_INVALID_OPERATION);
     if (mode != s->renderMode) endBatch(*s);
     s->renderMode = mode;
-    s->draw.selection = mode == GL_SELECT;
-    s->draw.feedback = mode == GL_FEEDBACK;
+    s->draw.edit().selection = mode == GL_SELECT;
+    s->draw.edit().feedback = mode == GL_FEEDBACK;
     return result;
 }
 
@@ -90,33 +90,27 @@ bool unless(Context::State& s, bool fails, GLenum error) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glRenderMode, +[](GLenum mode) -> GLint { return renderMode(mode); }),
-    MYGL_ENTRY(
-        glSelectBuffer, +[](GLsizei size, GLuint* buffer) { selectBuffer(size, buffer); }),
-    MYGL_ENTRY(
-        glInitNames, +[] { changeNames(always, [](std::vector<GLuint>& names) { names.clear(); }); }),
-    MYGL_ENTRY(
-        glLoadName,
-        +[](GLuint name) {
-            changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_INVALID_OPERATION); },
-                        [name](std::vector<GLuint>& names) { names.back() = name; });
-        }),
-    MYGL_ENTRY(
-        glPushName,
-        +[](GLuint name) {
-            changeNames(
-                [](Context::State& s) {
-                    return unless(s, s.selection.names.size() >= Selection::kMaxNameStackDepth, GL_STACK_OVERFLOW);
-                },
-                [name](std::vector<GLuint>& names) { names.push_back(name); });
-        }),
-    MYGL_ENTRY(
-        glPopName,
-        +[] {
-            changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_STACK_UNDERFLOW); },
-                        [](std::vector<GLuint>& names) { names.pop_back(); });
-        }),
+    listed<gl::glRenderMode, +[](GLenum mode) -> GLint { return renderMode(mode); }>(),
+    listed<gl::glSelectBuffer, +[](GLsizei size, GLuint* buffer) { selectBuffer(size, buffer); }>(),
+    listed<gl::glInitNames, +[] { changeNames(always, [](std::vector<GLuint>& names) { names.clear(); }); }>(),
+    listed<gl::glLoadName,
+           +[](GLuint name) {
+               changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_INVALID_OPERATION); },
+                           [name](std::vector<GLuint>& names) { names.back() = name; });
+           }>(),
+    listed<gl::glPushName,
+           +[](GLuint name) {
+               changeNames(
+                   [](Context::State& s) {
+                       return unless(s, s.selection.names.size() >= Selection::kMaxNameStackDepth, GL_STACK_OVERFLOW);
+                   },
+                   [name](std::vector<GLuint>& names) { names.push_back(name); });
+           }>(),
+    listed<gl::glPopName,
+           +[] {
+               changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_STACK_UNDERFLOW); },
+                           [](std::vector<GLuint>& names) { names.pop_back(); });
+           }>(),
 };
 
 }  // namespace

@@ -55,7 +55,10 @@ void cullFace(GLenum mode) {
     if (!s) return;
     if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return setError(*s, GL_INVALID_ENUM);
     s->cullFaceMode = mode;
-    assign(*s, s->draw.cullFace, mode == GL_FRONT ? Face::Front : mode == GL_BACK ? Face::Back : Face::FrontAndBack);
+    assign(*s, s->draw.edit().cullFace,
+           mode == GL_FRONT  ? Face::Front
+           : mode == GL_BACK ? Face::Back
+                             : Face::FrontAndBack);
 }
 
 void frontFace(GLenum mode) {
@@ -63,7 +66,7 @@ void frontFace(GLenum mode) {
     if (!s) return;
     if (mode != GL_CW && mode != GL_CCW) return setError(*s, GL_INVALID_ENUM);
     s->frontFace = mode;
-    assign(*s, s->draw.frontFaceCCW, mode == GL_CCW);
+    assign(*s, s->draw.edit().frontFaceCCW, mode == GL_CCW);
 }
 
 void depthFunc(GLenum func) {
@@ -71,7 +74,7 @@ void depthFunc(GLenum func) {
     if (!s) return;
     if (func < GL_NEVER || func > GL_ALWAYS) return setError(*s, GL_INVALID_ENUM);
     s->depthFunc = func;
-    assign(*s, s->draw.depthFunc, static_cast<CompareFunc>(func - GL_NEVER));
+    assign(*s, s->draw.edit().depthFunc, static_cast<CompareFunc>(func - GL_NEVER));
 }
 
 void shadeModel(GLenum mode) {
@@ -79,7 +82,8 @@ void shadeModel(GLenum mode) {
     if (!s) return;
     if (mode != GL_FLAT && mode != GL_SMOOTH) return setError(*s, GL_INVALID_ENUM);
     s->shadeModel = mode;
-    assign(*s, s->draw.shadeModel, mode == GL_FLAT ? glrenderer::ShadeModel::Flat : glrenderer::ShadeModel::Smooth);
+    assign(*s, s->draw.edit().shadeModel,
+           mode == GL_FLAT ? glrenderer::ShadeModel::Flat : glrenderer::ShadeModel::Smooth);
 }
 
 void polygonMode(GLenum face, GLenum mode) {
@@ -90,11 +94,11 @@ void polygonMode(GLenum face, GLenum mode) {
     const auto value = static_cast<PolygonMode>(mode - GL_POINT);
     if (face != GL_BACK) {
         s->polygonModeFront = mode;
-        assign(*s, s->draw.polygonFront, value);
+        assign(*s, s->draw.edit().polygonFront, value);
     }
     if (face != GL_FRONT) {
         s->polygonModeBack = mode;
-        assign(*s, s->draw.polygonBack, value);
+        assign(*s, s->draw.edit().polygonBack, value);
     }
 }
 
@@ -116,14 +120,14 @@ void viewport(GLint x, GLint y, GLsizei width, GLsizei height) {
     const int bound = 2 * kMaxViewportDimension;
     const glrenderer::Viewport v{std::clamp(x, -bound, bound - 1), std::clamp(y, -bound, bound - 1),
                                  std::min(width, kMaxViewportDimension), std::min(height, kMaxViewportDimension)};
-    assign(*s, s->draw.viewport, v);
+    assign(*s, s->draw.edit().viewport, v);
 }
 
 void depthRange(GLdouble nearVal, GLdouble farVal) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    assign(*s, s->draw.depthNear, static_cast<float>(clampToUnit(nearVal)));
-    assign(*s, s->draw.depthFar, static_cast<float>(clampToUnit(farVal)));
+    assign(*s, s->draw.edit().depthNear, static_cast<float>(clampToUnit(nearVal)));
+    assign(*s, s->draw.edit().depthFar, static_cast<float>(clampToUnit(farVal)));
 }
 
 void pixelStore(GLenum name, GLint value) {
@@ -160,83 +164,64 @@ void hint(GLenum target, GLenum mode) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glEnable, +[](GLenum cap) { setCapability(cap, true); }),
-    MYGL_ENTRY(
-        glDisable, +[](GLenum cap) { setCapability(cap, false); }),
-    MYGL_ENTRY(
-        glIsEnabled, +[](GLenum cap) { return isEnabled(cap); }),
-    MYGL_ENTRY(
-        glCullFace, +[](GLenum mode) { cullFace(mode); }),
-    MYGL_ENTRY(
-        glFrontFace, +[](GLenum mode) { frontFace(mode); }),
-    MYGL_ENTRY(
-        glDepthFunc, +[](GLenum func) { depthFunc(func); }),
-    MYGL_ENTRY(
-        glDepthMask,
-        +[](GLboolean flag) {
-            if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.depthWrite, flag != GL_FALSE);
-        }),
-    MYGL_ENTRY(
-        glShadeModel, +[](GLenum mode) { shadeModel(mode); }),
-    MYGL_ENTRY(
-        glPolygonMode, +[](GLenum face, GLenum mode) { polygonMode(face, mode); }),
-    MYGL_ENTRY(
-        glLineWidth,
-        +[](GLfloat width) {
-            if (Context::State* s = currentState()) positiveSize(s->draw.lineWidth, width);
-        }),
-    MYGL_ENTRY(
-        glPointSize,
-        +[](GLfloat size) {
-            if (Context::State* s = currentState()) positiveSize(s->draw.pointSize, size);
-        }),
-    MYGL_ENTRY(
-        glViewport, +[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); }),
-    MYGL_ENTRY(
-        glDepthRange, +[](GLdouble n, GLdouble f) { depthRange(n, f); }),
-    MYGL_ENTRY(
-        glClearColor,
-        +[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
-            if (Context::State* s = stateOutsideBeginEnd())
-                s->clearColor = {clampToUnit(r), clampToUnit(g), clampToUnit(b), clampToUnit(a)};
-        }),
-    MYGL_ENTRY(
-        glClearDepth,
-        +[](GLdouble depth) {
-            if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
-        }),
-    MYGL_ENTRY(
-        glPixelStorei, +[](GLenum name, GLint value) { pixelStore(name, value); }),
-    MYGL_ENTRY(
-        glPixelStoref,
-        +[](GLenum name, GLfloat value) {
-            // Booleans are any non-zero value; counts round to the nearest integer.
-            const bool flag = name == GL_PACK_SWAP_BYTES || name == GL_PACK_LSB_FIRST || name == GL_UNPACK_SWAP_BYTES ||
-                              name == GL_UNPACK_LSB_FIRST;
-            pixelStore(name, flag ? GLint{value != 0.0f} : static_cast<GLint>(std::lround(value)));
-        }),
-    MYGL_ENTRY(
-        glHint, +[](GLenum target, GLenum mode) { hint(target, mode); }),
-    MYGL_ENTRY(
-        glGetError,
-        +[]() -> GLenum {
-            Context::State* s = stateOutsideBeginEnd();
-            if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)
-            const GLenum error = s->error;
-            s->error = GL_NO_ERROR;
-            return error;
-        }),
+    listed<gl::glEnable, +[](GLenum cap) { setCapability(cap, true); }>(),
+    listed<gl::glDisable, +[](GLenum cap) { setCapability(cap, false); }>(),
+    listed<gl::glIsEnabled, +[](GLenum cap) { return isEnabled(cap); }>(),
+    listed<gl::glCullFace, +[](GLenum mode) { cullFace(mode); }>(),
+    listed<gl::glFrontFace, +[](GLenum mode) { frontFace(mode); }>(),
+    listed<gl::glDepthFunc, +[](GLenum func) { depthFunc(func); }>(),
+    listed<gl::glDepthMask,
+           +[](GLboolean flag) {
+               if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.edit().depthWrite, flag != GL_FALSE);
+           }>(),
+    listed<gl::glShadeModel, +[](GLenum mode) { shadeModel(mode); }>(),
+    listed<gl::glPolygonMode, +[](GLenum face, GLenum mode) { polygonMode(face, mode); }>(),
+    listed<gl::glLineWidth,
+           +[](GLfloat width) {
+               if (Context::State* s = currentState()) positiveSize(s->draw.edit().lineWidth, width);
+           }>(),
+    listed<gl::glPointSize,
+           +[](GLfloat size) {
+               if (Context::State* s = currentState()) positiveSize(s->draw.edit().pointSize, size);
+           }>(),
+    listed<gl::glViewport, +[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); }>(),
+    listed<gl::glDepthRange, +[](GLdouble n, GLdouble f) { depthRange(n, f); }>(),
+    listed<gl::glClearColor,
+           +[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+               if (Context::State* s = stateOutsideBeginEnd())
+                   s->clearColor = {clampToUnit(r), clampToUnit(g), clampToUnit(b), clampToUnit(a)};
+           }>(),
+    listed<gl::glClearDepth,
+           +[](GLdouble depth) {
+               if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
+           }>(),
+    listed<gl::glPixelStorei, +[](GLenum name, GLint value) { pixelStore(name, value); }>(),
+    listed<gl::glPixelStoref,
+           +[](GLenum name, GLfloat value) {
+               // Booleans are any non-zero value; counts round to the nearest integer.
+               const bool flag = name == GL_PACK_SWAP_BYTES || name == GL_PACK_LSB_FIRST ||
+                                 name == GL_UNPACK_SWAP_BYTES || name == GL_UNPACK_LSB_FIRST;
+               pixelStore(name, flag ? GLint{value != 0.0f} : static_cast<GLint>(std::lround(value)));
+           }>(),
+    listed<gl::glHint, +[](GLenum target, GLenum mode) { hint(target, mode); }>(),
+    listed<gl::glGetError,
+           +[]() -> GLenum {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)
+               const GLenum error = s->error;
+               s->error = GL_NO_ERROR;
+               return error;
+           }>(),
 };
 
 }  // namespace
 
 bool setCapability(Context::State& s, GLenum cap, bool enabled) {
     if (cap == GL_CULL_FACE || cap == GL_DEPTH_TEST || cap == GL_POINT_SMOOTH || cap == GL_LINE_SMOOTH) {
-        bool& flag = cap == GL_CULL_FACE      ? s.draw.cullEnabled
-                     : cap == GL_DEPTH_TEST   ? s.draw.depthTest
-                     : cap == GL_POINT_SMOOTH ? s.draw.pointSmooth
-                                              : s.draw.lineSmooth;
+        bool& flag = cap == GL_CULL_FACE      ? s.draw.edit().cullEnabled
+                     : cap == GL_DEPTH_TEST   ? s.draw.edit().depthTest
+                     : cap == GL_POINT_SMOOTH ? s.draw.edit().pointSmooth
+                                              : s.draw.edit().lineSmooth;
         if (flag != enabled) endBatch(s);
         flag = enabled;
         return true;
@@ -261,10 +246,10 @@ bool setCapability(Context::State& s, GLenum cap, bool enabled) {
 }
 
 std::optional<bool> capabilityEnabled(const Context::State& s, GLenum cap) {
-    if (cap == GL_CULL_FACE) return s.draw.cullEnabled;
-    if (cap == GL_DEPTH_TEST) return s.draw.depthTest;
-    if (cap == GL_POINT_SMOOTH) return s.draw.pointSmooth;
-    if (cap == GL_LINE_SMOOTH) return s.draw.lineSmooth;
+    if (cap == GL_CULL_FACE) return s.draw->cullEnabled;
+    if (cap == GL_DEPTH_TEST) return s.draw->depthTest;
+    if (cap == GL_POINT_SMOOTH) return s.draw->pointSmooth;
+    if (cap == GL_LINE_SMOOTH) return s.draw->lineSmooth;
     if (const std::optional<bool> lighting = lightingCapability(s, cap)) return *lighting;
     if (const std::optional<bool> plane = clipPlaneCapability(s, cap)) return *plane;
     if (cap == GL_FOG) return s.fog.enabled;

@@ -14,7 +14,7 @@ using glrenderer::PolygonStipplePattern;
 void lineStipple(GLint factor, GLushort pattern) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    glrenderer::LineStipple& l = s->draw.lineStipple;
+    glrenderer::LineStipple& l = s->draw.edit().lineStipple;
     const auto clamped = static_cast<std::uint16_t>(std::clamp(factor, 1, 256));  // GL clamps, no error
     if (l.factor != clamped || l.pattern != pattern) endBatch(*s);
     l.factor = clamped;
@@ -50,8 +50,8 @@ void setPolygonStipple(const PolygonStipplePattern& pattern) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
     const PolygonStipplePattern* interned = glrenderer::internPolygonStipple(pattern);
-    if (s->draw.polygonStipple.pattern != interned) endBatch(*s);
-    s->draw.polygonStipple.pattern = interned;
+    if (s->draw->polygonStipple.pattern != interned) endBatch(*s);
+    s->draw.edit().polygonStipple.pattern = interned;
 }
 
 // glPolygonStipple: unpacked under the unpack modes of the call, also when a list compiles it
@@ -72,7 +72,7 @@ void polygonStipple(const GLubyte* mask) {
 void getPolygonStipple(GLubyte* mask) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s || !mask) return;
-    const PolygonStipplePattern* pattern = s->draw.polygonStipple.pattern;
+    const PolygonStipplePattern* pattern = s->draw->polygonStipple.pattern;
     const unsigned firstInByte = s->pack.lsbFirst ? 1u : 0x80u;
     for (int row = 0; row < 32; ++row) {
         const std::uint32_t bits = pattern ? (*pattern)[static_cast<std::size_t>(row)] : 0xFFFFFFFFu;
@@ -95,18 +95,15 @@ auto* enableOf(DrawState& draw, GLenum cap) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glLineStipple, +[](GLint factor, GLushort pattern) { lineStipple(factor, pattern); }),
-    MYGL_ENTRY(
-        glPolygonStipple, +[](const GLubyte* mask) { polygonStipple(mask); }),
-    MYGL_ENTRY(
-        glGetPolygonStipple, +[](GLubyte* mask) { getPolygonStipple(mask); }),
+    listed<gl::glLineStipple, +[](GLint factor, GLushort pattern) { lineStipple(factor, pattern); }>(),
+    listed<gl::glPolygonStipple, +[](const GLubyte* mask) { polygonStipple(mask); }>(),
+    listed<gl::glGetPolygonStipple, +[](GLubyte* mask) { getPolygonStipple(mask); }>(),
 };
 
 }  // namespace
 
 bool setStippleCapability(Context::State& state, GLenum cap, bool enabled) {
-    bool* flag = enableOf(state.draw, cap);
+    bool* flag = enableOf(state.draw.edit(), cap);
     if (!flag) return false;
     if (*flag != enabled) endBatch(state);
     *flag = enabled;
@@ -114,7 +111,7 @@ bool setStippleCapability(Context::State& state, GLenum cap, bool enabled) {
 }
 
 std::optional<bool> stippleCapability(const Context::State& state, GLenum cap) {
-    const bool* flag = enableOf(state.draw, cap);
+    const bool* flag = enableOf(*state.draw, cap);
     return flag ? std::optional<bool>(*flag) : std::nullopt;
 }
 

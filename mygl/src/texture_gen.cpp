@@ -75,10 +75,10 @@ void getTexGen(GLenum coord, GLenum name, T* out) {
 }
 
 // clang-format off
-#define MYGL_TEXGEN(suffix, T)                                                                                 \
-    MYGL_ENTRY(glTexGen##suffix, +[](GLenum c, GLenum n, T v) { const GLdouble d = v; texGen(c, n, &d, 1); }), \
-    MYGL_ENTRY(glTexGen##suffix##v, +[](GLenum c, GLenum n, const T* v) { texGenv(c, n, v); }),                \
-    MYGL_ENTRY(glGetTexGen##suffix##v, +[](GLenum c, GLenum n, T* out) { getTexGen(c, n, out); })
+#define MYGL_TEXGEN(suffix, T)                                                                                   \
+    listed<gl::glTexGen##suffix, +[](GLenum c, GLenum n, T v) { const GLdouble d = v; texGen(c, n, &d, 1); }>(), \
+    listed<gl::glTexGen##suffix##v, +[](GLenum c, GLenum n, const T* v) { texGenv(c, n, v); }>(),                \
+    listed<gl::glGetTexGen##suffix##v, +[](GLenum c, GLenum n, T* out) { getTexGen(c, n, out); }>()
 // clang-format on
 
 const EntryPoint kEntryPoints[] = {

@@ -233,51 +233,38 @@ void getTexImage(GLenum target, GLint level, GLenum format, GLenum type, void* p
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_ENTRY(
-        glTexParameterf, +[](GLenum target, GLenum name, GLfloat v) { texParameter(target, name, &v, 1); }),
-    MYGL_ENTRY(
-        glTexParameteri, +[](GLenum target, GLenum name, GLint v) { texParameteri(target, name, &v, 1); }),
-    MYGL_ENTRY(
-        glTexParameterfv,
-        +[](GLenum target, GLenum name, const GLfloat* v) {
-            texParameter(target, name, v, static_cast<int>(glcalls::texParameterCount(target, name, v)));
-        }),
-    MYGL_ENTRY(
-        glTexParameteriv,
-        +[](GLenum target, GLenum name, const GLint* v) {
-            texParameteri(target, name, v, static_cast<int>(glcalls::texParameterCount(target, name, v)));
-        }),
-    MYGL_ENTRY(
-        glTexEnvf, +[](GLenum target, GLenum name, GLfloat v) { texEnv(target, name, &v, 1); }),
-    MYGL_ENTRY(
-        glTexEnvi, +[](GLenum target, GLenum name, GLint v) { texEnvi(target, name, &v, 1); }),
-    MYGL_ENTRY(
-        glTexEnvfv,
-        +[](GLenum target, GLenum name, const GLfloat* v) {
-            texEnv(target, name, v, static_cast<int>(glcalls::texEnvCount(target, name, v)));
-        }),
-    MYGL_ENTRY(
-        glTexEnviv,
-        +[](GLenum target, GLenum name, const GLint* v) {
-            texEnvi(target, name, v, static_cast<int>(glcalls::texEnvCount(target, name, v)));
-        }),
-    MYGL_ENTRY(
-        glGetTexParameterfv, +[](GLenum target, GLenum name, GLfloat* out) { getTexParameter(target, name, out); }),
-    MYGL_ENTRY(
-        glGetTexParameteriv, +[](GLenum target, GLenum name, GLint* out) { getTexParameter(target, name, out); }),
-    MYGL_ENTRY(
-        glGetTexLevelParameterfv,
-        +[](GLenum target, GLint level, GLenum name, GLfloat* out) { getTexLevelParameter(target, level, name, out); }),
-    MYGL_ENTRY(
-        glGetTexLevelParameteriv,
-        +[](GLenum target, GLint level, GLenum name, GLint* out) { getTexLevelParameter(target, level, name, out); }),
-    MYGL_ENTRY(
-        glGetTexEnvfv, +[](GLenum target, GLenum name, GLfloat* out) { getTexEnv(target, name, out); }),
-    MYGL_ENTRY(
-        glGetTexEnviv, +[](GLenum target, GLenum name, GLint* out) { getTexEnv(target, name, out); }),
-    MYGL_ENTRY(
-        glGetTexImage, +[](GLenum target, GLint level, GLenum format, GLenum type,
-                           void* pixels) { getTexImage(target, level, format, type, pixels); }),
+    listed<gl::glTexParameterf, +[](GLenum target, GLenum name, GLfloat v) { texParameter(target, name, &v, 1); }>(),
+    listed<gl::glTexParameteri, +[](GLenum target, GLenum name, GLint v) { texParameteri(target, name, &v, 1); }>(),
+    listed<gl::glTexParameterfv,
+           +[](GLenum target, GLenum name, const GLfloat* v) {
+               texParameter(target, name, v, static_cast<int>(glcalls::texParameterCount(target, name, v)));
+           }>(),
+    listed<gl::glTexParameteriv,
+           +[](GLenum target, GLenum name, const GLint* v) {
+               texParameteri(target, name, v, static_cast<int>(glcalls::texParameterCount(target, name, v)));
+           }>(),
+    listed<gl::glTexEnvf, +[](GLenum target, GLenum name, GLfloat v) { texEnv(target, name, &v, 1); }>(),
+    listed<gl::glTexEnvi, +[](GLenum target, GLenum name, GLint v) { texEnvi(target, name, &v, 1); }>(),
+    listed<gl::glTexEnvfv,
+           +[](GLenum target, GLenum name, const GLfloat* v) {
+               texEnv(target, name, v, static_cast<int>(glcalls::texEnvCount(target, name, v)));
+           }>(),
+    listed<gl::glTexEnviv,
+           +[](GLenum target, GLenum name, const GLint* v) {
+               texEnvi(target, name, v, static_cast<int>(glcalls::texEnvCount(target, name, v)));
+           }>(),
+    listed<gl::glGetTexParameterfv,
+           +[](GLenum target, GLenum name, GLfloat* out) { getTexParameter(target, name, out); }>(),
+    listed<gl::glGetTexParameteriv,
+           +[](GLenum target, GLenum name, GLint* out) { getTexParameter(target, name, out); }>(),
+    listed<gl::glGetTexLevelParameterfv, +[](GLenum target, GLint level, GLenum name,
+                                             GLfloat* out) { getTexLevelParameter(target, level, name, out); }>(),
+    listed<gl::glGetTexLevelParameteriv, +[](GLenum target, GLint level, GLenum name,
+                                             GLint* out) { getTexLevelParameter(target, level, name, out); }>(),
+    listed<gl::glGetTexEnvfv, +[](GLenum target, GLenum name, GLfloat* out) { getTexEnv(target, name, out); }>(),
+    listed<gl::glGetTexEnviv, +[](GLenum target, GLenum name, GLint* out) { getTexEnv(target, name, out); }>(),
+    listed<gl::glGetTexImage, +[](GLenum target, GLint level, GLenum format, GLenum type,
+                                  void* pixels) { getTexImage(target, level, format, type, pixels); }>(),
 };
 
 glrenderer::TextureWrap wrapOf(GLenum wrap, bool blends) {
@@ -348,7 +335,7 @@ void updateTexturing(Context::State& s) {
         next.identityMatrix = next.matrix == kIdentity;
         next.texture = t->snapshot;
     }
-    if (!(next == s.draw.texture)) s.draw.texture = std::move(next);
+    if (!(next == s.draw->texture)) s.draw.edit().texture = std::move(next);
 }
 
 bool setTextureCapability(Context::State& s, GLenum cap, bool enabled) {

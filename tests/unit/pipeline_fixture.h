@@ -22,7 +22,7 @@ public:
     }
 
     void draw(glrenderer::PrimitiveMode mode, std::vector<glrenderer::Vertex> vertices) {
-        pipeline.submit(state, mode, vertices);
+        pipeline.submit(pipeline.intern(state), mode, vertices);
         pipeline.finish();
     }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -46,10 +47,10 @@ Drawn draw(const char* threads, bool onePrimitive) {
     const std::vector<Vertex> vertices = randomTriangles(f, glrenderer::Pipeline::kPartVertices + 100);
     const std::span<const Vertex> all(vertices);
     if (onePrimitive) {
-        f.pipeline.submit(f.state, PrimitiveMode::Triangles, all);
+        f.pipeline.submit(f.pipeline.intern(f.state), PrimitiveMode::Triangles, all);
     } else {
         for (std::size_t i = 0; i < all.size(); i += 3)
-            f.pipeline.submit(f.state, PrimitiveMode::Triangles, all.subspan(i, 3));
+            f.pipeline.submit(f.pipeline.intern(f.state), PrimitiveMode::Triangles, all.subspan(i, 3));
     }
     f.pipeline.finish();
     return {{f.framebuffer.color().begin(), f.framebuffer.color().end()},
@@ -103,10 +104,12 @@ glrenderer::BatchChunk mixedTriangleChunk(int only = -1) {
     for (int i = 0; i < kMixedBatches; ++i) {
         BatchEntry entry;
         entry.mode = modes[i % 6];
-        entry.state.viewport = {0, 0, 40, 30};
-        entry.state.depthTest = i % 3 != 0;
-        entry.state.cullEnabled = i % 4 == 1;
-        entry.state.shadeModel = i % 5 == 2 ? glrenderer::ShadeModel::Flat : glrenderer::ShadeModel::Smooth;
+        glrenderer::DrawState state;
+        state.viewport = {0, 0, 40, 30};
+        state.depthTest = i % 3 != 0;
+        state.cullEnabled = i % 4 == 1;
+        state.shadeModel = i % 5 == 2 ? glrenderer::ShadeModel::Flat : glrenderer::ShadeModel::Smooth;
+        entry.state = std::make_shared<const glrenderer::DrawState>(state);
         entry.colorsPerVertex = i % 7 != 3;
         entry.first = chunk.vertices.size();
         entry.count = 12;
@@ -172,6 +175,8 @@ TEST(Batches, ChunkWithLinesIsNotSetUpAhead) {
     EXPECT_FALSE(chunk.setUp);
     EXPECT_TRUE(chunk.setUpTriangles.empty());
     chunk = mixedTriangleChunk();
-    chunk.batches[2].state.polygonBack = glrenderer::PolygonMode::Line;
+    glrenderer::DrawState lines = *chunk.batches[2].state;
+    lines.polygonBack = glrenderer::PolygonMode::Line;
+    chunk.batches[2].state = std::make_shared<const glrenderer::DrawState>(lines);
     EXPECT_FALSE(setup.setUp(chunk, writer));
 }

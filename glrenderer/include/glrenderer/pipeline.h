@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "glrenderer/bitmap.h"
@@ -14,6 +15,7 @@
 #include "glrenderer/lighting.h"
 #include "glrenderer/pixel_image.h"
 #include "glrenderer/methods.h"
+#include "glrenderer/state_interner.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
 
@@ -54,7 +56,10 @@ public:
     // of batches goes to the batch thread once it holds kPartVertices vertices, and a long
     // primitive of independent filled triangles is cut into parts of that size to go too.
     static constexpr std::size_t kPartVertices = 3072;
-    void beginPrimitive(const DrawState& state, PrimitiveMode mode, QuadSplit quadSplit);
+    void beginPrimitive(const StateRef& state, PrimitiveMode mode, QuadSplit quadSplit);
+    // `state` as the pipeline draws with it, as an interned object for beginPrimitive (see
+    // StateInterner): a caller keeps it until its state changes.
+    StateRef intern(const DrawState& state);
     // A new vertex of the open primitive, to be filled in place.
     [[gnu::always_inline]] Vertex& addVertex() {
         if (cuttable_ && open_.size() == kPartVertices) handOverPart();
@@ -83,7 +88,7 @@ public:
     // how flat quads are split).
     void colorPerVertex();
     // All three for a whole primitive whose vertices carry their own colors.
-    void submit(const DrawState& state, PrimitiveMode mode, std::span<const Vertex> vertices);
+    void submit(const StateRef& state, PrimitiveMode mode, std::span<const Vertex> vertices);
     // glVertex, glColor, glNormal, glTexCoord or glEdgeFlag, in or outside glBegin/glEnd, with
     // the attribute's size as the reference stores it: where the reference's vertex format
     // grows, it draws what it holds (see ImmediateBuffer).
@@ -160,13 +165,17 @@ private:
     void widen(VertexAttribute attribute, int size);
     void handOverChunk();
     std::size_t batchSize() const;
+    // `state` with flat shading (see BatchChunk::batch).
+    StateRef flatVersion(const StateRef& state);
 
     // Counted as the program submits (vertices, primitives); the batch thread counts the rest on
     // a cache line of its own.
     Stats submitted_;
     Methods methods_;
-    std::unique_ptr<BatchChunk> chunk_;  // being filled on the caller's thread
-    std::unique_ptr<BatchEntry> batch_;  // the batch being merged: the end of chunk_
+    StateInterner states_;
+    std::pair<StateRef, StateRef> lastFlatVersion_;  // a state and its flat version
+    std::unique_ptr<BatchChunk> chunk_;              // being filled on the caller's thread
+    std::unique_ptr<BatchEntry> batch_;              // the batch being merged: the end of chunk_
     // The open primitive's vertices: kept apart (and hot in this thread's cache) until it ends,
     // then copied into the batch, whose arrays come back from the batch thread.
     std::vector<Vertex> open_;
