@@ -44,12 +44,13 @@ void accum(GLenum op, GLfloat value) {
 float clampToSigned(GLfloat v) { return v > -1.0f ? std::min(v, 1.0f) : -1.0f; }
 
 const EntryPoint kEntryPoints[] = {
-    {"glClearAccum", compiled<+[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
-         if (Context::State* s = stateOutsideBeginEnd()) {
-             s->buffers.accumClear = {clampToSigned(r), clampToSigned(g), clampToSigned(b), clampToSigned(a)};
-         }
-     }>()},
-    {"glAccum", compiled<+[](GLenum op, GLfloat value) { accum(op, value); }>()},
+    listed<gl::glClearAccum,
+           +[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+               if (Context::State* s = stateOutsideBeginEnd()) {
+                   s->buffers.accumClear = {clampToSigned(r), clampToSigned(g), clampToSigned(b), clampToSigned(a)};
+               }
+           }>(),
+    listed<gl::glAccum, +[](GLenum op, GLfloat value) { accum(op, value); }>(),
 };
 
 }  // namespace

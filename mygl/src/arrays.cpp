@@ -468,51 +468,58 @@ ClientArray& texCoordArray(ClientArrays& a) { return a.texCoord; }
 ClientArray& edgeFlagArray(ClientArrays& a) { return a.edgeFlag; }
 
 const EntryPoint kEntryPoints[] = {
-    {"glVertexPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
-         setPointer(vertexArray, size, size >= 2 && size <= 4, type,
-                    isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
-     })},
-    {"glNormalPointer", entry(+[](GLenum type, GLsizei stride, const void* p) {
-         setPointer(normalArray, 3, true, type, isOneOf(type, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride,
-                    p);
-     })},
-    {"glColorPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
-         setPointer(colorArray, size, size == 3 || size == 4, type,
-                    isOneOf(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT,
-                                   GL_FLOAT, GL_DOUBLE}),
-                    stride, p);
-     })},
-    {"glIndexPointer", entry(+[](GLenum type, GLsizei stride, const void* p) {
-         setPointer(indexArray, 1, true, type, isOneOf(type, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}),
-                    stride, p);
-     })},
-    {"glTexCoordPointer", entry(+[](GLint size, GLenum type, GLsizei stride, const void* p) {
-         setPointer(texCoordArray, size, size >= 1 && size <= 4, type,
-                    isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
-     })},
-    {"glEdgeFlagPointer", entry(+[](GLsizei stride, const void* p) {
-         setPointer(edgeFlagArray, 1, true, GL_UNSIGNED_BYTE, true, stride, p);
-     })},
-    {"glEnableClientState", entry(+[](GLenum name) { enableClientState(name, true); })},
-    {"glDisableClientState", entry(+[](GLenum name) { enableClientState(name, false); })},
-    {"glInterleavedArrays",
-     entry(+[](GLenum format, GLsizei stride, const void* p) { interleavedArrays(format, stride, p); })},
-    {"glArrayElement", entry(+[](GLint i) { arrayElement(i); })},
-    {"glDrawArrays", entry(+[](GLenum mode, GLint first, GLsizei count) { drawArrays(mode, first, count); })},
-    {"glDrawElements", entry(+[](GLenum mode, GLsizei count, GLenum type, const void* indices) {
-         drawElements(mode, count, type, indices);
-     })},
-    {"glGetPointerv", entry(+[](GLenum name, void** out) {
-         Context::State* s = stateOutsideBeginEnd();
-         if (!s || !out) return;
-         if (name == GL_SELECTION_BUFFER_POINTER || name == GL_FEEDBACK_BUFFER_POINTER) {
-             *out = name == GL_SELECTION_BUFFER_POINTER ? static_cast<void*>(s->selection.buffer) : s->feedback.buffer;
-             return;
-         }
-         const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;
-         if (!known) return setError(*s, GL_INVALID_ENUM);
-         *out = const_cast<void*>(arrayPointer(*s, name));
-     })},
+    listed<gl::glVertexPointer,
+           +[](GLint size, GLenum type, GLsizei stride, const void* p) {
+               setPointer(vertexArray, size, size >= 2 && size <= 4, type,
+                          isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+           }>(),
+    listed<gl::glNormalPointer,
+           +[](GLenum type, GLsizei stride, const void* p) {
+               setPointer(normalArray, 3, true, type, isOneOf(type, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}),
+                          stride, p);
+           }>(),
+    listed<gl::glColorPointer,
+           +[](GLint size, GLenum type, GLsizei stride, const void* p) {
+               setPointer(colorArray, size, size == 3 || size == 4, type,
+                          isOneOf(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT,
+                                         GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE}),
+                          stride, p);
+           }>(),
+    listed<gl::glIndexPointer,
+           +[](GLenum type, GLsizei stride, const void* p) {
+               setPointer(indexArray, 1, true, type,
+                          isOneOf(type, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+           }>(),
+    listed<gl::glTexCoordPointer,
+           +[](GLint size, GLenum type, GLsizei stride, const void* p) {
+               setPointer(texCoordArray, size, size >= 1 && size <= 4, type,
+                          isOneOf(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}), stride, p);
+           }>(),
+    listed<gl::glEdgeFlagPointer,
+           +[](GLsizei stride, const void* p) {
+               setPointer(edgeFlagArray, 1, true, GL_UNSIGNED_BYTE, true, stride, p);
+           }>(),
+    listed<gl::glEnableClientState, +[](GLenum name) { enableClientState(name, true); }>(),
+    listed<gl::glDisableClientState, +[](GLenum name) { enableClientState(name, false); }>(),
+    listed<gl::glInterleavedArrays,
+           +[](GLenum format, GLsizei stride, const void* p) { interleavedArrays(format, stride, p); }>(),
+    listed<gl::glArrayElement, +[](GLint i) { arrayElement(i); }>(),
+    listed<gl::glDrawArrays, +[](GLenum mode, GLint first, GLsizei count) { drawArrays(mode, first, count); }>(),
+    listed<gl::glDrawElements, +[](GLenum mode, GLsizei count, GLenum type,
+                                   const void* indices) { drawElements(mode, count, type, indices); }>(),
+    listed<gl::glGetPointerv,
+           +[](GLenum name, void** out) {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s || !out) return;
+               if (name == GL_SELECTION_BUFFER_POINTER || name == GL_FEEDBACK_BUFFER_POINTER) {
+                   *out = name == GL_SELECTION_BUFFER_POINTER ? static_cast<void*>(s->selection.buffer)
+                                                              : s->feedback.buffer;
+                   return;
+               }
+               const bool known = name >= GL_VERTEX_ARRAY_POINTER && name <= GL_EDGE_FLAG_ARRAY_POINTER;
+               if (!known) return setError(*s, GL_INVALID_ENUM);
+               *out = const_cast<void*>(arrayPointer(*s, name));
+           }>(),
 };
 
 }  // namespace

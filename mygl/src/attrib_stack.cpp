@@ -51,20 +51,25 @@ void popAttrib(Context::State* s, AttribStack& stack) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glPushAttrib", compiled<+[](GLbitfield mask) {
-         if (Context::State* s = stateOutsideBeginEnd()) pushAttrib(s, s->attribStack, mask, serverAttribGroups());
-     }>()},
-    {"glPopAttrib", compiled<+[]() {
-         if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->attribStack);
-     }>()},
+    listed<gl::glPushAttrib,
+           +[](GLbitfield mask) {
+               if (Context::State* s = stateOutsideBeginEnd())
+                   pushAttrib(s, s->attribStack, mask, serverAttribGroups());
+           }>(),
+    listed<gl::glPopAttrib,
+           +[]() {
+               if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->attribStack);
+           }>(),
     // Client state is not compiled into display lists.
-    {"glPushClientAttrib", entry(+[](GLbitfield mask) {
-         if (Context::State* s = stateOutsideBeginEnd())
-             pushAttrib(s, s->clientAttribStack, mask, clientAttribGroups());
-     })},
-    {"glPopClientAttrib", entry(+[]() {
-         if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->clientAttribStack);
-     })},
+    listed<gl::glPushClientAttrib,
+           +[](GLbitfield mask) {
+               if (Context::State* s = stateOutsideBeginEnd())
+                   pushAttrib(s, s->clientAttribStack, mask, clientAttribGroups());
+           }>(),
+    listed<gl::glPopClientAttrib,
+           +[]() {
+               if (Context::State* s = stateOutsideBeginEnd()) popAttrib(s, s->clientAttribStack);
+           }>(),
 };
 
 }  // namespace

@@ -59,37 +59,38 @@ void rect(T x1, T y1, T x2, T y2) {
 
 // glColor, glNormal, ... in every type: one line per entry point.
 // clang-format off
-#define MYGL_COLOR(suffix, T)                                                                    \
-    {"glColor3" #suffix, compiled<+[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }>()},  \
-    {"glColor4" #suffix, compiled<+[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); }>()}, \
-    {"glColor3" #suffix "v", compiled<+[](const T* v) { colorv(v, 3); }, 3>()},                            \
-    {"glColor4" #suffix "v", compiled<+[](const T* v) { colorv(v, 4); }, 4>()}
-#define MYGL_NORMAL(suffix, T)                                                                    \
-    {"glNormal3" #suffix, compiled<+[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }>()},  \
-    {"glNormal3" #suffix "v", compiled<+[](const T* v) { normalv(v); }, 3>()}
-#define MYGL_TEXCOORD(suffix, T)                                                                  \
-    {"glTexCoord1" #suffix, compiled<+[](T s) { texCoordv(&s, 1); }>()},                                   \
-    {"glTexCoord2" #suffix, compiled<+[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data(), 2); }>()},     \
-    {"glTexCoord3" #suffix, compiled<+[](T s, T t, T r) { texCoordv(std::array<T, 3>{s, t, r}.data(), 3); }>()}, \
-    {"glTexCoord4" #suffix, compiled<+[](T s, T t, T r, T q) { texCoordv(std::array<T, 4>{s, t, r, q}.data(), 4); }>()}, \
-    {"glTexCoord1" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 1); }, 1>()},                      \
-    {"glTexCoord2" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 2); }, 2>()},                      \
-    {"glTexCoord3" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 3); }, 3>()},                      \
-    {"glTexCoord4" #suffix "v", compiled<+[](const T* v) { texCoordv(v, 4); }, 4>()}
-#define MYGL_RECT(suffix, T)                                                                      \
-    {"glRect" #suffix, compiled<+[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }>()},               \
-    {"glRect" #suffix "v", compiled<+[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); }, 2>()}
+#define MYGL_COLOR(suffix, T)                                                                                    \
+    listed<gl::glColor3##suffix, +[](T r, T g, T b) { colorv(std::array<T, 3>{r, g, b}.data(), 3); }>(),         \
+    listed<gl::glColor4##suffix, +[](T r, T g, T b, T a) { colorv(std::array<T, 4>{r, g, b, a}.data(), 4); }>(), \
+    listed<gl::glColor3##suffix##v, +[](const T* v) { colorv(v, 3); }>(),                                        \
+    listed<gl::glColor4##suffix##v, +[](const T* v) { colorv(v, 4); }>()
+#define MYGL_NORMAL(suffix, T)                                                                          \
+    listed<gl::glNormal3##suffix, +[](T x, T y, T z) { normalv(std::array<T, 3>{x, y, z}.data()); }>(), \
+    listed<gl::glNormal3##suffix##v, +[](const T* v) { normalv(v); }>()
+#define MYGL_TEXCOORD(suffix, T)                                                                                       \
+    listed<gl::glTexCoord1##suffix, +[](T s) { texCoordv(&s, 1); }>(),                                                 \
+    listed<gl::glTexCoord2##suffix, +[](T s, T t) { texCoordv(std::array<T, 2>{s, t}.data(), 2); }>(),                 \
+    listed<gl::glTexCoord3##suffix, +[](T s, T t, T r) { texCoordv(std::array<T, 3>{s, t, r}.data(), 3); }>(),         \
+    listed<gl::glTexCoord4##suffix, +[](T s, T t, T r, T q) { texCoordv(std::array<T, 4>{s, t, r, q}.data(), 4); }>(), \
+    listed<gl::glTexCoord1##suffix##v, +[](const T* v) { texCoordv(v, 1); }>(),                                        \
+    listed<gl::glTexCoord2##suffix##v, +[](const T* v) { texCoordv(v, 2); }>(),                                        \
+    listed<gl::glTexCoord3##suffix##v, +[](const T* v) { texCoordv(v, 3); }>(),                                        \
+    listed<gl::glTexCoord4##suffix##v, +[](const T* v) { texCoordv(v, 4); }>()
+#define MYGL_RECT(suffix, T)                                                             \
+    listed<gl::glRect##suffix, +[](T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }>(), \
+    listed<gl::glRect##suffix##v, +[](const T* a, const T* b) { if (a && b) rect(a[0], a[1], b[0], b[1]); }>()
 // clang-format on
 
 const EntryPoint kEntryPoints[] = {
-    {"glBegin", compiled<+[](GLenum mode) {
-         if (Context::State* s = currentState()) begin(mode, quadSplitOf(*s));
-     }>()},
-    {"glEnd", compiled<+[] { end(); }>()},
-    MYGL_POSITION_ENTRIES("glVertex", s, GLshort, vertexv),
-    MYGL_POSITION_ENTRIES("glVertex", i, GLint, vertexv),
-    MYGL_POSITION_ENTRIES("glVertex", f, GLfloat, vertexv),
-    MYGL_POSITION_ENTRIES("glVertex", d, GLdouble, vertexv),
+    listed<gl::glBegin,
+           +[](GLenum mode) {
+               if (Context::State* s = currentState()) begin(mode, quadSplitOf(*s));
+           }>(),
+    listed<gl::glEnd, +[] { end(); }>(),
+    MYGL_POSITION_ENTRIES(glVertex, s, GLshort, vertexv),
+    MYGL_POSITION_ENTRIES(glVertex, i, GLint, vertexv),
+    MYGL_POSITION_ENTRIES(glVertex, f, GLfloat, vertexv),
+    MYGL_POSITION_ENTRIES(glVertex, d, GLdouble, vertexv),
     MYGL_COLOR(b, GLbyte),
     MYGL_COLOR(ub, GLubyte),
     MYGL_COLOR(s, GLshort),
@@ -111,11 +112,11 @@ const EntryPoint kEntryPoints[] = {
     MYGL_RECT(i, GLint),
     MYGL_RECT(f, GLfloat),
     MYGL_RECT(d, GLdouble),
-    {"glEdgeFlag", compiled<+[](GLboolean flag) { setEdgeFlag(flag != GL_FALSE); }>()},
-    {"glEdgeFlagv", compiled<+[](const GLboolean* flag) {
-         if (flag) setEdgeFlag(*flag != GL_FALSE);
-     },
-                             1>()},
+    listed<gl::glEdgeFlag, +[](GLboolean flag) { setEdgeFlag(flag != GL_FALSE); }>(),
+    listed<gl::glEdgeFlagv,
+           +[](const GLboolean* flag) {
+               if (flag) setEdgeFlag(*flag != GL_FALSE);
+           }>(),
 };
 
 }  // namespace

@@ -48,22 +48,23 @@ void clear(GLbitfield mask) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glClear", compiled<+[](GLbitfield mask) { clear(mask); }>()},
-    {"glFlush", entry(+[] {
-         if (Context::State* s = stateOutsideBeginEnd()) {
-             drawCachedBitmaps(*s);
-             s->pipeline.endBatch();
-         }
-     })},
-    {"glFinish", entry(+[] {
-         if (Context::State* s = stateOutsideBeginEnd()) {
-             drawCachedBitmaps(*s);
-             s->pipeline.finish();
-         }
-     })},
-    {"glReadPixels", entry(+[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, void* pixels) {
-         readPixels(x, y, w, h, format, type, pixels);
-     })},
+    listed<gl::glClear, +[](GLbitfield mask) { clear(mask); }>(),
+    listed<gl::glFlush,
+           +[] {
+               if (Context::State* s = stateOutsideBeginEnd()) {
+                   drawCachedBitmaps(*s);
+                   s->pipeline.endBatch();
+               }
+           }>(),
+    listed<gl::glFinish,
+           +[] {
+               if (Context::State* s = stateOutsideBeginEnd()) {
+                   drawCachedBitmaps(*s);
+                   s->pipeline.finish();
+               }
+           }>(),
+    listed<gl::glReadPixels, +[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type,
+                                 void* pixels) { readPixels(x, y, w, h, format, type, pixels); }>(),
 };
 
 }  // namespace

@@ -47,8 +47,8 @@ void getClipPlane(GLenum plane, GLdouble* out) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glClipPlane", compiled<+[](GLenum plane, const GLdouble* equation) { clipPlane(plane, equation); }, 4>()},
-    {"glGetClipPlane", entry(+[](GLenum plane, GLdouble* out) { getClipPlane(plane, out); })},
+    listed<gl::glClipPlane, +[](GLenum plane, const GLdouble* equation) { clipPlane(plane, equation); }>(),
+    listed<gl::glGetClipPlane, +[](GLenum plane, GLdouble* out) { getClipPlane(plane, out); }>(),
 };
 
 }  // namespace

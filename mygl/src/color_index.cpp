@@ -23,9 +23,9 @@ GLuint truncatedIndex(GLfloat value) {
 }
 
 // clang-format off
-#define MYGL_INDEX_ENTRIES(suffix, T)                                             \
-    {"glIndex" #suffix, compiled<+[](T c) { index(c); }>()},                      \
-    {"glIndex" #suffix "v", compiled<+[](const T* c) { if (c) index(c[0]); }, 1>()}
+#define MYGL_INDEX_ENTRIES(suffix, T)                      \
+    listed<gl::glIndex##suffix, +[](T c) { index(c); }>(), \
+    listed<gl::glIndex##suffix##v, +[](const T* c) { if (c) index(c[0]); }>()
 // clang-format on
 
 const EntryPoint kEntryPoints[] = {
@@ -34,12 +34,14 @@ const EntryPoint kEntryPoints[] = {
     MYGL_INDEX_ENTRIES(i, GLint),
     MYGL_INDEX_ENTRIES(s, GLshort),
     MYGL_INDEX_ENTRIES(ub, GLubyte),
-    {"glClearIndex", compiled<+[](GLfloat c) {
-         if (Context::State* s = stateOutsideBeginEnd()) s->buffers.clearIndex = truncatedIndex(c);
-     }>()},
-    {"glIndexMask", compiled<+[](GLuint mask) {
-         if (Context::State* s = stateOutsideBeginEnd()) s->buffers.indexMask = mask;
-     }>()},
+    listed<gl::glClearIndex,
+           +[](GLfloat c) {
+               if (Context::State* s = stateOutsideBeginEnd()) s->buffers.clearIndex = truncatedIndex(c);
+           }>(),
+    listed<gl::glIndexMask,
+           +[](GLuint mask) {
+               if (Context::State* s = stateOutsideBeginEnd()) s->buffers.indexMask = mask;
+           }>(),
 };
 
 #undef MYGL_INDEX_ENTRIES

@@ -40,8 +40,8 @@ void selectBuffer(GLenum buffer, GLenum BufferState::*field) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glDrawBuffer", compiled<+[](GLenum buffer) { selectBuffer(buffer, &BufferState::drawBuffer); }>()},
-    {"glReadBuffer", compiled<+[](GLenum buffer) { selectBuffer(buffer, &BufferState::readBuffer); }>()},
+    listed<gl::glDrawBuffer, +[](GLenum buffer) { selectBuffer(buffer, &BufferState::drawBuffer); }>(),
+    listed<gl::glReadBuffer, +[](GLenum buffer) { selectBuffer(buffer, &BufferState::readBuffer); }>(),
 };
 
 }  // namespace

@@ -359,80 +359,55 @@ void getMap(GLenum target, GLenum query, T* out, Convert convert) {
 
 GLint roundToInt(float x) { return static_cast<GLint>(std::lround(x)); }
 
-// The elements glMap reads behind its pointer, kept when a list compiles it (at least one, so
-// that a kept call with bad arguments still passes a pointer and fails as the call did).
-std::size_t mapCount(GLenum target, GLenum first, GLint ustride, GLint uorder, GLint vstride, GLint vorder) {
-    const std::optional<int> t = targetIndex(target, first);
-    if (!t || uorder < 1 || uorder > kMaxEvalOrder || vorder < 1 || vorder > kMaxEvalOrder) return 1;
-    const int size = kComponents[*t];
-    if (ustride < size || vstride < size) return 1;
-    return std::size_t(uorder - 1) * std::size_t(ustride) + std::size_t(vorder - 1) * std::size_t(vstride) +
-           std::size_t(size);
-}
-template <class T>
-std::size_t map1Count(GLenum target, T, T, GLint stride, GLint order, const T*) {
-    return mapCount(target, GL_MAP1_COLOR_4, stride, order, stride, 1);
-}
-template <class T>
-std::size_t map2Count(GLenum target, T, T, GLint ustride, GLint uorder, T, T, GLint vstride, GLint vorder, const T*) {
-    return mapCount(target, GL_MAP2_COLOR_4, ustride, uorder, vstride, vorder);
-}
-
 const EntryPoint kEntryPoints[] = {
-    {"glMap1f", compiled<+[](GLenum t, GLfloat u1, GLfloat u2, GLint stride, GLint order, const GLfloat* p) {
-         map1(t, u1, u2, stride, order, p);
-     },
-                         map1Count<GLfloat>>()},
-    {"glMap1d", compiled<+[](GLenum t, GLdouble u1, GLdouble u2, GLint stride, GLint order, const GLdouble* p) {
-         map1(t, u1, u2, stride, order, p);
-     },
-                         map1Count<GLdouble>>()},
-    {"glMap2f", compiled<+[](GLenum t, GLfloat u1, GLfloat u2, GLint us, GLint uo, GLfloat v1, GLfloat v2, GLint vs,
-                             GLint vo, const GLfloat* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); },
-                         map2Count<GLfloat>>()},
-    {"glMap2d", compiled<+[](GLenum t, GLdouble u1, GLdouble u2, GLint us, GLint uo, GLdouble v1, GLdouble v2, GLint vs,
-                             GLint vo, const GLdouble* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); },
-                         map2Count<GLdouble>>()},
-    {"glMapGrid1f", compiled<+[](GLint un, GLfloat u1, GLfloat u2) { mapGrid1(un, u1, u2); }>()},
-    {"glMapGrid1d", compiled<+[](GLint un, GLdouble u1, GLdouble u2) {
-         mapGrid1(un, static_cast<float>(u1), static_cast<float>(u2));
-     }>()},
-    {"glMapGrid2f", compiled<+[](GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1, GLfloat v2) {
-         mapGrid2(un, u1, u2, vn, v1, v2);
-     }>()},
-    {"glMapGrid2d", compiled<+[](GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2) {
-         mapGrid2(un, static_cast<float>(u1), static_cast<float>(u2), vn, static_cast<float>(v1),
-                  static_cast<float>(v2));
-     }>()},
-    {"glEvalCoord1f", compiled<+[](GLfloat u) { evalCoord1(u); }>()},
-    {"glEvalCoord1d", compiled<+[](GLdouble u) { evalCoord1(static_cast<float>(u)); }>()},
-    {"glEvalCoord1fv", compiled<+[](const GLfloat* u) {
-         if (u) evalCoord1(u[0]);
-     },
-                                1>()},
-    {"glEvalCoord1dv", compiled<+[](const GLdouble* u) {
-         if (u) evalCoord1(static_cast<float>(u[0]));
-     },
-                                1>()},
-    {"glEvalCoord2f", compiled<+[](GLfloat u, GLfloat v) { evalCoord2(u, v); }>()},
-    {"glEvalCoord2d",
-     compiled<+[](GLdouble u, GLdouble v) { evalCoord2(static_cast<float>(u), static_cast<float>(v)); }>()},
-    {"glEvalCoord2fv", compiled<+[](const GLfloat* u) {
-         if (u) evalCoord2(u[0], u[1]);
-     },
-                                2>()},
-    {"glEvalCoord2dv", compiled<+[](const GLdouble* u) {
-         if (u) evalCoord2(static_cast<float>(u[0]), static_cast<float>(u[1]));
-     },
-                                2>()},
-    {"glEvalPoint1", compiled<+[](GLint i) { evalPoint1(i); }>()},
-    {"glEvalPoint2", compiled<+[](GLint i, GLint j) { evalPoint2(i, j); }>()},
-    {"glEvalMesh1", compiled<+[](GLenum mode, GLint i1, GLint i2) { evalMesh1(mode, i1, i2); }>()},
-    {"glEvalMesh2",
-     compiled<+[](GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) { evalMesh2(mode, i1, i2, j1, j2); }>()},
-    {"glGetMapdv", entry(+[](GLenum t, GLenum q, GLdouble* v) { getMap(t, q, v, [](float x) { return double(x); }); })},
-    {"glGetMapfv", entry(+[](GLenum t, GLenum q, GLfloat* v) { getMap(t, q, v, [](float x) { return x; }); })},
-    {"glGetMapiv", entry(+[](GLenum t, GLenum q, GLint* v) { getMap(t, q, v, roundToInt); })},
+    listed<gl::glMap1f, +[](GLenum t, GLfloat u1, GLfloat u2, GLint stride, GLint order,
+                            const GLfloat* p) { map1(t, u1, u2, stride, order, p); }>(),
+    listed<gl::glMap1d, +[](GLenum t, GLdouble u1, GLdouble u2, GLint stride, GLint order,
+                            const GLdouble* p) { map1(t, u1, u2, stride, order, p); }>(),
+    listed<gl::glMap2f, +[](GLenum t, GLfloat u1, GLfloat u2, GLint us, GLint uo, GLfloat v1, GLfloat v2, GLint vs,
+                            GLint vo, const GLfloat* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); }>(),
+    listed<gl::glMap2d, +[](GLenum t, GLdouble u1, GLdouble u2, GLint us, GLint uo, GLdouble v1, GLdouble v2, GLint vs,
+                            GLint vo, const GLdouble* p) { map2(t, u1, u2, us, uo, v1, v2, vs, vo, p); }>(),
+    listed<gl::glMapGrid1f, +[](GLint un, GLfloat u1, GLfloat u2) { mapGrid1(un, u1, u2); }>(),
+    listed<gl::glMapGrid1d,
+           +[](GLint un, GLdouble u1, GLdouble u2) { mapGrid1(un, static_cast<float>(u1), static_cast<float>(u2)); }>(),
+    listed<gl::glMapGrid2f, +[](GLint un, GLfloat u1, GLfloat u2, GLint vn, GLfloat v1,
+                                GLfloat v2) { mapGrid2(un, u1, u2, vn, v1, v2); }>(),
+    listed<gl::glMapGrid2d,
+           +[](GLint un, GLdouble u1, GLdouble u2, GLint vn, GLdouble v1, GLdouble v2) {
+               mapGrid2(un, static_cast<float>(u1), static_cast<float>(u2), vn, static_cast<float>(v1),
+                        static_cast<float>(v2));
+           }>(),
+    listed<gl::glEvalCoord1f, +[](GLfloat u) { evalCoord1(u); }>(),
+    listed<gl::glEvalCoord1d, +[](GLdouble u) { evalCoord1(static_cast<float>(u)); }>(),
+    listed<gl::glEvalCoord1fv,
+           +[](const GLfloat* u) {
+               if (u) evalCoord1(u[0]);
+           }>(),
+    listed<gl::glEvalCoord1dv,
+           +[](const GLdouble* u) {
+               if (u) evalCoord1(static_cast<float>(u[0]));
+           }>(),
+    listed<gl::glEvalCoord2f, +[](GLfloat u, GLfloat v) { evalCoord2(u, v); }>(),
+    listed<gl::glEvalCoord2d,
+           +[](GLdouble u, GLdouble v) { evalCoord2(static_cast<float>(u), static_cast<float>(v)); }>(),
+    listed<gl::glEvalCoord2fv,
+           +[](const GLfloat* u) {
+               if (u) evalCoord2(u[0], u[1]);
+           }>(),
+    listed<gl::glEvalCoord2dv,
+           +[](const GLdouble* u) {
+               if (u) evalCoord2(static_cast<float>(u[0]), static_cast<float>(u[1]));
+           }>(),
+    listed<gl::glEvalPoint1, +[](GLint i) { evalPoint1(i); }>(),
+    listed<gl::glEvalPoint2, +[](GLint i, GLint j) { evalPoint2(i, j); }>(),
+    listed<gl::glEvalMesh1, +[](GLenum mode, GLint i1, GLint i2) { evalMesh1(mode, i1, i2); }>(),
+    listed<gl::glEvalMesh2,
+           +[](GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) { evalMesh2(mode, i1, i2, j1, j2); }>(),
+    listed<gl::glGetMapdv,
+           +[](GLenum t, GLenum q, GLdouble* v) { getMap(t, q, v, [](float x) { return double(x); }); }>(),
+    listed<gl::glGetMapfv, +[](GLenum t, GLenum q, GLfloat* v) { getMap(t, q, v, [](float x) { return x; }); }>(),
+    listed<gl::glGetMapiv, +[](GLenum t, GLenum q, GLint* v) { getMap(t, q, v, roundToInt); }>(),
 };
 
 }  // namespace

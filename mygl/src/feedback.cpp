@@ -63,9 +63,9 @@ void passThrough(GLfloat value) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glFeedbackBuffer",
-     entry(+[](GLsizei size, GLenum type, GLfloat* buffer) { feedbackBuffer(size, type, buffer); })},
-    {"glPassThrough", compiled<+[](GLfloat value) { passThrough(value); }>()},
+    listed<gl::glFeedbackBuffer,
+           +[](GLsizei size, GLenum type, GLfloat* buffer) { feedbackBuffer(size, type, buffer); }>(),
+    listed<gl::glPassThrough, +[](GLfloat value) { passThrough(value); }>(),
 };
 
 }  // namespace

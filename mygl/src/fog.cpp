@@ -54,15 +54,13 @@ void fogi(GLenum name, const GLint* p, int count) {
 }
 
 // How many values the vector forms read for `name`.
-std::size_t fogCount(GLenum name) { return name == GL_FOG_COLOR ? 4 : 1; }
-
 const EntryPoint kEntryPoints[] = {
-    {"glFogf", compiled<+[](GLenum name, GLfloat v) { fog(name, &v, 1); }>()},
-    {"glFogi", compiled<+[](GLenum name, GLint v) { fogi(name, &v, 1); }>()},
-    {"glFogfv", compiled<+[](GLenum name, const GLfloat* v) { fog(name, v, static_cast<int>(fogCount(name))); },
-                         +[](GLenum name, const GLfloat*) { return fogCount(name); }>()},
-    {"glFogiv", compiled<+[](GLenum name, const GLint* v) { fogi(name, v, static_cast<int>(fogCount(name))); },
-                         +[](GLenum name, const GLint*) { return fogCount(name); }>()},
+    listed<gl::glFogf, +[](GLenum name, GLfloat v) { fog(name, &v, 1); }>(),
+    listed<gl::glFogi, +[](GLenum name, GLint v) { fogi(name, &v, 1); }>(),
+    listed<gl::glFogfv,
+           +[](GLenum name, const GLfloat* v) { fog(name, v, static_cast<int>(glcalls::fogCount(name, v))); }>(),
+    listed<gl::glFogiv,
+           +[](GLenum name, const GLint* v) { fogi(name, v, static_cast<int>(glcalls::fogCount(name, v))); }>(),
 };
 
 }  // namespace

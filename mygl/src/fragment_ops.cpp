@@ -138,17 +138,18 @@ void colorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glScissor", compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h) { scissor(x, y, w, h); }>()},
-    {"glAlphaFunc", compiled<+[](GLenum func, GLclampf ref) { alphaFunc(func, ref); }>()},
-    {"glStencilFunc", compiled<+[](GLenum func, GLint ref, GLuint mask) { stencilFunc(func, ref, mask); }>()},
-    {"glStencilOp", compiled<+[](GLenum fail, GLenum zfail, GLenum zpass) { setStencilOp(fail, zfail, zpass); }>()},
-    {"glStencilMask", compiled<+[](GLuint mask) { stencilMask(mask); }>()},
-    {"glClearStencil", compiled<+[](GLint value) {
-         if (Context::State* s = stateOutsideBeginEnd()) s->fragmentOps.clearStencil = value;
-     }>()},
-    {"glBlendFunc", compiled<+[](GLenum src, GLenum dst) { blendFunc(src, dst); }>()},
-    {"glLogicOp", compiled<+[](GLenum op) { logicOp(op); }>()},
-    {"glColorMask", compiled<+[](GLboolean r, GLboolean g, GLboolean b, GLboolean a) { colorMask(r, g, b, a); }>()},
+    listed<gl::glScissor, +[](GLint x, GLint y, GLsizei w, GLsizei h) { scissor(x, y, w, h); }>(),
+    listed<gl::glAlphaFunc, +[](GLenum func, GLclampf ref) { alphaFunc(func, ref); }>(),
+    listed<gl::glStencilFunc, +[](GLenum func, GLint ref, GLuint mask) { stencilFunc(func, ref, mask); }>(),
+    listed<gl::glStencilOp, +[](GLenum fail, GLenum zfail, GLenum zpass) { setStencilOp(fail, zfail, zpass); }>(),
+    listed<gl::glStencilMask, +[](GLuint mask) { stencilMask(mask); }>(),
+    listed<gl::glClearStencil,
+           +[](GLint value) {
+               if (Context::State* s = stateOutsideBeginEnd()) s->fragmentOps.clearStencil = value;
+           }>(),
+    listed<gl::glBlendFunc, +[](GLenum src, GLenum dst) { blendFunc(src, dst); }>(),
+    listed<gl::glLogicOp, +[](GLenum op) { logicOp(op); }>(),
+    listed<gl::glColorMask, +[](GLboolean r, GLboolean g, GLboolean b, GLboolean a) { colorMask(r, g, b, a); }>(),
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "capabilities.h"
+#include "compiled.h"
 #include "entry_points.h"
 #include "fog_state.h"
 #include "fragment_ops_state.h"
@@ -219,26 +220,29 @@ GLint toInteger(const Value& v, double x) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glGetDoublev",
-     entry(+[](GLenum name, GLdouble* out) { get(name, out, [](const Value&, double x) { return x; }); })},
-    {"glGetFloatv", entry(+[](GLenum name, GLfloat* out) {
-         get(name, out, [](const Value&, double x) { return static_cast<GLfloat>(x); });
-     })},
-    {"glGetIntegerv", entry(+[](GLenum name, GLint* out) { get(name, out, toInteger); })},
-    {"glGetBooleanv", entry(+[](GLenum name, GLboolean* out) {
-         get(name, out, [](const Value&, double x) -> GLboolean { return x != 0.0 ? GL_TRUE : GL_FALSE; });
-     })},
-    {"glGetString", entry(+[](GLenum name) -> const GLubyte* {
-         Context::State* s = stateOutsideBeginEnd();
-         if (!s) return nullptr;
-         const char* text = name == GL_VENDOR       ? "MyGL"
-                            : name == GL_RENDERER   ? "MyGL software rasterizer"
-                            : name == GL_VERSION    ? "1.1 MyGL"
-                            : name == GL_EXTENSIONS ? ""
-                                                    : nullptr;
-         if (!text) setError(*s, GL_INVALID_ENUM);
-         return reinterpret_cast<const GLubyte*>(text);
-     })},
+    listed<gl::glGetDoublev,
+           +[](GLenum name, GLdouble* out) { get(name, out, [](const Value&, double x) { return x; }); }>(),
+    listed<gl::glGetFloatv,
+           +[](GLenum name, GLfloat* out) {
+               get(name, out, [](const Value&, double x) { return static_cast<GLfloat>(x); });
+           }>(),
+    listed<gl::glGetIntegerv, +[](GLenum name, GLint* out) { get(name, out, toInteger); }>(),
+    listed<gl::glGetBooleanv,
+           +[](GLenum name, GLboolean* out) {
+               get(name, out, [](const Value&, double x) -> GLboolean { return x != 0.0 ? GL_TRUE : GL_FALSE; });
+           }>(),
+    listed<gl::glGetString,
+           +[](GLenum name) -> const GLubyte* {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s) return nullptr;
+               const char* text = name == GL_VENDOR       ? "MyGL"
+                                  : name == GL_RENDERER   ? "MyGL software rasterizer"
+                                  : name == GL_VERSION    ? "1.1 MyGL"
+                                  : name == GL_EXTENSIONS ? ""
+                                                          : nullptr;
+               if (!text) setError(*s, GL_INVALID_ENUM);
+               return reinterpret_cast<const GLubyte*>(text);
+           }>(),
 };
 
 }  // namespace

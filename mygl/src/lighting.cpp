@@ -26,16 +26,6 @@ LightSource* lightOf(Context::State& s, GLenum light) {
     return &s.lighting.lights[light - GL_LIGHT0];
 }
 
-// How many values a glLight or glMaterial parameter has: 4 for colours and positions, 3 for
-// the spot direction, 1 otherwise.
-std::size_t lightValueCount(GLenum name) {
-    return name == GL_AMBIENT || name == GL_DIFFUSE || name == GL_SPECULAR || name == GL_POSITION ? 4
-           : name == GL_SPOT_DIRECTION                                                            ? 3
-                                                                                                  : 1;
-}
-std::size_t materialValueCount(GLenum name) { return name == GL_SHININESS ? 1 : name == GL_COLOR_INDEXES ? 3 : 4; }
-std::size_t lightModelValueCount(GLenum name) { return name == GL_LIGHT_MODEL_AMBIENT ? 4 : 1; }
-
 // The eye-space value of a position or direction given now (Mesa's TRANSFORM_POINT and
 // TRANSFORM_DIRECTION with the modelview's upper rows).
 glm::vec4 toEye(const Context::State& s, const glm::vec4& v, bool point) {
@@ -89,7 +79,7 @@ void lightv(GLenum lightName, GLenum name, const T* p) {
     if (!p) return;
     std::array<GLfloat, 4> f{};
     const bool color = name == GL_AMBIENT || name == GL_DIFFUSE || name == GL_SPECULAR;
-    for (std::size_t i = 0; i < lightValueCount(name); ++i) {
+    for (std::size_t i = 0; i < glcalls::lightCount(lightName, name, p); ++i) {
         f[i] = color && std::is_same_v<T, GLint> ? intColor(static_cast<GLint>(p[i])) : static_cast<GLfloat>(p[i]);
     }
     light(lightName, name, f.data());
@@ -157,7 +147,7 @@ template <class T>
 void materialv(GLenum face, GLenum name, const T* p) {
     if (!p) return;
     std::array<GLfloat, 4> f{};
-    for (std::size_t i = 0; i < materialValueCount(name); ++i) {
+    for (std::size_t i = 0; i < glcalls::materialCount(face, name, p); ++i) {
         f[i] = std::is_same_v<T, GLint> && name != GL_SHININESS && name != GL_COLOR_INDEXES
                    ? intColor(static_cast<GLint>(p[i]))
                    : static_cast<GLfloat>(p[i]);
@@ -196,7 +186,7 @@ template <class T>
 void lightModelv(GLenum name, const T* p) {
     if (!p) return;
     std::array<GLfloat, 4> f{};
-    for (std::size_t i = 0; i < lightModelValueCount(name); ++i) {
+    for (std::size_t i = 0; i < glcalls::lightModelCount(name, p); ++i) {
         f[i] = std::is_same_v<T, GLint> && name == GL_LIGHT_MODEL_AMBIENT ? intColor(static_cast<GLint>(p[i]))
                                                                           : static_cast<GLfloat>(p[i]);
     }
@@ -285,52 +275,33 @@ GLint toMaterialInteger(bool color, float v) {
 }
 GLfloat asFloat(bool, float v) { return v; }
 
-// The values behind the pointer of glLight*v, glMaterial*v and glLightModel*v (what a display
-// list keeps).
-template <class T>
-std::size_t lightCount(GLenum, GLenum name, const T*) {
-    return lightValueCount(name);
-}
-template <class T>
-std::size_t materialCount(GLenum, GLenum name, const T*) {
-    return materialValueCount(name);
-}
-template <class T>
-std::size_t lightModelCount(GLenum name, const T*) {
-    return lightModelValueCount(name);
-}
-
 const EntryPoint kEntryPoints[] = {
-    {"glLightf",
-     compiled<+[](GLenum l, GLenum name, GLfloat v) { lightv(l, name, std::array<GLfloat, 4>{v}.data()); }>()},
-    {"glLighti", compiled<+[](GLenum l, GLenum name, GLint v) {
-         lightv(l, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
-     }>()},
-    {"glLightfv",
-     compiled<+[](GLenum l, GLenum name, const GLfloat* v) { lightv(l, name, v); }, lightCount<GLfloat>>()},
-    {"glLightiv", compiled<+[](GLenum l, GLenum name, const GLint* v) { lightv(l, name, v); }, lightCount<GLint>>()},
-    {"glMaterialf",
-     compiled<+[](GLenum face, GLenum name, GLfloat v) { materialv(face, name, std::array<GLfloat, 4>{v}.data()); }>()},
-    {"glMateriali", compiled<+[](GLenum face, GLenum name, GLint v) {
-         materialv(face, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
-     }>()},
-    {"glMaterialfv",
-     compiled<+[](GLenum face, GLenum name, const GLfloat* v) { materialv(face, name, v); }, materialCount<GLfloat>>()},
-    {"glMaterialiv",
-     compiled<+[](GLenum face, GLenum name, const GLint* v) { materialv(face, name, v); }, materialCount<GLint>>()},
-    {"glLightModelf", compiled<+[](GLenum name, GLfloat v) { lightModelv(name, std::array<GLfloat, 4>{v}.data()); }>()},
-    {"glLightModeli", compiled<+[](GLenum name, GLint v) {
-         lightModelv(name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
-     }>()},
-    {"glLightModelfv",
-     compiled<+[](GLenum name, const GLfloat* v) { lightModelv(name, v); }, lightModelCount<GLfloat>>()},
-    {"glLightModeliv", compiled<+[](GLenum name, const GLint* v) { lightModelv(name, v); }, lightModelCount<GLint>>()},
-    {"glColorMaterial", compiled<+[](GLenum face, GLenum mode) { colorMaterial(face, mode); }>()},
-    {"glGetLightfv", entry(+[](GLenum l, GLenum name, GLfloat* out) { getLight(l, name, out, asFloat); })},
-    {"glGetLightiv", entry(+[](GLenum l, GLenum name, GLint* out) { getLight(l, name, out, toInteger); })},
-    {"glGetMaterialfv", entry(+[](GLenum face, GLenum name, GLfloat* out) { getMaterial(face, name, out, asFloat); })},
-    {"glGetMaterialiv",
-     entry(+[](GLenum face, GLenum name, GLint* out) { getMaterial(face, name, out, toMaterialInteger); })},
+    listed<gl::glLightf,
+           +[](GLenum l, GLenum name, GLfloat v) { lightv(l, name, std::array<GLfloat, 4>{v}.data()); }>(),
+    listed<gl::glLighti, +[](GLenum l, GLenum name,
+                             GLint v) { lightv(l, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data()); }>(),
+    listed<gl::glLightfv, +[](GLenum l, GLenum name, const GLfloat* v) { lightv(l, name, v); }>(),
+    listed<gl::glLightiv, +[](GLenum l, GLenum name, const GLint* v) { lightv(l, name, v); }>(),
+    listed<gl::glMaterialf,
+           +[](GLenum face, GLenum name, GLfloat v) { materialv(face, name, std::array<GLfloat, 4>{v}.data()); }>(),
+    listed<gl::glMateriali,
+           +[](GLenum face, GLenum name, GLint v) {
+               materialv(face, name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data());
+           }>(),
+    listed<gl::glMaterialfv, +[](GLenum face, GLenum name, const GLfloat* v) { materialv(face, name, v); }>(),
+    listed<gl::glMaterialiv, +[](GLenum face, GLenum name, const GLint* v) { materialv(face, name, v); }>(),
+    listed<gl::glLightModelf, +[](GLenum name, GLfloat v) { lightModelv(name, std::array<GLfloat, 4>{v}.data()); }>(),
+    listed<gl::glLightModeli,
+           +[](GLenum name, GLint v) { lightModelv(name, std::array<GLfloat, 4>{static_cast<GLfloat>(v)}.data()); }>(),
+    listed<gl::glLightModelfv, +[](GLenum name, const GLfloat* v) { lightModelv(name, v); }>(),
+    listed<gl::glLightModeliv, +[](GLenum name, const GLint* v) { lightModelv(name, v); }>(),
+    listed<gl::glColorMaterial, +[](GLenum face, GLenum mode) { colorMaterial(face, mode); }>(),
+    listed<gl::glGetLightfv, +[](GLenum l, GLenum name, GLfloat* out) { getLight(l, name, out, asFloat); }>(),
+    listed<gl::glGetLightiv, +[](GLenum l, GLenum name, GLint* out) { getLight(l, name, out, toInteger); }>(),
+    listed<gl::glGetMaterialfv,
+           +[](GLenum face, GLenum name, GLfloat* out) { getMaterial(face, name, out, asFloat); }>(),
+    listed<gl::glGetMaterialiv,
+           +[](GLenum face, GLenum name, GLint* out) { getMaterial(face, name, out, toMaterialInteger); }>(),
 };
 
 }  // namespace

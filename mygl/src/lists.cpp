@@ -84,63 +84,37 @@ void callLists(GLsizei n, GLenum type, const void* lists) {
     }
 }
 
-// Bytes behind glCallLists' array, kept when it is compiled into another list.
-std::size_t callListsBytes(GLsizei n, GLenum type) {
-    const std::size_t count = n > 0 ? static_cast<std::size_t>(n) : 0;
-    switch (type) {
-    case GL_SHORT:
-    case GL_UNSIGNED_SHORT:
-    case GL_2_BYTES: return 2 * count;
-    case GL_3_BYTES: return 3 * count;
-    case GL_INT:
-    case GL_UNSIGNED_INT:
-    case GL_FLOAT:
-    case GL_4_BYTES: return 4 * count;
-    default: return count;
-    }
-}
-
-// glCallLists compiled into a list keeps a copy of its names, whose size depends on n and type.
-void compiledCallLists(GLsizei n, GLenum type, const void* lists) {
-    Context::State* s = currentState();
-    if (s && s->lists.compiling()) {
-        const auto* bytes = static_cast<const GLubyte*>(lists);
-        std::vector<GLubyte> kept =
-            bytes ? std::vector<GLubyte>(bytes, bytes + callListsBytes(n, type)) : std::vector<GLubyte>();
-        const bool null = !bytes;
-        s->lists.add([n, type, kept = std::move(kept), null] { callLists(n, type, null ? nullptr : kept.data()); });
-        if (!s->lists.executingWhileCompiling()) return;
-    }
-    callLists(n, type, lists);
-}
-
 const EntryPoint kEntryPoints[] = {
-    {"glNewList", entry(+[](GLuint name, GLenum mode) { newList(name, mode); })},
-    {"glEndList", entry(+[] { endList(); })},
-    {"glCallList", compiled<+[](GLuint name) { callList(name); }>()},
-    {"glCallLists", entry(+[](GLsizei n, GLenum type, const void* lists) { compiledCallLists(n, type, lists); })},
-    {"glGenLists", entry(+[](GLsizei range) -> GLuint {
-         Context::State* s = stateOutsideBeginEnd();
-         if (!s) return 0;
-         if (range < 0) {
-             setError(*s, GL_INVALID_VALUE);
-             return 0;
-         }
-         return s->lists.generate(range);
-     })},
-    {"glDeleteLists", entry(+[](GLuint first, GLsizei range) {
-         Context::State* s = stateOutsideBeginEnd();
-         if (!s) return;
-         if (range < 0) return setError(*s, GL_INVALID_VALUE);
-         s->lists.remove(first, range);
-     })},
-    {"glIsList", entry(+[](GLuint name) -> GLboolean {
-         Context::State* s = stateOutsideBeginEnd();
-         return s && s->lists.exists(name) ? GL_TRUE : GL_FALSE;
-     })},
-    {"glListBase", compiled<+[](GLuint base) {
-         if (Context::State* s = stateOutsideBeginEnd()) s->lists.base = base;
-     }>()},
+    listed<gl::glNewList, +[](GLuint name, GLenum mode) { newList(name, mode); }>(),
+    listed<gl::glEndList, +[] { endList(); }>(),
+    listed<gl::glCallList, +[](GLuint name) { callList(name); }>(),
+    listed<gl::glCallLists, +[](GLsizei n, GLenum type, const void* lists) { callLists(n, type, lists); }>(),
+    listed<gl::glGenLists,
+           +[](GLsizei range) -> GLuint {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s) return 0;
+               if (range < 0) {
+                   setError(*s, GL_INVALID_VALUE);
+                   return 0;
+               }
+               return s->lists.generate(range);
+           }>(),
+    listed<gl::glDeleteLists,
+           +[](GLuint first, GLsizei range) {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s) return;
+               if (range < 0) return setError(*s, GL_INVALID_VALUE);
+               s->lists.remove(first, range);
+           }>(),
+    listed<gl::glIsList,
+           +[](GLuint name) -> GLboolean {
+               Context::State* s = stateOutsideBeginEnd();
+               return s && s->lists.exists(name) ? GL_TRUE : GL_FALSE;
+           }>(),
+    listed<gl::glListBase,
+           +[](GLuint base) {
+               if (Context::State* s = stateOutsideBeginEnd()) s->lists.base = base;
+           }>(),
 };
 
 }  // namespace

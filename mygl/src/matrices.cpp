@@ -82,33 +82,30 @@ void frustumOrOrtho(bool isFrustum, float l, float r, float b, float t, float n,
 float F(double v) { return static_cast<float>(v); }
 
 const EntryPoint kEntryPoints[] = {
-    {"glMatrixMode", compiled<+[](GLenum mode) { matrixMode(mode); }>()},
-    {"glPushMatrix", compiled<+[] { pushMatrix(); }>()},
-    {"glPopMatrix", compiled<+[] { popMatrix(); }>()},
-    {"glLoadIdentity", compiled<+[] { alwaysChange([](StackMatrix& top) { top.loadIdentity(); }); }>()},
-    {"glLoadMatrixf", compiled<+[](const GLfloat* m) { loadMatrix(m); }, 16>()},
-    {"glLoadMatrixd", compiled<+[](const GLdouble* m) { loadMatrix(m); }, 16>()},
-    {"glMultMatrixf", compiled<+[](const GLfloat* m) { multMatrix(m); }, 16>()},
-    {"glMultMatrixd", compiled<+[](const GLdouble* m) { multMatrix(m); }, 16>()},
-    {"glTranslatef", compiled<+[](GLfloat x, GLfloat y, GLfloat z) {
-         alwaysChange([&](StackMatrix& top) { top.translate(x, y, z); });
-     }>()},
-    {"glTranslated", compiled<+[](GLdouble x, GLdouble y, GLdouble z) {
-         alwaysChange([&](StackMatrix& top) { top.translate(F(x), F(y), F(z)); });
-     }>()},
-    {"glScalef",
-     compiled<+[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); }>()},
-    {"glScaled", compiled<+[](GLdouble x, GLdouble y, GLdouble z) {
-         alwaysChange([&](StackMatrix& top) { top.scale(F(x), F(y), F(z)); });
-     }>()},
-    {"glRotatef", compiled<+[](GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); }>()},
-    {"glRotated", compiled<+[](GLdouble a, GLdouble x, GLdouble y, GLdouble z) { rotate(F(a), F(x), F(y), F(z)); }>()},
-    {"glFrustum", compiled<+[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-         frustumOrOrtho(true, F(l), F(r), F(b), F(t), F(n), F(f));
-     }>()},
-    {"glOrtho", compiled<+[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-         frustumOrOrtho(false, F(l), F(r), F(b), F(t), F(n), F(f));
-     }>()},
+    listed<gl::glMatrixMode, +[](GLenum mode) { matrixMode(mode); }>(),
+    listed<gl::glPushMatrix, +[] { pushMatrix(); }>(),
+    listed<gl::glPopMatrix, +[] { popMatrix(); }>(),
+    listed<gl::glLoadIdentity, +[] { alwaysChange([](StackMatrix& top) { top.loadIdentity(); }); }>(),
+    listed<gl::glLoadMatrixf, +[](const GLfloat* m) { loadMatrix(m); }>(),
+    listed<gl::glLoadMatrixd, +[](const GLdouble* m) { loadMatrix(m); }>(),
+    listed<gl::glMultMatrixf, +[](const GLfloat* m) { multMatrix(m); }>(),
+    listed<gl::glMultMatrixd, +[](const GLdouble* m) { multMatrix(m); }>(),
+    listed<gl::glTranslatef,
+           +[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.translate(x, y, z); }); }>(),
+    listed<gl::glTranslated,
+           +[](GLdouble x, GLdouble y, GLdouble z) {
+               alwaysChange([&](StackMatrix& top) { top.translate(F(x), F(y), F(z)); });
+           }>(),
+    listed<gl::glScalef,
+           +[](GLfloat x, GLfloat y, GLfloat z) { alwaysChange([&](StackMatrix& top) { top.scale(x, y, z); }); }>(),
+    listed<gl::glScaled, +[](GLdouble x, GLdouble y,
+                             GLdouble z) { alwaysChange([&](StackMatrix& top) { top.scale(F(x), F(y), F(z)); }); }>(),
+    listed<gl::glRotatef, +[](GLfloat a, GLfloat x, GLfloat y, GLfloat z) { rotate(a, x, y, z); }>(),
+    listed<gl::glRotated, +[](GLdouble a, GLdouble x, GLdouble y, GLdouble z) { rotate(F(a), F(x), F(y), F(z)); }>(),
+    listed<gl::glFrustum, +[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n,
+                              GLdouble f) { frustumOrOrtho(true, F(l), F(r), F(b), F(t), F(n), F(f)); }>(),
+    listed<gl::glOrtho, +[](GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n,
+                            GLdouble f) { frustumOrOrtho(false, F(l), F(r), F(b), F(t), F(n), F(f)); }>(),
 };
 
 }  // namespace

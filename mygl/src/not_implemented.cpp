@@ -1,5 +1,7 @@
 #include "not_implemented.h"
 
+#include <glcalls/gl11_calls.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -7,8 +9,6 @@
 #include <set>
 #include <string_view>
 #include <type_traits>
-
-#include "gl11_functions.h"
 
 namespace mygl {
 
@@ -46,8 +46,8 @@ struct Stub<Name, R(GLAD_API_PTR*)(Args...)> {
 
 std::vector<EntryPoint> notImplementedEntryPoints(std::span<const EntryPoint> implemented) {
     static const EntryPoint kAll[] = {
-#define MYGL_STUB(name) {#name, entry(&Stub<#name, decltype(glad_##name)>::call)},
-        MYGL_GL11_FUNCTIONS(MYGL_STUB)
+#define MYGL_STUB(name, class_, count) {#name, entry(&Stub<#name, decltype(glad_##name)>::call)},
+        MYGL_GL11_CALLS(MYGL_STUB)
 #undef MYGL_STUB
     };
     const auto byName = [](const EntryPoint& a, const EntryPoint& b) { return std::strcmp(a.name, b.name) < 0; };

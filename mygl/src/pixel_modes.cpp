@@ -163,18 +163,15 @@ void getPixelMap(GLenum map, T* values) {
     }
 }
 
-std::size_t mapSize(GLenum, GLsizei size, const void*) { return size > 0 ? static_cast<std::size_t>(size) : 0; }
-
 const EntryPoint kEntryPoints[] = {
-    {"glPixelTransferf", compiled<+[](GLenum name, GLfloat value) { pixelTransfer(name, value); }>()},
-    {"glPixelTransferi", compiled<+[](GLenum name, GLint value) { pixelTransfer(name, static_cast<float>(value)); }>()},
-    {"glPixelMapfv", compiled<+[](GLenum map, GLsizei size, const GLfloat* v) { pixelMap(map, size, v); }, mapSize>()},
-    {"glPixelMapuiv", compiled<+[](GLenum map, GLsizei size, const GLuint* v) { pixelMap(map, size, v); }, mapSize>()},
-    {"glPixelMapusv",
-     compiled<+[](GLenum map, GLsizei size, const GLushort* v) { pixelMap(map, size, v); }, mapSize>()},
-    {"glGetPixelMapfv", entry(+[](GLenum map, GLfloat* v) { getPixelMap(map, v); })},
-    {"glGetPixelMapuiv", entry(+[](GLenum map, GLuint* v) { getPixelMap(map, v); })},
-    {"glGetPixelMapusv", entry(+[](GLenum map, GLushort* v) { getPixelMap(map, v); })},
+    listed<gl::glPixelTransferf, +[](GLenum name, GLfloat value) { pixelTransfer(name, value); }>(),
+    listed<gl::glPixelTransferi, +[](GLenum name, GLint value) { pixelTransfer(name, static_cast<float>(value)); }>(),
+    listed<gl::glPixelMapfv, +[](GLenum map, GLsizei size, const GLfloat* v) { pixelMap(map, size, v); }>(),
+    listed<gl::glPixelMapuiv, +[](GLenum map, GLsizei size, const GLuint* v) { pixelMap(map, size, v); }>(),
+    listed<gl::glPixelMapusv, +[](GLenum map, GLsizei size, const GLushort* v) { pixelMap(map, size, v); }>(),
+    listed<gl::glGetPixelMapfv, +[](GLenum map, GLfloat* v) { getPixelMap(map, v); }>(),
+    listed<gl::glGetPixelMapuiv, +[](GLenum map, GLuint* v) { getPixelMap(map, v); }>(),
+    listed<gl::glGetPixelMapusv, +[](GLenum map, GLushort* v) { getPixelMap(map, v); }>(),
 };
 
 }  // namespace

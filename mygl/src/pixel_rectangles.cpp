@@ -323,18 +323,19 @@ void pixelZoom(GLfloat x, GLfloat y) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glDrawPixels", entry(+[](GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
-         Context::State* s = currentState();
-         if (!s) return;
-         if (s->lists.compiling()) {
-             s->lists.add(keptDrawPixels(*s, w, h, format, type, pixels));
-             if (!s->lists.executingWhileCompiling()) return;
-         }
-         drawPixels(w, h, format, type, pixels);
-     })},
-    {"glCopyPixels",
-     compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { copyPixels(x, y, w, h, type); }>()},
-    {"glPixelZoom", compiled<+[](GLfloat x, GLfloat y) { pixelZoom(x, y); }>()},
+    listed<gl::glDrawPixels,
+           +[](GLsizei w, GLsizei h, GLenum format, GLenum type, const void* pixels) {
+               Context::State* s = currentState();
+               if (!s) return;
+               if (s->lists.compiling()) {
+                   s->lists.add(keptDrawPixels(*s, w, h, format, type, pixels));
+                   if (!s->lists.executingWhileCompiling()) return;
+               }
+               drawPixels(w, h, format, type, pixels);
+           }>(),
+    listed<gl::glCopyPixels,
+           +[](GLint x, GLint y, GLsizei w, GLsizei h, GLenum type) { copyPixels(x, y, w, h, type); }>(),
+    listed<gl::glPixelZoom, +[](GLfloat x, GLfloat y) { pixelZoom(x, y); }>(),
 };
 
 }  // namespace

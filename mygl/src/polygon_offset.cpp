@@ -24,7 +24,7 @@ bool* enableOf(glrenderer::PolygonOffset& o, GLenum cap) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glPolygonOffset", compiled<+[](GLfloat factor, GLfloat units) { polygonOffset(factor, units); }>()},
+    listed<gl::glPolygonOffset, +[](GLfloat factor, GLfloat units) { polygonOffset(factor, units); }>(),
 };
 
 }  // namespace

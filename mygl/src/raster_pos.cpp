@@ -134,19 +134,20 @@ CompiledCall keptBitmap(const Context::State& s, GLsizei w, GLsizei h, GLfloat x
 }
 
 const EntryPoint kEntryPoints[] = {
-    MYGL_POSITION_ENTRIES("glRasterPos", s, GLshort, rasterPosv),
-    MYGL_POSITION_ENTRIES("glRasterPos", i, GLint, rasterPosv),
-    MYGL_POSITION_ENTRIES("glRasterPos", f, GLfloat, rasterPosv),
-    MYGL_POSITION_ENTRIES("glRasterPos", d, GLdouble, rasterPosv),
-    {"glBitmap", entry(+[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
-         Context::State* s = currentState();
-         if (!s) return;
-         if (s->lists.compiling()) {
-             s->lists.add(keptBitmap(*s, w, h, xo, yo, xm, ym, bits));
-             if (!s->lists.executingWhileCompiling()) return;
-         }
-         bitmap(w, h, xo, yo, xm, ym, bits, w > 0 ? bitmapRowStride(w, s->unpack.alignment) : 0);
-     })},
+    MYGL_POSITION_ENTRIES(glRasterPos, s, GLshort, rasterPosv),
+    MYGL_POSITION_ENTRIES(glRasterPos, i, GLint, rasterPosv),
+    MYGL_POSITION_ENTRIES(glRasterPos, f, GLfloat, rasterPosv),
+    MYGL_POSITION_ENTRIES(glRasterPos, d, GLdouble, rasterPosv),
+    listed<gl::glBitmap,
+           +[](GLsizei w, GLsizei h, GLfloat xo, GLfloat yo, GLfloat xm, GLfloat ym, const GLubyte* bits) {
+               Context::State* s = currentState();
+               if (!s) return;
+               if (s->lists.compiling()) {
+                   s->lists.add(keptBitmap(*s, w, h, xo, yo, xm, ym, bits));
+                   if (!s->lists.executingWhileCompiling()) return;
+               }
+               bitmap(w, h, xo, yo, xm, ym, bits, w > 0 ? bitmapRowStride(w, s->unpack.alignment) : 0);
+           }>(),
 };
 
 }  // namespace

@@ -90,24 +90,27 @@ bool unless(Context::State& s, bool fails, GLenum error) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glRenderMode", entry(+[](GLenum mode) -> GLint { return renderMode(mode); })},
-    {"glSelectBuffer", entry(+[](GLsizei size, GLuint* buffer) { selectBuffer(size, buffer); })},
-    {"glInitNames", compiled<+[] { changeNames(always, [](std::vector<GLuint>& names) { names.clear(); }); }>()},
-    {"glLoadName", compiled<+[](GLuint name) {
-         changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_INVALID_OPERATION); },
-                     [name](std::vector<GLuint>& names) { names.back() = name; });
-     }>()},
-    {"glPushName", compiled<+[](GLuint name) {
-         changeNames(
-             [](Context::State& s) {
-                 return unless(s, s.selection.names.size() >= Selection::kMaxNameStackDepth, GL_STACK_OVERFLOW);
-             },
-             [name](std::vector<GLuint>& names) { names.push_back(name); });
-     }>()},
-    {"glPopName", compiled<+[] {
-         changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_STACK_UNDERFLOW); },
-                     [](std::vector<GLuint>& names) { names.pop_back(); });
-     }>()},
+    listed<gl::glRenderMode, +[](GLenum mode) -> GLint { return renderMode(mode); }>(),
+    listed<gl::glSelectBuffer, +[](GLsizei size, GLuint* buffer) { selectBuffer(size, buffer); }>(),
+    listed<gl::glInitNames, +[] { changeNames(always, [](std::vector<GLuint>& names) { names.clear(); }); }>(),
+    listed<gl::glLoadName,
+           +[](GLuint name) {
+               changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_INVALID_OPERATION); },
+                           [name](std::vector<GLuint>& names) { names.back() = name; });
+           }>(),
+    listed<gl::glPushName,
+           +[](GLuint name) {
+               changeNames(
+                   [](Context::State& s) {
+                       return unless(s, s.selection.names.size() >= Selection::kMaxNameStackDepth, GL_STACK_OVERFLOW);
+                   },
+                   [name](std::vector<GLuint>& names) { names.push_back(name); });
+           }>(),
+    listed<gl::glPopName,
+           +[] {
+               changeNames([](Context::State& s) { return unless(s, s.selection.names.empty(), GL_STACK_UNDERFLOW); },
+                           [](std::vector<GLuint>& names) { names.pop_back(); });
+           }>(),
 };
 
 }  // namespace

@@ -164,47 +164,54 @@ void hint(GLenum target, GLenum mode) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glEnable", compiled<+[](GLenum cap) { setCapability(cap, true); }>()},
-    {"glDisable", compiled<+[](GLenum cap) { setCapability(cap, false); }>()},
-    {"glIsEnabled", entry(+[](GLenum cap) { return isEnabled(cap); })},
-    {"glCullFace", compiled<+[](GLenum mode) { cullFace(mode); }>()},
-    {"glFrontFace", compiled<+[](GLenum mode) { frontFace(mode); }>()},
-    {"glDepthFunc", compiled<+[](GLenum func) { depthFunc(func); }>()},
-    {"glDepthMask", compiled<+[](GLboolean flag) {
-         if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.edit().depthWrite, flag != GL_FALSE);
-     }>()},
-    {"glShadeModel", compiled<+[](GLenum mode) { shadeModel(mode); }>()},
-    {"glPolygonMode", compiled<+[](GLenum face, GLenum mode) { polygonMode(face, mode); }>()},
-    {"glLineWidth", compiled<+[](GLfloat width) {
-         if (Context::State* s = currentState()) positiveSize(s->draw.edit().lineWidth, width);
-     }>()},
-    {"glPointSize", compiled<+[](GLfloat size) {
-         if (Context::State* s = currentState()) positiveSize(s->draw.edit().pointSize, size);
-     }>()},
-    {"glViewport", compiled<+[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); }>()},
-    {"glDepthRange", compiled<+[](GLdouble n, GLdouble f) { depthRange(n, f); }>()},
-    {"glClearColor", compiled<+[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
-         if (Context::State* s = stateOutsideBeginEnd())
-             s->clearColor = {clampToUnit(r), clampToUnit(g), clampToUnit(b), clampToUnit(a)};
-     }>()},
-    {"glClearDepth", compiled<+[](GLdouble depth) {
-         if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
-     }>()},
-    {"glPixelStorei", entry(+[](GLenum name, GLint value) { pixelStore(name, value); })},
-    {"glPixelStoref", entry(+[](GLenum name, GLfloat value) {
-         // Booleans are any non-zero value; counts round to the nearest integer.
-         const bool flag = name == GL_PACK_SWAP_BYTES || name == GL_PACK_LSB_FIRST || name == GL_UNPACK_SWAP_BYTES ||
-                           name == GL_UNPACK_LSB_FIRST;
-         pixelStore(name, flag ? GLint{value != 0.0f} : static_cast<GLint>(std::lround(value)));
-     })},
-    {"glHint", compiled<+[](GLenum target, GLenum mode) { hint(target, mode); }>()},
-    {"glGetError", entry(+[]() -> GLenum {
-         Context::State* s = stateOutsideBeginEnd();
-         if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)
-         const GLenum error = s->error;
-         s->error = GL_NO_ERROR;
-         return error;
-     })},
+    listed<gl::glEnable, +[](GLenum cap) { setCapability(cap, true); }>(),
+    listed<gl::glDisable, +[](GLenum cap) { setCapability(cap, false); }>(),
+    listed<gl::glIsEnabled, +[](GLenum cap) { return isEnabled(cap); }>(),
+    listed<gl::glCullFace, +[](GLenum mode) { cullFace(mode); }>(),
+    listed<gl::glFrontFace, +[](GLenum mode) { frontFace(mode); }>(),
+    listed<gl::glDepthFunc, +[](GLenum func) { depthFunc(func); }>(),
+    listed<gl::glDepthMask,
+           +[](GLboolean flag) {
+               if (Context::State* s = stateOutsideBeginEnd()) assign(*s, s->draw.edit().depthWrite, flag != GL_FALSE);
+           }>(),
+    listed<gl::glShadeModel, +[](GLenum mode) { shadeModel(mode); }>(),
+    listed<gl::glPolygonMode, +[](GLenum face, GLenum mode) { polygonMode(face, mode); }>(),
+    listed<gl::glLineWidth,
+           +[](GLfloat width) {
+               if (Context::State* s = currentState()) positiveSize(s->draw.edit().lineWidth, width);
+           }>(),
+    listed<gl::glPointSize,
+           +[](GLfloat size) {
+               if (Context::State* s = currentState()) positiveSize(s->draw.edit().pointSize, size);
+           }>(),
+    listed<gl::glViewport, +[](GLint x, GLint y, GLsizei w, GLsizei h) { viewport(x, y, w, h); }>(),
+    listed<gl::glDepthRange, +[](GLdouble n, GLdouble f) { depthRange(n, f); }>(),
+    listed<gl::glClearColor,
+           +[](GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+               if (Context::State* s = stateOutsideBeginEnd())
+                   s->clearColor = {clampToUnit(r), clampToUnit(g), clampToUnit(b), clampToUnit(a)};
+           }>(),
+    listed<gl::glClearDepth,
+           +[](GLdouble depth) {
+               if (Context::State* s = stateOutsideBeginEnd()) s->clearDepth = clampToUnit(depth);
+           }>(),
+    listed<gl::glPixelStorei, +[](GLenum name, GLint value) { pixelStore(name, value); }>(),
+    listed<gl::glPixelStoref,
+           +[](GLenum name, GLfloat value) {
+               // Booleans are any non-zero value; counts round to the nearest integer.
+               const bool flag = name == GL_PACK_SWAP_BYTES || name == GL_PACK_LSB_FIRST ||
+                                 name == GL_UNPACK_SWAP_BYTES || name == GL_UNPACK_LSB_FIRST;
+               pixelStore(name, flag ? GLint{value != 0.0f} : static_cast<GLint>(std::lround(value)));
+           }>(),
+    listed<gl::glHint, +[](GLenum target, GLenum mode) { hint(target, mode); }>(),
+    listed<gl::glGetError,
+           +[]() -> GLenum {
+               Context::State* s = stateOutsideBeginEnd();
+               if (!s) return GL_NO_ERROR;  // no context, or inside glBegin/glEnd (that error is now pending)
+               const GLenum error = s->error;
+               s->error = GL_NO_ERROR;
+               return error;
+           }>(),
 };
 
 }  // namespace

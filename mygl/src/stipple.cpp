@@ -95,9 +95,9 @@ auto* enableOf(DrawState& draw, GLenum cap) {
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glLineStipple", compiled<+[](GLint factor, GLushort pattern) { lineStipple(factor, pattern); }>()},
-    {"glPolygonStipple", entry(+[](const GLubyte* mask) { polygonStipple(mask); })},
-    {"glGetPolygonStipple", entry(+[](GLubyte* mask) { getPolygonStipple(mask); })},
+    listed<gl::glLineStipple, +[](GLint factor, GLushort pattern) { lineStipple(factor, pattern); }>(),
+    listed<gl::glPolygonStipple, +[](const GLubyte* mask) { polygonStipple(mask); }>(),
+    listed<gl::glGetPolygonStipple, +[](GLubyte* mask) { getPolygonStipple(mask); }>(),
 };
 
 }  // namespace

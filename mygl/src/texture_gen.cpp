@@ -10,7 +10,8 @@ namespace {
 // The index of GL_S ... GL_Q, or -1.
 int coordinateIndex(GLenum coord) { return coord >= GL_S && coord <= GL_Q ? static_cast<int>(coord - GL_S) : -1; }
 
-std::size_t texGenCount(GLenum name) { return name == GL_OBJECT_PLANE || name == GL_EYE_PLANE ? 4 : 1; }
+// The values glTexGen*v reads for `name` (the list's count rule).
+std::size_t texGenCount(GLenum name) { return glcalls::texGenCount<GLdouble>(0, name, nullptr); }
 
 // `count` values behind v: 1 for the scalar forms, which take only GL_TEXTURE_GEN_MODE.
 void texGen(GLenum coord, GLenum name, const GLdouble* v, std::size_t count) {
@@ -74,11 +75,10 @@ void getTexGen(GLenum coord, GLenum name, T* out) {
 }
 
 // clang-format off
-#define MYGL_TEXGEN(suffix, T)                                                                          \
-    {"glTexGen" #suffix, compiled<+[](GLenum c, GLenum n, T v) { const GLdouble d = v; texGen(c, n, &d, 1); }>()}, \
-    {"glTexGen" #suffix "v", compiled<+[](GLenum c, GLenum n, const T* v) { texGenv(c, n, v); },          \
-                                      +[](GLenum, GLenum n, const T*) { return texGenCount(n); }>()},      \
-    {"glGetTexGen" #suffix "v", entry(+[](GLenum c, GLenum n, T* out) { getTexGen(c, n, out); })}
+#define MYGL_TEXGEN(suffix, T)                                                                                   \
+    listed<gl::glTexGen##suffix, +[](GLenum c, GLenum n, T v) { const GLdouble d = v; texGen(c, n, &d, 1); }>(), \
+    listed<gl::glTexGen##suffix##v, +[](GLenum c, GLenum n, const T* v) { texGenv(c, n, v); }>(),                \
+    listed<gl::glGetTexGen##suffix##v, +[](GLenum c, GLenum n, T* out) { getTexGen(c, n, out); }>()
 // clang-format on
 
 const EntryPoint kEntryPoints[] = {

@@ -92,8 +92,6 @@ void texParameteri(GLenum target, GLenum name, const GLint* v, int count) {
     texParameter(target, name, values, count);
 }
 
-std::size_t texParameterCount(GLenum name) { return name == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
-
 void texEnv(GLenum target, GLenum name, const GLfloat* v, int count) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s || !v) return;
@@ -123,8 +121,6 @@ void texEnvi(GLenum target, GLenum name, const GLint* v, int count) {
     }
     texEnv(target, name, values, count);
 }
-
-std::size_t texEnvCount(GLenum name) { return name == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
 
 // The values of a query and whether they are a colour (integer forms scale colours).
 struct Answer {
@@ -237,40 +233,38 @@ void getTexImage(GLenum target, GLint level, GLenum format, GLenum type, void* p
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glTexParameterf", compiled<+[](GLenum target, GLenum name, GLfloat v) { texParameter(target, name, &v, 1); }>()},
-    {"glTexParameteri", compiled<+[](GLenum target, GLenum name, GLint v) { texParameteri(target, name, &v, 1); }>()},
-    {"glTexParameterfv", compiled<+[](GLenum target, GLenum name, const GLfloat* v) {
-         texParameter(target, name, v, static_cast<int>(texParameterCount(name)));
-     },
-                                  +[](GLenum, GLenum name, const GLfloat*) { return texParameterCount(name); }>()},
-    {"glTexParameteriv", compiled<+[](GLenum target, GLenum name, const GLint* v) {
-         texParameteri(target, name, v, static_cast<int>(texParameterCount(name)));
-     },
-                                  +[](GLenum, GLenum name, const GLint*) { return texParameterCount(name); }>()},
-    {"glTexEnvf", compiled<+[](GLenum target, GLenum name, GLfloat v) { texEnv(target, name, &v, 1); }>()},
-    {"glTexEnvi", compiled<+[](GLenum target, GLenum name, GLint v) { texEnvi(target, name, &v, 1); }>()},
-    {"glTexEnvfv", compiled<+[](GLenum target, GLenum name, const GLfloat* v) {
-         texEnv(target, name, v, static_cast<int>(texEnvCount(name)));
-     },
-                            +[](GLenum, GLenum name, const GLfloat*) { return texEnvCount(name); }>()},
-    {"glTexEnviv", compiled<+[](GLenum target, GLenum name, const GLint* v) {
-         texEnvi(target, name, v, static_cast<int>(texEnvCount(name)));
-     },
-                            +[](GLenum, GLenum name, const GLint*) { return texEnvCount(name); }>()},
-    {"glGetTexParameterfv",
-     entry(+[](GLenum target, GLenum name, GLfloat* out) { getTexParameter(target, name, out); })},
-    {"glGetTexParameteriv", entry(+[](GLenum target, GLenum name, GLint* out) { getTexParameter(target, name, out); })},
-    {"glGetTexLevelParameterfv", entry(+[](GLenum target, GLint level, GLenum name, GLfloat* out) {
-         getTexLevelParameter(target, level, name, out);
-     })},
-    {"glGetTexLevelParameteriv", entry(+[](GLenum target, GLint level, GLenum name, GLint* out) {
-         getTexLevelParameter(target, level, name, out);
-     })},
-    {"glGetTexEnvfv", entry(+[](GLenum target, GLenum name, GLfloat* out) { getTexEnv(target, name, out); })},
-    {"glGetTexEnviv", entry(+[](GLenum target, GLenum name, GLint* out) { getTexEnv(target, name, out); })},
-    {"glGetTexImage", entry(+[](GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
-         getTexImage(target, level, format, type, pixels);
-     })},
+    listed<gl::glTexParameterf, +[](GLenum target, GLenum name, GLfloat v) { texParameter(target, name, &v, 1); }>(),
+    listed<gl::glTexParameteri, +[](GLenum target, GLenum name, GLint v) { texParameteri(target, name, &v, 1); }>(),
+    listed<gl::glTexParameterfv,
+           +[](GLenum target, GLenum name, const GLfloat* v) {
+               texParameter(target, name, v, static_cast<int>(glcalls::texParameterCount(target, name, v)));
+           }>(),
+    listed<gl::glTexParameteriv,
+           +[](GLenum target, GLenum name, const GLint* v) {
+               texParameteri(target, name, v, static_cast<int>(glcalls::texParameterCount(target, name, v)));
+           }>(),
+    listed<gl::glTexEnvf, +[](GLenum target, GLenum name, GLfloat v) { texEnv(target, name, &v, 1); }>(),
+    listed<gl::glTexEnvi, +[](GLenum target, GLenum name, GLint v) { texEnvi(target, name, &v, 1); }>(),
+    listed<gl::glTexEnvfv,
+           +[](GLenum target, GLenum name, const GLfloat* v) {
+               texEnv(target, name, v, static_cast<int>(glcalls::texEnvCount(target, name, v)));
+           }>(),
+    listed<gl::glTexEnviv,
+           +[](GLenum target, GLenum name, const GLint* v) {
+               texEnvi(target, name, v, static_cast<int>(glcalls::texEnvCount(target, name, v)));
+           }>(),
+    listed<gl::glGetTexParameterfv,
+           +[](GLenum target, GLenum name, GLfloat* out) { getTexParameter(target, name, out); }>(),
+    listed<gl::glGetTexParameteriv,
+           +[](GLenum target, GLenum name, GLint* out) { getTexParameter(target, name, out); }>(),
+    listed<gl::glGetTexLevelParameterfv, +[](GLenum target, GLint level, GLenum name,
+                                             GLfloat* out) { getTexLevelParameter(target, level, name, out); }>(),
+    listed<gl::glGetTexLevelParameteriv, +[](GLenum target, GLint level, GLenum name,
+                                             GLint* out) { getTexLevelParameter(target, level, name, out); }>(),
+    listed<gl::glGetTexEnvfv, +[](GLenum target, GLenum name, GLfloat* out) { getTexEnv(target, name, out); }>(),
+    listed<gl::glGetTexEnviv, +[](GLenum target, GLenum name, GLint* out) { getTexEnv(target, name, out); }>(),
+    listed<gl::glGetTexImage, +[](GLenum target, GLint level, GLenum format, GLenum type,
+                                  void* pixels) { getTexImage(target, level, format, type, pixels); }>(),
 };
 
 glrenderer::TextureWrap wrapOf(GLenum wrap, bool blends) {

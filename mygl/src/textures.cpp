@@ -287,46 +287,47 @@ void prioritizeTextures(GLsizei n, const GLuint* names, const GLclampf* prioriti
 }
 
 const EntryPoint kEntryPoints[] = {
-    {"glGenTextures", entry(+[](GLsizei n, GLuint* names) { genTextures(n, names); })},
-    {"glBindTexture", compiled<+[](GLenum target, GLuint name) { bindTexture(target, name); }>()},
-    {"glDeleteTextures", entry(+[](GLsizei n, const GLuint* names) { deleteTextures(n, names); })},
-    {"glIsTexture", entry(+[](GLuint name) { return isTexture(name); })},
-    {"glAreTexturesResident", entry(+[](GLsizei n, const GLuint* names, GLboolean* residences) {
-         return areTexturesResident(n, names, residences);
-     })},
-    {"glPrioritizeTextures",
-     compiled<+[](GLsizei n, const GLuint* names, const GLclampf* priorities) {
-         prioritizeTextures(n, names, priorities);
-     },
-              +[](GLsizei n, const GLuint*, const GLclampf*) { return static_cast<std::size_t>(std::max(n, 0)); }>()},
-    {"glTexImage1D", entry(+[](GLenum target, GLint level, GLint internalFormat, GLsizei width, GLint border,
-                               GLenum format, GLenum type, const void* pixels) {
-         texImageCall(target, 1, level, internalFormat, width, 1, border, format, type, pixels);
-     })},
-    {"glTexImage2D", entry(+[](GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height,
-                               GLint border, GLenum format, GLenum type, const void* pixels) {
-         texImageCall(target, 2, level, internalFormat, width, height, border, format, type, pixels);
-     })},
-    {"glTexSubImage1D",
-     entry(+[](GLenum target, GLint level, GLint x, GLsizei width, GLenum format, GLenum type, const void* pixels) {
-         texSubImageCall(target, 1, level, x, 0, width, 1, format, type, pixels);
-     })},
-    {"glTexSubImage2D",
-     entry(+[](GLenum target, GLint level, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
-               const void* pixels) { texSubImageCall(target, 2, level, x, y, width, height, format, type, pixels); })},
-    {"glCopyTexImage1D",
-     compiled<+[](GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y, GLsizei width, GLint border) {
-         copyTexImage(target, 1, level, internalFormat, x, y, width, 1, border);
-     }>()},
-    {"glCopyTexImage2D",
-     compiled<+[](GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y, GLsizei width, GLsizei height,
-                  GLint border) { copyTexImage(target, 2, level, internalFormat, x, y, width, height, border); }>()},
-    {"glCopyTexSubImage1D", compiled<+[](GLenum target, GLint level, GLint xOffset, GLint x, GLint y, GLsizei width) {
-         copyTexSubImage(target, 1, level, xOffset, 0, x, y, width, 1);
-     }>()},
-    {"glCopyTexSubImage2D",
-     compiled<+[](GLenum target, GLint level, GLint xOffset, GLint yOffset, GLint x, GLint y, GLsizei width,
-                  GLsizei height) { copyTexSubImage(target, 2, level, xOffset, yOffset, x, y, width, height); }>()},
+    listed<gl::glGenTextures, +[](GLsizei n, GLuint* names) { genTextures(n, names); }>(),
+    listed<gl::glBindTexture, +[](GLenum target, GLuint name) { bindTexture(target, name); }>(),
+    listed<gl::glDeleteTextures, +[](GLsizei n, const GLuint* names) { deleteTextures(n, names); }>(),
+    listed<gl::glIsTexture, +[](GLuint name) { return isTexture(name); }>(),
+    listed<gl::glAreTexturesResident,
+           +[](GLsizei n, const GLuint* names, GLboolean* residences) {
+               return areTexturesResident(n, names, residences);
+           }>(),
+    listed<gl::glPrioritizeTextures, +[](GLsizei n, const GLuint* names,
+                                         const GLclampf* priorities) { prioritizeTextures(n, names, priorities); }>(),
+    listed<gl::glTexImage1D,
+           +[](GLenum target, GLint level, GLint internalFormat, GLsizei width, GLint border, GLenum format,
+               GLenum type, const void* pixels) {
+               texImageCall(target, 1, level, internalFormat, width, 1, border, format, type, pixels);
+           }>(),
+    listed<gl::glTexImage2D,
+           +[](GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height, GLint border,
+               GLenum format, GLenum type, const void* pixels) {
+               texImageCall(target, 2, level, internalFormat, width, height, border, format, type, pixels);
+           }>(),
+    listed<gl::glTexSubImage1D,
+           +[](GLenum target, GLint level, GLint x, GLsizei width, GLenum format, GLenum type, const void* pixels) {
+               texSubImageCall(target, 1, level, x, 0, width, 1, format, type, pixels);
+           }>(),
+    listed<gl::glTexSubImage2D,
+           +[](GLenum target, GLint level, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
+               const void* pixels) { texSubImageCall(target, 2, level, x, y, width, height, format, type, pixels); }>(),
+    listed<gl::glCopyTexImage1D,
+           +[](GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y, GLsizei width, GLint border) {
+               copyTexImage(target, 1, level, internalFormat, x, y, width, 1, border);
+           }>(),
+    listed<gl::glCopyTexImage2D,
+           +[](GLenum target, GLint level, GLenum internalFormat, GLint x, GLint y, GLsizei width, GLsizei height,
+               GLint border) { copyTexImage(target, 2, level, internalFormat, x, y, width, height, border); }>(),
+    listed<gl::glCopyTexSubImage1D,
+           +[](GLenum target, GLint level, GLint xOffset, GLint x, GLint y, GLsizei width) {
+               copyTexSubImage(target, 1, level, xOffset, 0, x, y, width, 1);
+           }>(),
+    listed<gl::glCopyTexSubImage2D,
+           +[](GLenum target, GLint level, GLint xOffset, GLint yOffset, GLint x, GLint y, GLsizei width,
+               GLsizei height) { copyTexSubImage(target, 2, level, xOffset, yOffset, x, y, width, height); }>(),
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
+#include <glcalls/gl11_calls.h>
 #include <mygl/context.h>
 
 #include <algorithm>
@@ -11,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "gl11_functions.h"
 #include "not_implemented.h"
 
 namespace {
@@ -22,8 +22,8 @@ const std::vector<std::string> kStillToDo = {};
 
 TEST(EntryPoints, ExactlyTheListedGl11FunctionsAreStillOnTheStub) {
     static const char* const kAll[] = {
-#define MYGL_NAME(name) #name,
-        MYGL_GL11_FUNCTIONS(MYGL_NAME)
+#define MYGL_NAME(name, class_, count) #name,
+        MYGL_GL11_CALLS(MYGL_NAME)
 #undef MYGL_NAME
     };
     EXPECT_EQ(std::size(kAll), 336u);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
+#include <glcalls/gl11_calls.h>
 #include <mygl/context.h>
 
 #include <string>
@@ -13,7 +14,6 @@
 
 #include "api_table.h"
 #include "cases.h"
-#include "gl11_functions.h"
 
 namespace {
 
@@ -51,8 +51,8 @@ struct Wrapped {
 };
 
 const Wrapped kWrapped[] = {
-#define MYGL_COUNTER(name) {#name, &Counter<glad_##name>::install, &Counter<glad_##name>::uninstall},
-    MYGL_GL11_FUNCTIONS(MYGL_COUNTER)
+#define MYGL_COUNTER(name, class_, count) {#name, &Counter<glad_##name>::install, &Counter<glad_##name>::uninstall},
+    MYGL_GL11_CALLS(MYGL_COUNTER)
 #undef MYGL_COUNTER
 };
 

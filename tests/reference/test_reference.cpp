@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
+#include <glcalls/gl11_calls.h>
 #include <mygl/context.h>
 #include <reference/call_recorder.h>
 #include <reference/compare.h>
@@ -12,8 +13,6 @@
 #include <functional>
 #include <string_view>
 #include <utility>
-
-#include "gl11_functions.h"
 
 namespace {
 
@@ -251,8 +250,8 @@ TEST(CallRecorder, WrapsEveryFunctionMyGLImplementsButTheQueries) {
         void** pointer;
     };
     static const Slot kSlots[] = {
-#define MYGL_SLOT(name) {#name, reinterpret_cast<void**>(&glad_##name)},
-        MYGL_GL11_FUNCTIONS(MYGL_SLOT)
+#define MYGL_SLOT(name, class_, count) {#name, reinterpret_cast<void**>(&glad_##name)},
+        MYGL_GL11_CALLS(MYGL_SLOT)
 #undef MYGL_SLOT
     };
     const auto isQuery = [](std::string_view name) {

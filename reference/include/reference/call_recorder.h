@@ -9,9 +9,10 @@ namespace reference {
 // very same frame can be replayed on another backend: a program whose display code changes its
 // own state (an animation counter, a toggle) is then compared on identical calls.
 //
-// Recorded: every call that changes GL state or draws (glBegin ... glEnd, glVertex*, glColor*,
-// matrices, enables, clears, ...), with the data behind pointer arguments copied. Queries
-// (glGet*, glGetError, glIsEnabled, glReadPixels) pass through unrecorded.
+// Recorded: every call that changes GL state or draws (every function of the one list,
+// <glcalls/gl11_calls.h>, but its queries), with the data behind pointer arguments copied as
+// the list's count rules say. Queries (glGet*, glGetError, glIsEnabled, glReadPixels) pass
+// through unrecorded.
 class CallRecorder {
 public:
     CallRecorder() = default;
