@@ -17,22 +17,6 @@ namespace {
 // The vertices of a segment in which the reference's draw module takes a long draw of quads.
 constexpr std::uint32_t kQuadSegmentVertices = 4096;
 
-// Window coordinates beyond this are only reachable through degenerate w; such triangles are
-// dropped rather than fed to the fixed-point conversion.
-constexpr float kMaxWindowCoordinate = 1 << 24;
-
-// |x| and |y| below kMaxWindowCoordinate, z, 1 / w and the colour finite, in two comparisons of
-// four lanes (NaN fails every one).
-static_assert(offsetof(WindowVertex, invW) == 12 && offsetof(WindowVertex, color) == 16);
-__m128 usableLanes(const WindowVertex& v) {
-    const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
-    const __m128 infinity = _mm_set1_ps(std::numeric_limits<float>::infinity());
-    const __m128 limits = _mm_setr_ps(kMaxWindowCoordinate, kMaxWindowCoordinate,
-                                      std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
-    return _mm_and_ps(_mm_cmplt_ps(_mm_and_ps(_mm_loadu_ps(&v.x), magnitude), limits),
-                      _mm_cmplt_ps(_mm_and_ps(_mm_loadu_ps(&v.color.x), magnitude), infinity));
-}
-
 bool areUsable(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2) {
     return _mm_movemask_ps(_mm_and_ps(_mm_and_ps(usableLanes(v0), usableLanes(v1)), usableLanes(v2))) == 0xF;
 }
@@ -109,20 +93,24 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
     const PixelRect drawable =
         drawableRect(batch.state->fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
+    const bool stagedSnaps =
+        !batch.state->twoSidedColors && !(batch.state->secondaryColors && batch.state->shadeModel == ShadeModel::Flat);
     // The vertices first .. first + count, on the direct path or through the draw module.
     const auto decompose = [&](std::uint32_t first, std::uint32_t count, Outcode outside) {
         const DecompositionPath path = outside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
+        const bool drawModuleCulls = path == DecompositionPath::DrawModule && batch.state->cullEnabled &&
+                                     batch.methods.culling == CullMethod::WindowArea;
         const Call call{batch,
                         batch.vertices,
                         assembled,
                         &target,
                         stats,
                         &fragments,
-                        path == DecompositionPath::DrawModule && batch.state->cullEnabled &&
-                            batch.methods.culling == CullMethod::WindowArea,
+                        drawModuleCulls,
                         nullptr,
                         nullptr,
-                        drawable};
+                        drawable,
+                        stagedSnaps && !drawModuleCulls};
         decomposeTriangles(batch.mode, count, path, v1v3Quads, [&](TriangleIndices t) {
             for (std::uint32_t& v : t.v) v = indexed ? batch.indices[v + first] : v + first;
             setUpTriangle(call, t, viewport);
@@ -180,6 +168,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     const Vertex& provoking = call.vertices[t.v[2]];
     const Outcode outsideAny = outcodes[t.v[0]] | outcodes[t.v[1]] | outcodes[t.v[2]];
     if (outsideAny == 0) {
+        if (call.stagedSnaps) return setUpStaged(call, t, provoking.color);
         const auto& v = call.vertices;
         setUpSidedTriangle(call, {&windowVertices[t.v[0]], &windowVertices[t.v[1]], &windowVertices[t.v[2]]},
                            std::array{&v[t.v[0]], &v[t.v[1]], &v[t.v[2]]}, provoking);
@@ -254,7 +243,6 @@ void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0,
 void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                                const glm::vec4& flatColor) {
     const DrawState& state = *call.batch.state;
-    const Methods& methods = call.batch.methods;
     if (!areUsable(v0, v1, v2)) {
         ++call.stats.clippedAway;
         return;
@@ -278,6 +266,25 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         return;
     }
     SetupTriangle triangle{{&v0, &v1, &v2}, {snap(v0), snap(v1), snap(v2)}, 0, &flatColor};
+    setUpSnapped(call, triangle);
+}
+
+void BatchSetup::setUpStaged(const Call& call, const TriangleIndices& t, const glm::vec4& flatColor) {
+    const std::span<const SnappedVertex> snapped = vertexStage_.snapped();
+    const SnappedVertex &s0 = snapped[t.v[0]], &s1 = snapped[t.v[1]], &s2 = snapped[t.v[2]];
+    if (!(s0.usable && s1.usable && s2.usable)) {
+        ++call.stats.clippedAway;
+        return;
+    }
+    const std::span<const WindowVertex> window = vertexStage_.windowVertices();
+    SetupTriangle triangle{
+        {&window[t.v[0]], &window[t.v[1]], &window[t.v[2]]}, {s0.fixed, s1.fixed, s2.fixed}, 0, &flatColor};
+    setUpSnapped(call, triangle);
+}
+
+void BatchSetup::setUpSnapped(const Call& call, SetupTriangle& triangle) {
+    const DrawState& state = *call.batch.state;
+    const Methods& methods = call.batch.methods;
     triangle.area = fixedArea(triangle.fixed[0], triangle.fixed[1], triangle.fixed[2]);
     const Facing facing = facingOf(triangle.area, state.frontFaceCCW);
     if (facing == Facing::ZeroArea) {

@@ -69,6 +69,9 @@ private:
         HitRange* hits = nullptr;            // GL_SELECT
         FeedbackOutput* feedback = nullptr;  // GL_FEEDBACK
         PixelRect drawable{};                // drawableRect of the draw, when drawing
+        // The triangles on the direct path take the stage's snapped vertices as they are: no
+        // draw-module culling, selection, feedback, back colours or flat secondary colours.
+        bool stagedSnaps = false;
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     // A triangle's window vertices (by address: most triangles take them as they are) with the
@@ -83,6 +86,11 @@ private:
     // (Inlined into the callers: it is most of the work per triangle, called once each.)
     [[gnu::always_inline]] inline void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1,
                                                      const WindowVertex& v2, const glm::vec4& flatColor);
+    // The same for a triangle of the stage's vertices, with their snaps (Call::stagedSnaps).
+    [[gnu::always_inline]] inline void setUpStaged(const Call& call, const TriangleIndices& triangle,
+                                                   const glm::vec4& flatColor);
+    // Their common end: culls by the fixed-point area and prepares the snapped triangle.
+    [[gnu::always_inline]] inline void setUpSnapped(const Call& call, SetupTriangle& triangle);
 
     const Framebuffer& framebuffer_;  // for its size only
     VertexStage vertexStage_;

@@ -108,13 +108,19 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     // 1 / w, z and the fog coordinate / w: the planes invW, depth and fogCoord, which follow
     // each other in FragmentInputs.
     if (perspective || key.depthTest || key.fog != FogMode::Off || key.textureEnv != TextureEnv::Off) {
-        lanes([&](const WindowVertex& v) {
+        const FourPlanes depth = lanes([&](const WindowVertex& v) {
             const __m128 position = _mm_loadu_ps(&v.x);                                          // x, y, z, 1 / w
             const __m128 fogOverW = _mm_mul_ps(_mm_loadu_ps(&v.secondaryColor.x), oneOverW(v));  // in lane 3
             return _mm_shuffle_ps(position, fogOverW, _MM_SHUFFLE(3, 3, 2, 3));
-        }).store(&in.invW, 0, 3);
+        });
+        depth.store(&in.invW, 0, 3);
+        // The path from the plane of 1 / w in registers: read back from the record just written, it
+        // waited for the stores (a third of this function's time in the torus).
+        if (perspective) {
+            in.setPath(fragments.path(
+                AttributePlane{_mm_cvtss_f32(depth.a0), _mm_cvtss_f32(depth.dadx), _mm_cvtss_f32(depth.dady)}));
+        }
     }
-    if (perspective) in.setPath(fragments.path(in.invW));
     if (key.depthOffset) in.depthOffset = setupDepthOffset(fragments.polygonOffset, v0, v1, v2);
     if (key.fog != FogMode::Off) in.fog = fragments.fog;
     if (key.textureEnv != TextureEnv::Off) {

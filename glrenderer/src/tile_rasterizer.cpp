@@ -56,9 +56,8 @@ void finishStreaming() {
 // The lines every triangle uses (RasterTriangle's first fields): fetching the rest too read
 // lines that most keys never touch, a third of a dense mesh's triangle records.
 void prefetch(const RasterTriangle& triangle) {
-    constexpr std::size_t kCommonBytes = offsetof(RasterTriangle, fragment) + offsetof(FragmentInputs, secondaryColor);
     const char* bytes = reinterpret_cast<const char*>(&triangle);
-    for (std::size_t line = 0; line < kCommonBytes; line += 64) __builtin_prefetch(bytes + line);
+    for (std::size_t line = 0; line < kCommonTriangleBytes; line += 64) __builtin_prefetch(bytes + line);
 }
 
 }  // namespace
@@ -87,7 +86,13 @@ void TileRasterizer::refitTiles() {
 
 void TileRasterizer::queue(std::span<const RasterTriangle* const> triangles) {
     fitTilesToFramebuffer();
-    for (const RasterTriangle* triangle : triangles) bin(*triangle);
+    // Set up on another thread, their bounds are in that core's cache: fetched a few ahead, the
+    // load does not stall each bin() (half of its samples in a mesh waited on it).
+    constexpr std::size_t kAhead = 8;
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        if (i + kAhead < triangles.size()) __builtin_prefetch(&triangles[i + kAhead]->minX);
+        bin(*triangles[i]);
+    }
 }
 
 void TileRasterizer::releaseTriangles() {

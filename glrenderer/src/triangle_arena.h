@@ -8,6 +8,11 @@
 
 namespace glrenderer {
 
+// The bytes of a triangle record that every key's setup writes and its tiles read (RasterTriangle's
+// first fields): its first four cache lines.
+inline constexpr std::size_t kCommonTriangleBytes =
+    offsetof(RasterTriangle, fragment) + offsetof(FragmentInputs, secondaryColor);
+
 // Where set-up triangles go: a slot to prepare the next one in place, and keep() if it is to be
 // drawn (an unkept slot is offered again).
 class TriangleTarget {
@@ -54,6 +59,12 @@ public:
             block_ = arena_.takeBlock();
             used_ = 0;
         }
+        // A slot a few ahead fetched for its writing: a frame's records are far more than the
+        // caches hold, and setup otherwise waited for each line it stored into.
+        if (used_ + kWriteAhead < TriangleArena::kBlockTriangles) {
+            const char* ahead = reinterpret_cast<const char*>(&block_[used_ + kWriteAhead]);
+            for (std::size_t line = 0; line < kCommonTriangleBytes; line += 64) __builtin_prefetch(ahead + line, 1);
+        }
         return block_[used_];
     }
     void keep() override {
@@ -70,6 +81,8 @@ public:
     }
 
 private:
+    static constexpr std::size_t kWriteAhead = 4;
+
     TriangleArena& arena_;
     RasterTriangle* block_ = nullptr;
     std::size_t used_ = TriangleArena::kBlockTriangles;

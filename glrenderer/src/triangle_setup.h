@@ -1,6 +1,8 @@
 #pragma once
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include <immintrin.h>
 
@@ -24,6 +26,31 @@ inline std::int64_t snapToFixed(float windowCoordinate) {
 }
 
 inline FixedPoint snap(const WindowVertex& v) { return {snapToFixed(v.x), snapToFixed(v.y)}; }
+
+// Window coordinates beyond this are only reachable through degenerate w; triangles with such a
+// vertex are dropped rather than fed to the fixed-point conversion.
+inline constexpr float kMaxWindowCoordinate = 1 << 24;
+
+// |x| and |y| below kMaxWindowCoordinate, z, 1 / w and the colour finite, in two comparisons of
+// four lanes (NaN fails every one): all four lanes set when the vertex can be set up.
+static_assert(offsetof(WindowVertex, invW) == 12 && offsetof(WindowVertex, color) == 16);
+inline __m128 usableLanes(const WindowVertex& v) {
+    const __m128 magnitude = _mm_castsi128_ps(_mm_set1_epi32(0x7FFFFFFF));
+    const __m128 infinity = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    const __m128 limits = _mm_setr_ps(kMaxWindowCoordinate, kMaxWindowCoordinate,
+                                      std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
+    return _mm_and_ps(_mm_cmplt_ps(_mm_and_ps(_mm_loadu_ps(&v.x), magnitude), limits),
+                      _mm_cmplt_ps(_mm_and_ps(_mm_loadu_ps(&v.color.x), magnitude), infinity));
+}
+
+// A window vertex's snapped position and whether it can be set up (usableLanes), computed once
+// per vertex by the vertex stage: a strip or an indexed mesh shares a vertex among several
+// triangles. `fixed` is meaningful only when `usable`.
+struct SnappedVertex {
+    FixedPoint fixed;
+    bool usable;
+};
+inline SnappedVertex snapVertex(const WindowVertex& v) { return {snap(v), _mm_movemask_ps(usableLanes(v)) == 0xF}; }
 
 // Twice the signed area of the snapped triangle in internal (y-down) coordinates. Negative means
 // counter-clockwise as seen in GL window coordinates (y up).

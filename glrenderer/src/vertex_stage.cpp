@@ -24,6 +24,7 @@ VertexStage::VertexStage(std::size_t batchVertices) {
     texCoordinates_.reserve(batchVertices);
     outcodes_.reserve(batchVertices);
     windowVertices_.reserve(batchVertices);
+    snapped_.reserve(batchVertices);
     clipVertices_.reserve(batchVertices);
 }
 
@@ -36,6 +37,8 @@ Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& v
     const Matrix& mvp = batch.transform.modelviewProjection;
     Outcode anyOutside = cpuHasFma() ? stageVerticesFma(batch.vertices, mvp, viewport, out)
                                      : stageVertices(batch.vertices, mvp, viewport, out);
+    snapped_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) snapped_[i] = snapVertex(windowVertices_[i]);
     fogCoordinates_.clear();
     if (batch.state->fog.mode != FogMode::Off) {
         fogCoordinates_.resize(count);

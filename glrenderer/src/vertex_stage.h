@@ -6,6 +6,7 @@
 #include "batch.h"
 #include "clip.h"
 #include "clip_vertex.h"
+#include "triangle_setup.h"
 #include "window_vertex.h"
 
 namespace glrenderer {
@@ -19,13 +20,15 @@ public:
     // Its arrays are sized for `batchVertices`, so that a batch of up to that many allocates nothing.
     explicit VertexStage(std::size_t batchVertices);
 
-    // Stages the batch; returns the union of its vertices' outcodes (with the program's clip
-    // planes: the pass computes the view volume's, a second one adds those when enabled) and,
-    // with fog and texturing, gives the window vertices their fog and texture coordinates. The arrays below hold the
-    // batch's vertices until the next call.
+    // Stages the batch (snapping each window vertex once); returns the union of its vertices' outcodes (with the
+    // program's clip planes: the pass computes the view volume's, a second one adds those when enabled) and, with fog
+    // and texturing, gives the window vertices their fog and texture coordinates. The arrays below hold the batch's
+    // vertices until the next call.
     Outcode run(const SubmittedBatch& batch, const ViewportTransform& viewport);
     std::span<const Outcode> outcodes() const { return outcodes_; }
     std::span<const WindowVertex> windowVertices() const { return windowVertices_; }
+    // Each window vertex snapped, and whether it can be set up (snapVertex).
+    std::span<const SnappedVertex> snapped() const { return snapped_; }
 
     // Vertex i of the batch last run (`vertices` its program's vertices), as the clipper takes it (without eye space).
     ClipVertex clipVertex(std::span<const Vertex> vertices, std::size_t i) const;
@@ -39,6 +42,7 @@ private:
     std::vector<glm::vec4> texCoordinates_;  // empty without texturing
     std::vector<Outcode> outcodes_;
     std::vector<WindowVertex> windowVertices_;
+    std::vector<SnappedVertex> snapped_;
     std::vector<ClipVertex> clipVertices_;
 };
 

@@ -1,6 +1,8 @@
 #pragma once
 // The current vertex attributes and glVertex: what glBegin/glEnd blocks and vertex arrays
 // (glArrayElement, glDrawArrays, glDrawElements) both feed vertices through.
+#include <xmmintrin.h>
+
 #include <type_traits>
 
 #include "clamp_to_unit.h"
@@ -59,12 +61,14 @@ template <class T>
 // GL clamps a vertex's colour to [0, 1] before it is interpolated (the reference's vertex stage
 // saturates it); the current colour itself stays as given, as glGet reports it.
 // `size`: as the reference stores it (see glrenderer::VertexAttribute).
-[[gnu::always_inline]] inline void setColor(const glm::vec4& c, int size) {  // as addVertex
+// The colour comes in a register: built as a glm::vec4 on the stack in parts and loaded whole, it
+// stalled on store forwarding (three quarters of glColor3f's time in the torus).
+[[gnu::always_inline]] inline void setColor(__m128 c, int size) {  // as addVertex
     Context::State* s = currentState();
     if (!s) return;
     s->pipeline.attribute(glrenderer::VertexAttribute::Color, size);
-    s->color = c;
-    s->vertexColor = saturate(c);
+    _mm_storeu_ps(&s->color.x, c);
+    _mm_storeu_ps(&s->vertexColor.x, saturate(c));
     if (s->insideBeginEnd) s->pipeline.colorPerVertex();
 }
 
@@ -86,7 +90,7 @@ template <class T>
 [[gnu::always_inline]] inline void colorv(const T* v, int n) {  // as addVertex
     // The reference passes glColor3 of any type but float on as glColor4f(r, g, b, 1).
     const int size = n == 3 && std::is_same_v<T, GLfloat> ? 3 : 4;
-    if (v) setColor({toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f}, size);
+    if (v) setColor(_mm_setr_ps(toFloat(v[0]), toFloat(v[1]), toFloat(v[2]), n > 3 ? toFloat(v[3]) : 1.0f), size);
 }
 
 template <class T>
