@@ -142,6 +142,7 @@ template <class L>
     const Int dy = L::template shiftRightUnsigned<std::countr_zero(static_cast<unsigned>(kColumns))>(L::laneIndex());
     const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
     const Mask rowLanes[2] = {L::lanesBetween(0, kColumns - 1), L::lanesBetween(kColumns, L::kCount - 1)};
+    const Mask allLanes = L::lanesBetween(0, L::kCount - 1);
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
     const auto spanOf = [&](int row) {
         if (row < area.minY || row > area.maxY) return Span{1, 0};
@@ -161,11 +162,13 @@ template <class L>
         const int end = firstCount == 0 ? second.end : secondCount == 0 ? first.end : std::max(first.end, second.end);
         const std::size_t rowStart = static_cast<std::size_t>(fb.height() - 1 - top) * fbWidth;
         const typename L::Float y = L::toFloat(L::add(L::ints(top), dy));
+        // Lane i is covered at the block from x = px where laneBegin_i <= px <= laneEnd_i.
+        const Int laneBegin = L::sub(L::select(rowLanes[0], L::ints(first.begin), L::ints(second.begin)), dx);
+        const Int laneEnd = L::sub(L::select(rowLanes[0], L::ints(first.end), L::ints(second.end)), dx);
         for (int px = begin; px <= end; px += kColumns) {
-            const Mask covered = L::either(
-                L::both(rowLanes[0], L::lanesBetween(first.begin - px, first.end - px)),
-                L::both(rowLanes[1], L::lanesBetween(second.begin - px + kColumns, second.end - px + kColumns)));
-            const typename L::Float x = L::toFloat(L::add(L::ints(px), dx));
+            const Int at = L::ints(px);
+            const Mask covered = L::butNot(L::butNot(allLanes, L::lessThan(at, laneBegin)), L::lessThan(laneEnd, at));
+            const typename L::Float x = L::toFloat(L::add(at, dx));
             const unsigned whole = (px >= first.begin && px + kColumns - 1 <= first.end ? 1u : 0u) |
                                    (px >= second.begin && px + kColumns - 1 <= second.end ? 2u : 0u);
             const TwoRowBlock<L> block(rowStart + static_cast<std::size_t>(px), fbWidth, whole);
