@@ -31,7 +31,7 @@ template <class L>
     if constexpr (L::kCheapMasks && L::kCount > 1) {
         first -= static_cast<int>((rowStart + begin) % L::kCount);
     }
-    // A level of detail per 2 x 2 quad: lanes in pairs from an even x (RowBlock::kRowQuads).
+    // A level of detail per 2 x 2 quad: lanes in pairs from an even x (RowBlock::kQuadLanes).
     if (L::kCount > 1 && key.samplesLod()) first &= ~1;
     for (int px = first; px <= end; px += L::kCount) {
         const typename L::Mask covered = L::lanesBetween(begin - px, end - px);
@@ -43,17 +43,6 @@ template <class L>
     counts.passed += passed;
 }
 
-// The rows of a triangle's part in `area` (FragmentRoutine::Rows).
-template <class L>
-[[gnu::always_inline]] inline void shadeRows(FragmentKey key, const RasterTriangle& t, const PixelRect& area,
-                                             bool coveredWhole, Framebuffer& fb, FragmentCounts& counts) {
-    const FragmentLanes<L> lanes(t.fragment, fb.height());
-    for (int row = area.minY; row <= area.maxY; ++row) {
-        const Span span = coveredWhole ? Span{area.minX, area.maxX} : coveredSpan(t, row, area.minX, area.maxX);
-        if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
-    }
-}
-
 // Lanes on a block of a narrow area: lane i is pixel (dx, dy) = (i % columns, i / columns) from
 // the block's first pixel, columns a power of two; rows go down in memory as y goes up.
 template <class L>
@@ -62,7 +51,7 @@ public:
     using Int = typename L::Int;
     using Mask = typename L::Mask;
 
-    static constexpr bool kRowQuads = false;  // a level of detail per lane
+    static constexpr QuadLanes kQuadLanes = QuadLanes::PerLane;  // a level of detail per lane
 
     // `laneOffsets` holds each lane's dx - dy * (framebuffer width), `rowLanes` the lanes of each
     // row of the block.
@@ -104,6 +93,105 @@ private:
     Int laneOffsets_;
     const Mask* rowLanes_;
 };
+
+// Lanes on two rows of a span walk (shadeRowPairs): the first half of the lanes on a row from
+// `first`, the second half on the row after it, which lies a framebuffer width lower in memory.
+template <class L>
+class TwoRowBlock {
+public:
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+
+    static constexpr QuadLanes kQuadLanes = QuadLanes::TwoRows;
+
+    // `whole`: bit 0 (first row) or 1 (second row) set where the row's lanes all lie in its
+    // span, for plain loads and stores (L::loadHalves). A row of the pair outside the area has
+    // no lanes, and is never touched: its place is formed as an integer, as it may lie before
+    // the buffer.
+    TwoRowBlock(std::size_t first, std::size_t width, unsigned whole) : first_(first), width_(width), whole_(whole) {}
+
+    Int load(const std::uint32_t* buffer, Mask lanes) const {
+        return L::loadHalves(buffer + first_, second(buffer), lanes, whole_);
+    }
+    void store(std::uint32_t* buffer, Mask lanes, Int values) const {
+        L::storeHalves(buffer + first_, second(buffer), lanes, values, whole_);
+    }
+
+private:
+    template <class T>
+    T* second(T* buffer) const {
+        return reinterpret_cast<T*>(reinterpret_cast<std::uintptr_t>(buffer + first_) - sizeof(T) * width_);
+    }
+
+    std::size_t first_, width_;
+    unsigned whole_;
+};
+
+// Under a key that samples a level of detail: the rows of a triangle's part in `area` in pairs
+// from an even row, in blocks of two rows of L::kCount / 2 lanes from an even x, so that a block
+// holds its 2 x 2 quads whole and takes their level of detail from its own lanes
+// (QuadLanes::TwoRows), where a block of one row evaluates the quads' other row.
+template <class L>
+[[gnu::always_inline]] inline void shadeRowPairs(FragmentKey key, const FragmentLanes<L>& lanes,
+                                                 const RasterTriangle& t, const PixelRect& area, bool coveredWhole,
+                                                 Framebuffer& fb, FragmentCounts& counts) {
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+    constexpr int kColumns = L::kCount / 2;
+    const Int dx = L::bitAnd(L::laneIndex(), L::ints(kColumns - 1));
+    const Int dy = L::template shiftRightUnsigned<std::countr_zero(static_cast<unsigned>(kColumns))>(L::laneIndex());
+    const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
+    const Mask rowLanes[2] = {L::lanesBetween(0, kColumns - 1), L::lanesBetween(kColumns, L::kCount - 1)};
+    const Mask allLanes = L::lanesBetween(0, L::kCount - 1);
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
+    const auto spanOf = [&](int row) {
+        if (row < area.minY || row > area.maxY) return Span{1, 0};
+        return coveredWhole ? Span{area.minX, area.maxX} : coveredSpan(t, row, area.minX, area.maxX);
+    };
+    std::uint64_t fragments = 0, passed = 0;
+    for (int top = area.minY & ~1; top <= area.maxY; top += 2) {
+        const Span first = spanOf(top), second = spanOf(top + 1);
+        const int firstCount = std::max(first.end - first.begin + 1, 0);
+        const int secondCount = std::max(second.end - second.begin + 1, 0);
+        if (firstCount + secondCount == 0) continue;
+        fragments += static_cast<std::uint64_t>(firstCount + secondCount);
+        const int begin = (firstCount == 0    ? second.begin
+                           : secondCount == 0 ? first.begin
+                                              : std::min(first.begin, second.begin)) &
+                          ~1;
+        const int end = firstCount == 0 ? second.end : secondCount == 0 ? first.end : std::max(first.end, second.end);
+        const std::size_t rowStart = static_cast<std::size_t>(fb.height() - 1 - top) * fbWidth;
+        const typename L::Float y = L::toFloat(L::add(L::ints(top), dy));
+        // Lane i is covered at the block from x = px where laneBegin_i <= px <= laneEnd_i.
+        const Int laneBegin = L::sub(L::select(rowLanes[0], L::ints(first.begin), L::ints(second.begin)), dx);
+        const Int laneEnd = L::sub(L::select(rowLanes[0], L::ints(first.end), L::ints(second.end)), dx);
+        for (int px = begin; px <= end; px += kColumns) {
+            const Int at = L::ints(px);
+            const Mask covered = L::butNot(L::butNot(allLanes, L::lessThan(at, laneBegin)), L::lessThan(laneEnd, at));
+            const typename L::Float x = L::toFloat(L::add(at, dx));
+            const unsigned whole = (px >= first.begin && px + kColumns - 1 <= first.end ? 1u : 0u) |
+                                   (px >= second.begin && px + kColumns - 1 <= second.end ? 2u : 0u);
+            const TwoRowBlock<L> block(rowStart + static_cast<std::size_t>(px), fbWidth, whole);
+            passed += L::count(shadeBlock<L>(key, lanes, x, y, covered, block, buffers));
+        }
+    }
+    counts.fragments += fragments;
+    counts.passed += passed;
+}
+
+// The rows of a triangle's part in `area` (FragmentRoutine::Rows).
+template <class L>
+[[gnu::always_inline]] inline void shadeRows(FragmentKey key, const RasterTriangle& t, const PixelRect& area,
+                                             bool coveredWhole, Framebuffer& fb, FragmentCounts& counts) {
+    const FragmentLanes<L> lanes(t.fragment, fb.height());
+    if constexpr (L::kTwoRowBlocks) {
+        if (key.samplesLod()) return shadeRowPairs<L>(key, lanes, t, area, coveredWhole, fb, counts);
+    }
+    for (int row = area.minY; row <= area.maxY; ++row) {
+        const Span span = coveredWhole ? Span{area.minX, area.maxX} : coveredSpan(t, row, area.minX, area.maxX);
+        if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
+    }
+}
 
 // Areas up to L::kCount pixels wide, in blocks of L::kCount lanes (kCount x 1 up to 1 x kCount
 // pixels, as narrow as the area), with no span search: most of a dense mesh's triangles are a

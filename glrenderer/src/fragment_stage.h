@@ -89,9 +89,9 @@ public:
         return L::roundToInt(L::mul(clampUnit<L>(z), L::floats(16777215.0f)));
     }
 
-    // The colour words of the lanes `live`, packed R, G, B, A from the low byte. `RowQuads`: the
-    // lanes are consecutive pixels of a row from an even x (RowBlock::kRowQuads).
-    template <bool RowQuads>
+    // The colour words of the lanes `live`, packed R, G, B, A from the low byte. `Quads`: how the
+    // lanes lie on the level of detail's quads (the block's kQuadLanes).
+    template <QuadLanes Quads>
     [[gnu::always_inline]] inline Int rgba(const FragmentKey& key, Float x, Float y, typename L::Mask live) const {
         const bool textured = key.texturesColor();
         if (key.shading == Shading::Flat && key.fog == FogMode::Off && !textured && !key.colorSum) return flat_;
@@ -113,7 +113,7 @@ public:
         }
         if (textured) {
             Float texel[4], c[4] = {r, g, b, a};
-            texture_.template sample<RowQuads>(key, x, y, w, live, texel);
+            texture_.template sample<Quads>(key, x, y, w, live, texel);
             applyTextureEnv<L>(key, texel, texture_.envColor(), key.colorSum ? secondary : nullptr, c);
             r = c[0], g = c[1], b = c[2], a = c[3];
         } else if (key.colorSum) {
@@ -151,7 +151,7 @@ public:
 
     // Under a key that samples a level of detail, the first lane is at an even x (shadeSpan):
     // lanes 2k and 2k + 1 are one row of a 2 x 2 quad.
-    static constexpr bool kRowQuads = L::kCount > 1;
+    static constexpr QuadLanes kQuadLanes = L::kCount > 1 ? QuadLanes::RowPairs : QuadLanes::PerLane;
 
     // `first` may lie a few pixels before the buffer, where only masked-off lanes point.
     RowBlock(std::ptrdiff_t first, bool whole) : first_(first), whole_(whole) {}
@@ -226,7 +226,7 @@ template <class L, class Block>
     // The scissor test was done on the primitive's bounds (drawableRect).
     Int rgba{};
     if (key.alphaFunc != CompareFunc::Always) {  // in bytes, as the reference compares
-        rgba = in.template rgba<Block::kRowQuads>(key, x, y, live);
+        rgba = in.template rgba<Block::kQuadLanes>(key, x, y, live);
         live = L::compare(key.alphaFunc, live, L::shiftRight(rgba, 24), in.alphaRef());
     }
     Int stencil{}, updatedStencil{}, stencilRef{};
@@ -256,7 +256,7 @@ template <class L, class Block>
         block.store(buffers.stencil, stencilLanes, L::bitOr(kept, L::bitAnd(updatedStencil, writeMask)));
     }
     if (L::none(live)) return live;
-    if (key.alphaFunc == CompareFunc::Always) rgba = in.template rgba<Block::kRowQuads>(key, x, y, live);
+    if (key.alphaFunc == CompareFunc::Always) rgba = in.template rgba<Block::kQuadLanes>(key, x, y, live);
     if (key.readsColor()) rgba = combineWithStored<L>(key, in, rgba, block.load(buffers.color, live));
     block.store(buffers.color, live, rgba);
     return live;

@@ -57,6 +57,14 @@ typename L::Float fastLog2(typename L::Float x) {
     return L::add(L::toFloat(exponent), mantissa);
 }
 
+// How a block's lanes lie on the 2 x 2 quads that share a level of detail (the reference's
+// quads: from even internal x and y).
+enum class QuadLanes {
+    PerLane,   // anywhere: each lane evaluates its quad's corners
+    RowPairs,  // one row from an even x: lanes 2k and 2k + 1 are one row of a quad
+    TwoRows,   // from an even x and an even row: the first half of the lanes that row, the second half the next
+};
+
 template <class L>
 class TextureLanes {
 public:
@@ -80,9 +88,9 @@ public:
           floatSampler_(texture_, in.textureBorderColor) {}
 
     // The texel colour of the fragments at (x, y) (w their interpolated w), each channel in
-    // [0, 1], read for the lanes of `live`. With `RowQuads`, the lanes are consecutive pixels of
-    // one row from an even x (RowBlock), and share the level of detail's coordinates.
-    template <bool RowQuads>
+    // [0, 1], read for the lanes of `live`, lying on the quads as `Quads` says: with RowPairs or
+    // TwoRows, lanes share the level of detail's coordinates.
+    template <QuadLanes Quads>
     [[gnu::always_inline]] inline void sample(const FragmentKey& key, Float x, Float y, Float w, Mask live,
                                               Float texel[4]) const {
         Float s, t;
@@ -106,7 +114,9 @@ public:
             fields = sampleLevel(key, key.minFilter, s, t, zero, live);
         } else {
             Float lod;
-            if constexpr (RowQuads) {
+            if constexpr (Quads == QuadLanes::TwoRows) {
+                lod = twoRowQuadLod(key, s, t);
+            } else if constexpr (Quads == QuadLanes::RowPairs) {
                 lod = rowQuadLod(key, x, y, s, t);
             } else {
                 lod = quadLod(key, L::toFloat(L::bitAnd(L::roundToInt(x), L::ints(~1))),
@@ -178,6 +188,16 @@ private:
                                 L::sub(L::duplicateOdd(topT), L::duplicateEven(topT)),
                                 L::sub(L::duplicateEven(otherS), L::duplicateEven(s)),
                                 L::sub(L::duplicateEven(otherT), L::duplicateEven(t)));
+    }
+
+    // quadLod for lanes on two rows of quads (QuadLanes::TwoRows): every coordinate it takes is a
+    // lane's own. The difference down a quad comes out negated in the second row's lanes, which
+    // IEEE subtraction makes exact and the square undoes.
+    [[gnu::always_inline]] inline Float twoRowQuadLod(const FragmentKey& key, Float s, Float t) const {
+        const Float leftS = L::duplicateEven(s), leftT = L::duplicateEven(t);
+        return lodOfDifferences(key, L::firstHalfTwice(L::sub(L::duplicateOdd(s), leftS)),
+                                L::firstHalfTwice(L::sub(L::duplicateOdd(t), leftT)),
+                                L::sub(L::swapHalves(leftS), leftS), L::sub(L::swapHalves(leftT), leftT));
     }
 
     // The level of detail from a quad's coordinate differences across (x) and down (y).

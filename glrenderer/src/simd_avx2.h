@@ -20,6 +20,9 @@ struct Avx2Lanes {
     // No 2D blocks for narrow triangles: they took more instructions than spans on triangles of
     // a pixel or two (callgrind, bench-tiny), and gathers are slow on several AVX2 CPUs.
     static constexpr bool kNarrowBlocks = false;
+    // Keys that sample a level of detail walk rows in pairs, in blocks of 4 x 2 pixels: two
+    // whole 2 x 2 quads (QuadLanes::TwoRows).
+    static constexpr bool kTwoRowBlocks = true;
     static constexpr std::string_view kName = "avx2";
     using Float = __m256;
     using Int = __m256i;
@@ -138,6 +141,21 @@ struct Avx2Lanes {
     // Lane 2k (even) or 2k + 1 (odd) in both lanes 2k and 2k + 1.
     static Float duplicateEven(Float v) { return _mm256_moveldup_ps(v); }
     static Float duplicateOdd(Float v) { return _mm256_movehdup_ps(v); }
+    // Lanes 0-3 from `first`, lanes 4-7 from `second` (a block of two rows), as load and
+    // loadWhole: a plain load for a half whose bit in `whole` (1: first, 2: second) is set.
+    static Int loadHalves(const std::uint32_t* first, const std::uint32_t* second, Mask m, unsigned whole) {
+        const __m128i low = loadHalf(first, _mm256_castsi256_si128(m), whole & 1u);
+        return _mm256_inserti128_si256(_mm256_castsi128_si256(low),
+                                       loadHalf(second, _mm256_extracti128_si256(m, 1), whole & 2u), 1);
+    }
+    // The lanes of `m` of v stored as loadHalves reads them.
+    static void storeHalves(std::uint32_t* first, std::uint32_t* second, Mask m, Int v, unsigned whole) {
+        storeHalf(first, _mm256_castsi256_si128(m), _mm256_castsi256_si128(v), whole & 1u);
+        storeHalf(second, _mm256_extracti128_si256(m, 1), _mm256_extracti128_si256(v, 1), whole & 2u);
+    }
+    // Lanes 0-3 in lanes 0-3 and 4-7; lanes 0-3 and 4-7 exchanged.
+    static Float firstHalfTwice(Float v) { return _mm256_permute2f128_ps(v, v, 0x00); }
+    static Float swapHalves(Float v) { return _mm256_permute2f128_ps(v, v, 0x01); }
     // table[index] per lane, index 0-15: two permutes, where a gather of a 16-entry table is
     // several times slower.
     static Int lookup16(const std::uint32_t* table, Int index) {
@@ -149,6 +167,19 @@ struct Avx2Lanes {
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
         return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), offsets, m, 4);
+    }
+
+private:
+    static __m128i loadHalf(const std::uint32_t* pixels, __m128i m, bool whole) {
+        if (whole) return _mm_loadu_si128(reinterpret_cast<const __m128i*>(pixels));
+        return _mm_maskload_epi32(reinterpret_cast<const int*>(pixels), m);
+    }
+    static void storeHalf(std::uint32_t* pixels, __m128i m, __m128i v, bool whole) {
+        const int lanes = _mm_movemask_ps(_mm_castsi128_ps(m));
+        if (lanes == 0) return;
+        if (!whole) return _mm_maskstore_epi32(reinterpret_cast<int*>(pixels), m, v);
+        auto* at = reinterpret_cast<__m128i*>(pixels);
+        _mm_storeu_si128(at, lanes == 0xF ? v : _mm_blendv_epi8(_mm_loadu_si128(at), v, m));
     }
 };
 

@@ -15,7 +15,8 @@ namespace glrenderer {
 struct Avx512Lanes {
     static constexpr int kCount = 16;
     static constexpr bool kCheapMasks = true;
-    static constexpr bool kNarrowBlocks = true;  // narrow triangles in 2D blocks of lanes
+    static constexpr bool kNarrowBlocks = true;   // narrow triangles in 2D blocks of lanes
+    static constexpr bool kTwoRowBlocks = false;  // keys with a level of detail take the AVX2 paths
     static constexpr std::string_view kName = "avx512";
     using Float = __m512;
     using Int = __m512i;

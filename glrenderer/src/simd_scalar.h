@@ -17,6 +17,7 @@ struct ScalarLanes {
     static constexpr int kCount = 1;
     static constexpr bool kCheapMasks = true;
     static constexpr bool kNarrowBlocks = false;  // a block of one lane is a span
+    static constexpr bool kTwoRowBlocks = false;
     static constexpr std::string_view kName = "scalar";
     using Float = float;
     using Int = std::uint32_t;

@@ -283,8 +283,13 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
     EXPECT_GT(spans, 10000);
 }
 
-TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
-    std::mt19937 random(5);
+namespace {
+
+// Random triangles drawn by the fast exact method of every path against per-pixel coverage.
+// `lodTextures`: every triangle samples a texture with a level of detail (the row pairs of
+// shadeRowPairs), and every fourth is cut to one or two rows from any row, odd or even.
+void checkTrianglesAgainstThePerPixelReference(unsigned seed, bool lodTextures) {
+    std::mt19937 random(seed);
     std::uniform_int_distribution<int> depthFunc(0, 7), coin(0, 1), fourth(0, 3);
     std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1);
     const std::vector<const FragmentPaths*> allPaths = pathsOfThisCpu();
@@ -314,7 +319,7 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         if (fourth(random) == 0) state.fog = randomFog(random);
         if (fourth(random) == 0) state.polygonOffset = {1.5f, -3.0f, true, false, false};
         state.fragmentOps = randomFragmentOps(random);
-        if (fourth(random) == 0) {
+        if (lodTextures || fourth(random) == 0) {
             std::uniform_int_distribution<int> env(1, 5), base(0, 5), mip(0, 2), wrap(0, 2);
             state.texture.env = static_cast<TextureEnv>(env(random));
             state.texture.base = static_cast<TextureBase>(base(random));
@@ -325,12 +330,16 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
             state.texture.wrapT = static_cast<TextureWrap>(wrap(random));
             state.texture.borderColor = {0.3f, 0.6f, 0.9f, 0.5f};  // (for GL_CLAMP: the float sampler)
             state.texture.texture = texture;
+            if (lodTextures && state.texture.mipFilter == MipmapFilter::None) {
+                state.texture.magFilter = static_cast<TextureFilter>(1 - static_cast<int>(state.texture.minFilter));
+            }
         }
         // Every other triangle is drawn within a random rectangle, as a tile draws its part.
         PixelRect rect{0, kWidth - 1, 0, kHeight - 1};
         if (i % 2) {
             const int x0 = column(random), x1 = column(random), y0 = row(random), y1 = row(random);
             rect = {std::min(x0, x1), std::max(x0, x1), std::min(y0, y1), std::max(y0, y1)};
+            if (lodTextures && i % 4 == 1) rect.maxY = std::min(rect.minY + coin(random), kHeight - 1);
         }
         const std::vector<std::uint32_t> color(kWidth * kHeight, 0);
         const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
@@ -351,4 +360,14 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
         }
     }
     EXPECT_GT(drawn, 2000);
+}
+
+}  // namespace
+
+TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
+    checkTrianglesAgainstThePerPixelReference(5, false);
+}
+
+TEST(FragmentPaths, TrianglesWithALevelOfDetailMatchThePerPixelReferenceInEveryPath) {
+    checkTrianglesAgainstThePerPixelReference(6, true);
 }
