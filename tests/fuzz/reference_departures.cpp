@@ -192,6 +192,16 @@ bool drawsDepthWithUnflushedColor(const Call& call, const StreamContext& c) {
     return depth && c.colorSinceFlush;
 }
 
+// GL_POLYGON_OFFSET_POINT or _LINE on while GL_POLYGON_OFFSET_FILL is off: the enable or
+// disable that would lead there (filled faces drawn then take the offset on OSMesa).
+bool offsetsFilledByPointOrLine(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    if (c.insideBegin || (name != "glEnable" && name != "glDisable")) return false;
+    const auto cap = static_cast<GLenum>(call.args[0]);
+    if (name == "glEnable") return (cap == GL_POLYGON_OFFSET_POINT || cap == GL_POLYGON_OFFSET_LINE) && !c.offsetFill;
+    return cap == GL_POLYGON_OFFSET_FILL && (c.offsetPoint || c.offsetLine);
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -263,6 +273,10 @@ constexpr Departure kDepartures[] = {
      "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial "
      "value), GL 1.1's is 1",
      queriesLevelFormat},
+    {"offset-point-line-on-fill",
+     "GL_POLYGON_OFFSET_POINT or _LINE on with _FILL off: OSMesa offsets filled faces too (its rasterizer state ORs "
+     "the three into offset_tri), the spec only under GL_POLYGON_OFFSET_FILL",
+     offsetsFilledByPointOrLine},
     {"texture-priority-as-integer",
      "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
      queriesPriorityAsInteger},
@@ -284,6 +298,15 @@ void StreamContext::update(const Call& call) {
     } else if (name == "glPopAttrib" && !insideBegin && !attribStack.empty()) {
         for (std::size_t i = 0; i < flags.size(); ++i) *flags[i] = *flags[i] || attribStack.back().flags[i];
         attribStack.pop_back();
+        offsetFill = false, offsetLine = offsetPoint = true;
+    } else if ((name == "glEnable" || name == "glDisable") && !insideBegin) {
+        const bool on = name == "glEnable";
+        switch (static_cast<GLenum>(call.args[0])) {
+        case GL_POLYGON_OFFSET_FILL: offsetFill = on; break;
+        case GL_POLYGON_OFFSET_LINE: offsetLine = on; break;
+        case GL_POLYGON_OFFSET_POINT: offsetPoint = on; break;
+        default: break;
+        }
     } else if (name == "glBegin") {
         if (insideBegin || call.args[0] > GL_POLYGON) return;  // an error: nothing begins
         insideBegin = true;

@@ -32,6 +32,9 @@ struct StreamContext {
     bool alphaNotOneSinceFlush = false;  // a glColor4* set an alpha other than 1 since the last glFlush/glFinish
     bool borderedTexture = false;        // a texture image with a border was given
     bool colorSinceFlush = false;        // a glColor came outside glBegin/glEnd since the last glFlush/glFinish
+    // GL_POLYGON_OFFSET_FILL, _LINE and _POINT as the stream left them (after a glPopAttrib: FILL
+    // off and the others on, as nothing is known).
+    bool offsetFill = false, offsetLine = false, offsetPoint = false;
 
     // Each glPushAttrib that pushed: its mask, the flags above as they were then (a pop may
     // bring back their values, so a pop ORs them back in), and whether a call that may change
