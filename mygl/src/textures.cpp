@@ -183,7 +183,8 @@ std::vector<glm::vec4> readFramebuffer(Context::State& s, GLint x, GLint y, GLsi
             if (fx < 0 || fy < 0 || fx >= fb.width() || fy >= fb.height()) continue;
             const std::uint32_t word = fb.color()[static_cast<std::size_t>(fy * fb.width() + fx)];
             glm::vec4& c = rgba[static_cast<std::size_t>(row * width + column)];
-            for (int i = 0; i < 4; ++i) c[i] = static_cast<float>((word >> (8 * i)) & 0xFFu) / 255.0f;
+            // Times 1/255 as the reference reads the framebuffer into floats under a pixel transfer.
+            for (int i = 0; i < 4; ++i) c[i] = static_cast<float>((word >> (8 * i)) & 0xFFu) * (1.0f / 255.0f);
         }
     }
     return rgba;

@@ -2,8 +2,7 @@
 // glCopyTexSubImage take their pixels through the same transfer as glDrawPixels): scale and
 // bias, the GL_MAP_COLOR maps, and colour-index images (index shift and offset, then the
 // I_TO_R/G/B/A maps). Each texture is read back with glGetTexImage and drawn, on MyGL and on
-// OSMesa running the same calls. (Copies under a transfer are not here: OSMesa's differ from
-// MyGL's in several texels, not traced yet.)
+// OSMesa running the same calls.
 #include <gtest/gtest.h>
 
 #include <glad/gl.h>
@@ -259,6 +258,50 @@ TEST(TexturePixelTransfer, ColourIndexIntoEveryInternalFormat) {
     t.mapSize = 16;
     t.indexOffset = 3;
     for (GLint internal : kInternalFormats) expectSame({internal, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, t});
+}
+
+// A drawn gradient copied with glCopyTexImage1D/2D and glCopyTexSubImage1D/2D under the
+// transfer. The 2D copies under a transfer are one row high: OSMesa's copy under a transfer
+// (fallback_copy_texsubimage) reads its rows with a negative stride from the first, so every
+// row but the rectangle's top one comes from memory before its buffer (reference-rules.md).
+std::vector<double> copyAndRead(const Transfer& transfer, GLint internal) {
+    std::vector<double> out;
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, kSize, 0, kSize, -1, 1);
+    glBegin(GL_QUADS);
+    glColor4f(0.0f, 0.1f, 0.9f, 0.3f);
+    glVertex2i(0, 0);
+    glColor4f(1.0f, 0.5f, 0.2f, 1.0f);
+    glVertex2i(kSize, 0);
+    glColor4f(0.3f, 1.0f, 0.0f, 0.6f);
+    glVertex2i(kSize, kSize);
+    glColor4f(0.7f, 0.0f, 0.5f, 0.0f);
+    glVertex2i(0, kSize);
+    glEnd();
+    const bool plain = !transfer.mapColor && transfer.scale[0] == 1.0f && transfer.bias[0] == 0.0f;
+    if (!plain) glCopyTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLenum>(internal), 1, 0, 4, 4, 0);
+    setTransfer(transfer);
+    if (plain) glCopyTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLenum>(internal), 1, 0, 4, 4, 0);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 1, 2, 5, 5, 3, plain ? 2 : 1);
+    out.push_back(glGetError());
+    glCopyTexImage1D(GL_TEXTURE_1D, 0, static_cast<GLenum>(internal), 0, 3, 8, 0);
+    glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 2, 1, 6, 4);
+    out.push_back(glGetError());
+    readTexture(GL_TEXTURE_1D, 8, 1, out);
+    readTexture(GL_TEXTURE_2D, 4, 4, out);
+    return out;
+}
+
+TEST(TexturePixelTransfer, CopiesTakeTheTransfer) {
+    for (const Transfer& t : {Transfer{}, scaleAndBias(), mapped(2, false), mapped(32, true), mapped(64, false)}) {
+        for (GLint internal : {GL_RGBA, GL_RGB, GL_LUMINANCE, GL_ALPHA, GL_INTENSITY}) {
+            const auto results =
+                onBothBackends<std::vector<double>>([&] { return copyAndRead(t, internal); }, kSize, kSize);
+            EXPECT_EQ(firstDifference(results.mygl, results.osmesa), "")
+                << "internal " << internal << " map " << t.mapColor << "/" << t.mapSize;
+        }
+    }
 }
 
 // The errors of colour-index texture images (GL_BITMAP only with GL_COLOR_INDEX), and a list

@@ -226,6 +226,14 @@ bool readsIndexTextureImage(const Call& call, const StreamContext& c) {
     return bytes < alignment && std::fmod(width * bytes, alignment) != 0.0;
 }
 
+// glCopyTexImage2D/glCopyTexSubImage2D of more than one row while an image transfer may be on.
+bool copiesRowsUnderTransfer(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    if (!c.imageTransferEverSet) return false;
+    if (name == "glCopyTexImage2D") return call.args[6] > 1;
+    return name == "glCopyTexSubImage2D" && call.args[7] > 1;
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -305,6 +313,10 @@ constexpr Departure kDepartures[] = {
      "a GL_COLOR_INDEX texture image: OSMesa reads its indices as one run of width x height values (rows unpadded), "
      "truncates float indices before the shift and shifts them as 32-bit unsigned",
      readsIndexTextureImage},
+    {"copy-texture-rows-under-transfer",
+     "glCopyTexImage2D/glCopyTexSubImage2D of several rows under a pixel transfer: OSMesa's fallback copy reads the "
+     "rows with a negative stride from its buffer's first, so all but the top row come from memory before it",
+     copiesRowsUnderTransfer},
     {"texture-priority-as-integer",
      "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
      queriesPriorityAsInteger},
@@ -374,6 +386,8 @@ void StreamContext::update(const Call& call) {
         const bool bias =
             pname == GL_RED_BIAS || pname == GL_GREEN_BIAS || pname == GL_BLUE_BIAS || pname == GL_ALPHA_BIAS;
         colorTransferEverSet |= (scale && v != 1) || (bias && v != 0) || (pname == GL_MAP_COLOR && v != 0);
+        imageTransferEverSet |=
+            colorTransferEverSet || ((pname == GL_INDEX_SHIFT || pname == GL_INDEX_OFFSET) && v != 0);
     } else if (name == "glFlush" || name == "glFinish") {
         alphaNotOneSinceFlush = false;
         colorSinceFlush = false;

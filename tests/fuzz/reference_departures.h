@@ -39,9 +39,11 @@ struct StreamContext {
     bool offsetFill = false, offsetLine = false, offsetPoint = false;
     // The unpack modes a colour-index texture image's rows depend on (nullopt: unknown, after a
     // glPopClientAttrib or a glPixelStoref); whether a glPixelTransfer ever set an index shift
-    // other than 0 (even in a list), or one beyond +-24, or a colour scale, bias or GL_MAP_COLOR.
+    // other than 0 (even in a list), or one beyond +-24, or a colour scale, bias or GL_MAP_COLOR,
+    // or any of these or an index offset (the reference's image transfer).
     std::optional<int> unpackAlignment = 4, unpackRowLength = 0, unpackSkipPixels = 0;
     bool indexShiftEverSet = false, indexShiftEverWide = false, colorTransferEverSet = false;
+    bool imageTransferEverSet = false;
 
     // Each glPushAttrib that pushed: its mask, the flags above as they were then (a pop may
     // bring back their values, so a pop ORs them back in), and whether a call that may change
