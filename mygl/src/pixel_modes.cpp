@@ -16,12 +16,13 @@ glm::vec4 PixelModes::transferColor(glm::vec4 c, const PixelMaps& maps) const {
         c[i] = scaled + bias[i];
     }
     if (mapColor) {
-        // GL_PIXEL_MAP_R_TO_R .. A_TO_A: the clamped component times (size - 1), rounded as the
-        // reference rounds it (IROUND: plus 0.5 in float, truncated; NaN picks entry 0).
+        // GL_PIXEL_MAP_R_TO_R .. A_TO_A: the clamped component times (size - 1), rounded to
+        // nearest even as the reference rounds it (measured: 106.5 picks 106, 103.5 picks 104);
+        // NaN picks entry 0.
         for (int i = 0; i < 4; ++i) {
             const std::vector<float>& map = maps.of(static_cast<GLenum>(GL_PIXEL_MAP_R_TO_R + i));
             const float position = std::clamp(c[i], 0.0f, 1.0f) * static_cast<float>(map.size() - 1);
-            c[i] = map[std::isnan(position) ? 0 : static_cast<std::size_t>(position + 0.5f)];
+            c[i] = map[std::isnan(position) ? 0 : static_cast<std::size_t>(std::nearbyint(position))];
         }
     }
     return c;
