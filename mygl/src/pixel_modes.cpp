@@ -16,11 +16,13 @@ glm::vec4 PixelModes::transferColor(glm::vec4 c, const PixelMaps& maps) const {
         c[i] = scaled + bias[i];
     }
     if (mapColor) {
-        // GL_PIXEL_MAP_R_TO_R .. A_TO_A: the clamped component times (size - 1), rounded.
+        // GL_PIXEL_MAP_R_TO_R .. A_TO_A: the clamped component times (size - 1), rounded to
+        // nearest even as the reference rounds it (measured: 106.5 picks 106, 103.5 picks 104);
+        // NaN picks entry 0.
         for (int i = 0; i < 4; ++i) {
             const std::vector<float>& map = maps.of(static_cast<GLenum>(GL_PIXEL_MAP_R_TO_R + i));
             const float position = std::clamp(c[i], 0.0f, 1.0f) * static_cast<float>(map.size() - 1);
-            c[i] = map[static_cast<std::size_t>(std::lround(position))];
+            c[i] = map[std::isnan(position) ? 0 : static_cast<std::size_t>(std::nearbyint(position))];
         }
     }
     return c;
@@ -38,6 +40,45 @@ glm::vec4 PixelModes::transferDrawnColor(glm::vec4 c, const PixelMaps& maps) con
         const int texel = static_cast<int>(std::clamp(std::floor(c[i] * kTextureSize), 0.0f, kTextureSize - 1.0f));
         const float entry = map[static_cast<std::size_t>(texel) * map.size() / kTextureSize];
         c[i] = static_cast<float>(std::lrint(std::clamp(entry, 0.0f, 1.0f) * 255.0f)) * (1.0f / 255.0f);
+    }
+    return c;
+}
+
+namespace {
+
+// floor(value * 2^shift) + offset modulo 256 (every index map's size divides 256): an integer
+// index exactly, in 64 bits.
+std::uint32_t shiftedIndex(std::int64_t value, int shift, int offset) {
+    std::int64_t shifted = 0;
+    if (shift >= 0) {
+        shifted = shift >= 64 ? 0 : static_cast<std::int64_t>(static_cast<std::uint64_t>(value) << shift);
+    } else {
+        shifted = value >> std::min(-static_cast<std::int64_t>(shift), std::int64_t{63});
+    }
+    return static_cast<std::uint32_t>(static_cast<std::uint64_t>(shifted) + static_cast<std::uint64_t>(offset)) & 0xFFu;
+}
+
+// The same for a float index (its fraction shifts into the integer part).
+std::uint32_t shiftedIndex(float value, int shift, int offset) {
+    if (!std::isfinite(value)) return shiftedIndex(std::int64_t{0}, shift, offset);
+    const double scaled = std::ldexp(static_cast<double>(value), std::clamp(shift, -1100, 1100));
+    const double whole = std::fmod(std::floor(scaled), 256.0) + static_cast<double>(offset & 0xFF);
+    return static_cast<std::uint32_t>(std::fmod(whole + 512.0, 256.0));
+}
+
+}  // namespace
+
+glm::vec4 PixelModes::indexToColor(std::uint32_t value, GLenum type, const PixelMaps& maps) const {
+    const bool isSigned = type == GL_BYTE || type == GL_SHORT || type == GL_INT;
+    const std::uint32_t index =
+        type == GL_FLOAT ? shiftedIndex(std::bit_cast<float>(value), indexShift, indexOffset)
+                         : shiftedIndex(isSigned ? std::int64_t{static_cast<std::int32_t>(value)} : std::int64_t{value},
+                                        indexShift, indexOffset);
+    glm::vec4 c;
+    for (int i = 0; i < 4; ++i) {
+        const std::vector<float>& map = maps.of(static_cast<GLenum>(GL_PIXEL_MAP_I_TO_R + i));
+        const float entry = map[index & static_cast<std::uint32_t>(map.size() - 1)];
+        c[i] = std::isnan(entry) ? 0.0f : entry;  // (a NaN given to glPixelMap)
     }
     return c;
 }

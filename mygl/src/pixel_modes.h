@@ -3,6 +3,7 @@
 // offset and map switches and glPixelZoom's factors; glPixelMap's tables (in no attribute
 // group); the transfer applied to colours and depths as the reference applies it.
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -46,6 +47,11 @@ struct PixelModes {
     glm::vec4 transferDrawnColor(glm::vec4 c, const PixelMaps& maps) const;
     // Scale and bias, clamped to [0, 1].
     float transferDepth(float z) const;
+    // A colour index on its way to an RGBA image (glTexImage, GL 1.1 3.6.3): the index shift as
+    // a fixed-point shift and the offset added, then its integer part (floor) masked by each
+    // I_TO_R .. I_TO_A map's size - 1 picks the map's entry. `value` holds the index of `type`
+    // as extractValues keeps it (floats as their bits; NaN and infinities taken as 0).
+    glm::vec4 indexToColor(std::uint32_t value, GLenum type, const PixelMaps& maps) const;
 };
 
 // The value of a pixel-mode query (glGet of GL_MAP_COLOR, GL_RED_SCALE, GL_PIXEL_MAP_*_SIZE,

@@ -51,7 +51,7 @@ glm::vec4 texelColor(std::uint32_t word, glrenderer::TextureBase base) {
     case TextureBase::Alpha: return {0, 0, 0, channel(3)};
     case TextureBase::Luminance: return {channel(0), 0, 0, 1};
     case TextureBase::LuminanceAlpha: return {channel(0), 0, 0, channel(3)};
-    case TextureBase::Intensity: return {channel(0), 0, 0, channel(0)};
+    case TextureBase::Intensity: return {channel(0), 0, 0, 1};
     case TextureBase::Rgb: return {channel(0), channel(1), channel(2), 1};
     case TextureBase::Rgba: return {channel(0), channel(1), channel(2), channel(3)};
     }

@@ -39,6 +39,27 @@ float drawnComponent(const std::uint8_t* p, GLenum type, bool swapBytes) {
     return component(p, type, swapBytes);
 }
 
+// As component(), as the reference's conversion to RGBA floats before a pixel transfer makes
+// it (_mesa_unorm_to_float, _mesa_snorm_to_float: times the float reciprocal of the largest
+// value, which for 32 bits is 2^32 or 2^31 as a float).
+float transferComponent(const std::uint8_t* p, GLenum type, bool swapBytes) {
+    const auto signedNorm = [](std::int32_t v, std::int32_t max) {
+        return v <= -max ? -1.0f : static_cast<float>(v) * (1.0f / static_cast<float>(max));
+    };
+    switch (type) {
+    case GL_UNSIGNED_BYTE: return static_cast<float>(*p) * (1.0f / 255.0f);
+    case GL_BYTE: return signedNorm(static_cast<std::int8_t>(*p), 127);
+    case GL_UNSIGNED_SHORT:
+        return static_cast<float>(readClientComponent<std::uint16_t>(p, swapBytes)) * (1.0f / 65535.0f);
+    case GL_SHORT: return signedNorm(readClientComponent<std::int16_t>(p, swapBytes), 32767);
+    case GL_UNSIGNED_INT:
+        return static_cast<float>(readClientComponent<std::uint32_t>(p, swapBytes)) *
+               (1.0f / static_cast<float>(4294967295u));
+    case GL_INT: return signedNorm(readClientComponent<std::int32_t>(p, swapBytes), 2147483647);
+    default: return component(p, type, swapBytes);
+    }
+}
+
 // One pixel's components (in the client's order) as RGBA.
 glm::vec4 toRgba(const float* c, GLenum format) {
     switch (format) {
@@ -81,6 +102,11 @@ std::vector<glm::vec4> unpackWith(const void* pixels, int width, int height, GLe
 std::vector<glm::vec4> unpackImage(const void* pixels, int width, int height, GLenum format, GLenum type,
                                    const PixelStoreModes& modes) {
     return unpackWith<component>(pixels, width, height, format, type, modes);
+}
+
+std::vector<glm::vec4> unpackImageForTransfer(const void* pixels, int width, int height, GLenum format, GLenum type,
+                                              const PixelStoreModes& modes) {
+    return unpackWith<transferComponent>(pixels, width, height, format, type, modes);
 }
 
 std::vector<glm::vec4> unpackDrawnImage(const void* pixels, int width, int height, GLenum format, GLenum type,

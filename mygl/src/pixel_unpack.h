@@ -31,6 +31,11 @@ T readClientComponent(const std::uint8_t* p, bool swapBytes) {
 std::vector<glm::vec4> unpackImage(const void* pixels, int width, int height, GLenum format, GLenum type,
                                    const PixelStoreModes& modes);
 
+// unpackImage as the reference converts components before a pixel transfer (scale, bias, maps)
+// on a texture image: times the float reciprocal of the type's largest value.
+std::vector<glm::vec4> unpackImageForTransfer(const void* pixels, int width, int height, GLenum format, GLenum type,
+                                              const PixelStoreModes& modes);
+
 // unpackImage for glDrawPixels: the reference keeps 32-bit integer components in a 16-bit
 // texture before drawing them, so they are narrowed to 16 bits first.
 std::vector<glm::vec4> unpackDrawnImage(const void* pixels, int width, int height, GLenum format, GLenum type,

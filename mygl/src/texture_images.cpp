@@ -4,6 +4,9 @@
 #include <bit>
 #include <cmath>
 
+#include "pixel_unpack.h"
+#include "pixel_values.h"
+
 namespace mygl {
 
 using glrenderer::TextureBase;
@@ -75,6 +78,62 @@ std::uint32_t texel(const glm::vec4& c, TextureBase base) {
 }
 
 }  // namespace
+
+namespace {
+
+// A GL_BITMAP index image's bits as GL 1.1 lays them out: each row from its own byte, rows
+// padded to the alignment (not the one run of bits glDrawPixels' reference reads).
+std::vector<std::uint32_t> bitmapIndices(const void* pixels, int width, int height, const PixelStoreModes& modes) {
+    std::vector<std::uint32_t> out(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    const ClientLayout layout = clientLayout(width, GL_COLOR_INDEX, GL_BITMAP, modes);
+    const auto* image = static_cast<const std::uint8_t*>(pixels);
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t* row = image + layout.firstByte + static_cast<std::size_t>(y) * layout.rowStride;
+        for (int x = 0; x < width; ++x) {
+            const std::size_t bit = layout.firstBit + static_cast<std::size_t>(x);
+            const unsigned inByte = bit % 8;
+            out[static_cast<std::size_t>(y * width + x)] =
+                (row[bit / 8] >> (modes.lsbFirst ? inByte : 7 - inByte)) & 1u;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+UnpackedImage unpackTextureImage(const void* pixels, int width, int height, GLenum format, GLenum type,
+                                 const PixelStoreModes& modes, bool forTransfer) {
+    UnpackedImage image;
+    if (format != GL_COLOR_INDEX || !pixels) {
+        image.rgba = unpackImage(pixels, width, height, format, type, modes);
+        image.transfers = pixels != nullptr;
+        if (forTransfer && pixels)
+            image.rgbaForTransfer = unpackImageForTransfer(pixels, width, height, format, type, modes);
+        return image;
+    }
+    image.indexType = type;
+    if (type == GL_BITMAP) {
+        image.indices = bitmapIndices(pixels, width, height, modes);
+    } else {
+        extractValues(pixels, width, height, type, modes, image.indices);
+    }
+    return image;
+}
+
+std::vector<glm::vec4> transferredImage(const UnpackedImage& image, const PixelModes& modes, const PixelMaps& maps) {
+    if (image.indexType != 0) {
+        std::vector<glm::vec4> rgba(image.indices.size());
+        std::transform(image.indices.begin(), image.indices.end(), rgba.begin(),
+                       [&](std::uint32_t index) { return modes.indexToColor(index, image.indexType, maps); });
+        return rgba;
+    }
+    if (!image.transfers || !modes.transfersColor()) return image.rgba;
+    const std::vector<glm::vec4>& source = image.rgbaForTransfer.empty() ? image.rgba : image.rgbaForTransfer;
+    std::vector<glm::vec4> rgba(source.size());
+    std::transform(source.begin(), source.end(), rgba.begin(),
+                   [&](const glm::vec4& c) { return modes.transferColor(c, maps); });
+    return rgba;
+}
 
 std::vector<std::uint32_t> textureTexels(const std::vector<glm::vec4>& rgba, TextureBase base) {
     std::vector<std::uint32_t> texels(rgba.size());

@@ -6,7 +6,6 @@
 #include <cstring>
 
 #include "compiled.h"
-#include "pixel_unpack.h"
 #include "texture_images.h"
 #include "textures.h"
 
@@ -19,14 +18,18 @@ bool isTarget(GLenum target, int dims) {
 }
 bool isProxy(GLenum target) { return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D; }
 
-// A colour image for glTexImage or glTexSubImage: client formats other than colour ones have
+// A colour or colour-index image for glTexImage or glTexSubImage: stencil and depth images have
 // no place in a colour texture.
 GLenum pixelFormatError(GLenum format, GLenum type) {
     if (!isPixelFormat(format) || !isPixelType(type)) return GL_INVALID_ENUM;
     if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return GL_INVALID_ENUM;
-    if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT)
-        return GL_INVALID_OPERATION;
+    if (format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT) return GL_INVALID_OPERATION;
     return GL_NO_ERROR;
+}
+
+// The image's colours after the pixel transfer as it is now.
+std::vector<glm::vec4> transferred(const Context::State& s, const UnpackedImage& image) {
+    return transferredImage(image, s.pixelModes, s.pixelMaps);
 }
 
 // The level's image from unpacked colours (border stripped).
@@ -82,20 +85,22 @@ void texImage(GLenum target, GLint level, GLint internalFormat, GLsizei width, G
 }
 
 // glTexImage1D/2D: checks, then the pixels unpacked now (as the reference does when it compiles
-// the call into a list).
+// the call into a list); the pixel transfer when the call runs.
 void texImageCall(GLenum target, int dims, GLint level, GLint internalFormat, GLsizei width, GLsizei height,
                   GLint border, GLenum format, GLenum type, const void* pixels) {
     Context::State* s = currentState();
     if (!s) return;
     if (!s->lists.compiling() && s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);
     const GLenum error = texImageError(target, dims, level, internalFormat, width, height, border, format, type);
-    std::vector<glm::vec4> rgba;
-    if (error == GL_NO_ERROR && !isProxy(target)) rgba = unpackImage(pixels, width, height, format, type, s->unpack);
-    auto call = [=, rgba = std::move(rgba)] {
+    UnpackedImage image;
+    if (error == GL_NO_ERROR && !isProxy(target))
+        image = unpackTextureImage(pixels, width, height, format, type, s->unpack,
+                                   s->lists.compiling() || s->pixelModes.transfersColor());
+    auto call = [=, image = std::move(image)] {
         Context::State* now = stateOutsideBeginEnd();
         if (!now) return;
         if (error != GL_NO_ERROR) return setError(*now, error);
-        texImage(target, level, internalFormat, width, height, border, rgba);
+        texImage(target, level, internalFormat, width, height, border, transferred(*now, image));
     };
     if (s->lists.compiling()) {
         s->lists.add(call);
@@ -146,16 +151,17 @@ void texSubImageCall(GLenum target, int dims, GLint level, GLint x, GLint y, GLs
     const bool compiling = s->lists.compiling();
     if (!compiling && s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);
     GLenum error = compiling ? GL_NO_ERROR : texSubImageError(*s, target, dims, level, format, type);
-    std::vector<glm::vec4> rgba;
+    UnpackedImage image;
     if (error == GL_NO_ERROR && isPixelFormat(format) && isPixelType(type) && width > 0 && height > 0) {
-        rgba = unpackImage(pixels, width, height, format, type, s->unpack);
+        image = unpackTextureImage(pixels, width, height, format, type, s->unpack,
+                                   compiling || s->pixelModes.transfersColor());
     }
-    auto call = [=, rgba = std::move(rgba)] {
+    auto call = [=, image = std::move(image)] {
         Context::State* now = stateOutsideBeginEnd();
         if (!now) return;
         const GLenum found = texSubImageError(*now, target, dims, level, format, type);
         if (found != GL_NO_ERROR) return setError(*now, found);
-        texSubImage(target, dims, level, x, y, width, height, rgba);
+        texSubImage(target, dims, level, x, y, width, height, transferred(*now, image));
     };
     if (compiling) {
         s->lists.add(call);
@@ -177,7 +183,8 @@ std::vector<glm::vec4> readFramebuffer(Context::State& s, GLint x, GLint y, GLsi
             if (fx < 0 || fy < 0 || fx >= fb.width() || fy >= fb.height()) continue;
             const std::uint32_t word = fb.color()[static_cast<std::size_t>(fy * fb.width() + fx)];
             glm::vec4& c = rgba[static_cast<std::size_t>(row * width + column)];
-            for (int i = 0; i < 4; ++i) c[i] = static_cast<float>((word >> (8 * i)) & 0xFFu) / 255.0f;
+            // Times 1/255 as the reference reads the framebuffer into floats under a pixel transfer.
+            for (int i = 0; i < 4; ++i) c[i] = static_cast<float>((word >> (8 * i)) & 0xFFu) * (1.0f / 255.0f);
         }
     }
     return rgba;
@@ -194,7 +201,7 @@ void copyTexImage(GLenum target, int dims, GLint level, GLenum internalFormat, G
     // 1, 2, 3 and 4 are not internal formats here.
     if (internalFormat >= 1 && internalFormat <= 4) return setError(*s, GL_INVALID_VALUE);
     texImage(target, level, static_cast<GLint>(internalFormat), width, height, border,
-             readFramebuffer(*s, x, y, width, height));
+             transferred(*s, UnpackedImage{readFramebuffer(*s, x, y, width, height), {}, {}, 0, true}));
 }
 
 void copyTexSubImage(GLenum target, int dims, GLint level, GLint xOffset, GLint yOffset, GLint x, GLint y,
@@ -204,7 +211,8 @@ void copyTexSubImage(GLenum target, int dims, GLint level, GLint xOffset, GLint 
     const GLenum error = texSubImageError(*s, target, dims, level, GL_RGBA, GL_FLOAT);
     if (error != GL_NO_ERROR) return setError(*s, error);
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
-    texSubImage(target, dims, level, xOffset, yOffset, width, height, readFramebuffer(*s, x, y, width, height));
+    texSubImage(target, dims, level, xOffset, yOffset, width, height,
+                transferred(*s, UnpackedImage{readFramebuffer(*s, x, y, width, height), {}, {}, 0, true}));
 }
 
 void genTextures(GLsizei n, GLuint* names) {

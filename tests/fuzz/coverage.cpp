@@ -53,6 +53,15 @@ void classify(const Call& call, const StreamContext& context, std::map<std::stri
     if (name == "glEnd" && context.insideBegin && context.verticesInBlock >= 10000) ++counts["10k+ vertex block"];
 }
 
+// The texture-image paths one call takes: a colour-index image, an image after a colour
+// transfer (scale, bias, GL_MAP_COLOR) was set.
+void classifyTextureImage(const Call& call, const StreamContext& context, std::map<std::string, std::size_t>& counts) {
+    std::size_t widthAt = 0, formatAt = 0;
+    if (!textureImageArguments(functionName(call), widthAt, formatAt)) return;
+    if (static_cast<GLenum>(call.args[formatAt]) == GL_COLOR_INDEX) ++counts["colour index"];
+    if (context.colorTransferEverSet) ++counts["after a colour transfer"];
+}
+
 }  // namespace
 
 void Coverage::add(const Stream& stream, const Outcome& reference) {
@@ -60,6 +69,7 @@ void Coverage::add(const Stream& stream, const Outcome& reference) {
     for (const Call& call : stream.calls) {
         ++calls_[std::string(functionName(call))];
         classify(call, context, badInput_);
+        classifyTextureImage(call, context, textureImages_);
         context.update(call);
     }
     for (const Answer& a : reference.answers) {
@@ -82,6 +92,8 @@ std::string Coverage::summary() const {
     }
     text << (allCalled ? "" : ")") << "\n  bad input (calls):";
     for (const auto& [what, n] : badInput_) text << " " << what << " " << n << ",";
+    text << "\n  texture images (glTexImage, glTexSubImage):";
+    for (const auto& [what, n] : textureImages_) text << " " << what << " " << n << ",";
     text << "\n  errors the reference raised:";
     for (const auto& [e, n] : errors_) text << " " << enumName(e) << " " << n << ",";
     text << "\n";

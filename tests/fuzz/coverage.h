@@ -1,5 +1,6 @@
 #pragma once
-// What a run of streams exercised: entry points, bad-input classes, errors the reference raised.
+// What a run of streams exercised: entry points, bad-input classes, texture-image paths, errors
+// the reference raised.
 #include <map>
 #include <string>
 
@@ -15,6 +16,7 @@ public:
 private:
     std::map<std::string, std::size_t> calls_;
     std::map<std::string, std::size_t> badInput_;
+    std::map<std::string, std::size_t> textureImages_;
     std::map<unsigned, std::size_t> errors_;
 };
 

@@ -55,8 +55,7 @@ void PixelFeatureCalls::enableOrDisable(GLenum cap, double enableRate) {
 }
 
 std::pair<GLenum, GLenum> PixelFeatureCalls::imageFormatType(bool texture) {
-    // Not GL_COLOR_INDEX for textures: MyGL does not take colour-index texture images yet
-    // (GL_INVALID_OPERATION; GL 1.1 and the reference map them through GL_PIXEL_MAP_I_TO_*).
+    // GL_COLOR_INDEX for textures comes from indexImages_ (textureImageCall).
     const GLenum format =
         texture ? oneOf({GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA, GL_RED, GL_GREEN, GL_BLUE})
                 : oneOf({GL_RGBA, GL_RGB, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA, GL_RED, GL_GREEN, GL_BLUE,
@@ -129,7 +128,12 @@ void PixelFeatureCalls::textureImageCall() {
     const bool twoD = random_.chance(0.75);
     const GLenum target = twoD ? oneOf({GL_TEXTURE_2D}) : oneOf({GL_TEXTURE_1D});
     const double level = random_.chance(0.7) ? 0 : static_cast<double>(random_.integer(badness_ > 0 ? -1 : 0, 4));
-    const auto [format, type] = imageFormatType(true);
+    auto [format, type] = imageFormatType(true);
+    if (indexImages_.chance(0.25)) {
+        format = GL_COLOR_INDEX;
+        type = indexImages_.pick<GLenum>({GL_UNSIGNED_BYTE, GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                                          GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_BITMAP});
+    }
     const bool sub = random_.chance(0.3);
     if (sub) {
         const double w = size(16), h = size(16);

@@ -17,6 +17,7 @@ public:
     // `badness`: the rate of bad values; `invalidEnumRate`: of invalid enums (the stream's own).
     PixelFeatureCalls(std::uint64_t seed, int width, int height, double badness, double invalidEnumRate)
         : random_(seed ^ 0x7E27u),
+          indexImages_(seed ^ 0x1DE7u),
           width_(width),
           height_(height),
           badness_(badness),
@@ -49,6 +50,7 @@ private:
     std::pair<GLenum, GLenum> imageFormatType(bool texture);
 
     RandomSource random_;
+    RandomSource indexImages_;  // which texture images are colour-index ones (its own, so the rest stays as it was)
     int width_, height_;
     double badness_, invalidEnumRate_;
     const std::function<void(Call)>* emit_ = nullptr;

@@ -192,6 +192,48 @@ bool drawsDepthWithUnflushedColor(const Call& call, const StreamContext& c) {
     return depth && c.colorSinceFlush;
 }
 
+// GL_POLYGON_OFFSET_POINT or _LINE on while GL_POLYGON_OFFSET_FILL is off: the enable or
+// disable that would lead there (filled faces drawn then take the offset on OSMesa).
+bool offsetsFilledByPointOrLine(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    if (c.insideBegin || (name != "glEnable" && name != "glDisable")) return false;
+    const auto cap = static_cast<GLenum>(call.args[0]);
+    if (name == "glEnable") return (cap == GL_POLYGON_OFFSET_POINT || cap == GL_POLYGON_OFFSET_LINE) && !c.offsetFill;
+    return cap == GL_POLYGON_OFFSET_FILL && (c.offsetPoint || c.offsetLine);
+}
+
+int typeBytes(GLenum type) {
+    return type == GL_UNSIGNED_BYTE || type == GL_BYTE ? 1 : type == GL_UNSIGNED_SHORT || type == GL_SHORT ? 2 : 4;
+}
+
+// A GL_COLOR_INDEX texture image whose indices OSMesa reads otherwise than GL: as one run of
+// width x height values (rows padded, a row length other than the width, GL_BITMAP rows not of
+// whole aligned bytes or skipped pixels), a float index truncated before a shift (or a negative
+// fraction: odd data seeds give any floats), a signed index shifted right by more than 24.
+bool readsIndexTextureImage(const Call& call, const StreamContext& c) {
+    std::size_t widthAt = 0, formatAt = 0;
+    if (!textureImageArguments(functionName(call), widthAt, formatAt)) return false;
+    if (static_cast<GLenum>(call.args[formatAt]) != GL_COLOR_INDEX) return false;
+    const auto type = static_cast<GLenum>(call.args[formatAt + 1]);
+    if (c.indexShiftEverWide) return true;
+    if (type == GL_FLOAT && (c.indexShiftEverSet || std::fmod(call.args.back(), 2.0) != 0.0)) return true;
+    if (!c.unpackAlignment || !c.unpackRowLength || !c.unpackSkipPixels) return true;
+    const double width = call.args[widthAt];
+    const int alignment = *c.unpackAlignment;
+    if (*c.unpackRowLength != 0 && *c.unpackRowLength != width) return true;
+    if (type == GL_BITMAP) return *c.unpackSkipPixels != 0 || std::fmod(width, 8.0 * alignment) != 0.0;
+    const int bytes = typeBytes(type);
+    return bytes < alignment && std::fmod(width * bytes, alignment) != 0.0;
+}
+
+// glCopyTexImage2D/glCopyTexSubImage2D of more than one row while an image transfer may be on.
+bool copiesRowsUnderTransfer(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    if (!c.imageTransferEverSet) return false;
+    if (name == "glCopyTexImage2D") return call.args[6] > 1;
+    return name == "glCopyTexSubImage2D" && call.args[7] > 1;
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -263,6 +305,18 @@ constexpr Departure kDepartures[] = {
      "glGetTexLevelParameter(GL_TEXTURE_COMPONENTS) of a level with no image: OSMesa answers GL_RGBA (GL 3's initial "
      "value), GL 1.1's is 1",
      queriesLevelFormat},
+    {"offset-point-line-on-fill",
+     "GL_POLYGON_OFFSET_POINT or _LINE on with _FILL off: OSMesa sends filled faces through the draw module, whose "
+     "offset stage offsets every triangle; the spec offsets them only under GL_POLYGON_OFFSET_FILL",
+     offsetsFilledByPointOrLine},
+    {"index-texture-image",
+     "a GL_COLOR_INDEX texture image: OSMesa reads its indices as one run of width x height values (rows unpadded), "
+     "truncates float indices before the shift and shifts them as 32-bit unsigned",
+     readsIndexTextureImage},
+    {"copy-texture-rows-under-transfer",
+     "glCopyTexImage2D/glCopyTexSubImage2D of several rows under a pixel transfer: OSMesa's fallback copy reads the "
+     "rows with a negative stride from its buffer's first, so all but the top row come from memory before it",
+     copiesRowsUnderTransfer},
     {"texture-priority-as-integer",
      "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
      queriesPriorityAsInteger},
@@ -284,6 +338,15 @@ void StreamContext::update(const Call& call) {
     } else if (name == "glPopAttrib" && !insideBegin && !attribStack.empty()) {
         for (std::size_t i = 0; i < flags.size(); ++i) *flags[i] = *flags[i] || attribStack.back().flags[i];
         attribStack.pop_back();
+        offsetFill = false, offsetLine = offsetPoint = true;
+    } else if ((name == "glEnable" || name == "glDisable") && !insideBegin) {
+        const bool on = name == "glEnable";
+        switch (static_cast<GLenum>(call.args[0])) {
+        case GL_POLYGON_OFFSET_FILL: offsetFill = on; break;
+        case GL_POLYGON_OFFSET_LINE: offsetLine = on; break;
+        case GL_POLYGON_OFFSET_POINT: offsetPoint = on; break;
+        default: break;
+        }
     } else if (name == "glBegin") {
         if (insideBegin || call.args[0] > GL_POLYGON) return;  // an error: nothing begins
         insideBegin = true;
@@ -294,6 +357,37 @@ void StreamContext::update(const Call& call) {
         insideBegin = false;
     } else if (double height = 0; definesBorderedTexture(name, call.args, height)) {
         borderedTexture = true;
+    } else if (name == "glPixelStorei" || name == "glPixelStoref") {
+        std::optional<int>* unpackMode = nullptr;
+        switch (static_cast<GLenum>(call.args[0])) {
+        case GL_UNPACK_ALIGNMENT: unpackMode = &unpackAlignment; break;
+        case GL_UNPACK_ROW_LENGTH: unpackMode = &unpackRowLength; break;
+        case GL_UNPACK_SKIP_PIXELS: unpackMode = &unpackSkipPixels; break;
+        default: return;
+        }
+        const double v = call.args[1];
+        const bool valid = unpackMode == &unpackAlignment ? (v == 1 || v == 2 || v == 4 || v == 8) : v >= 0;
+        if (name == "glPixelStoref" || insideBegin) {
+            *unpackMode = std::nullopt;  // a float rounds (or a call inside glBegin fails): taken as unknown
+        } else if (valid && v < kIntLimit) {
+            *unpackMode = static_cast<int>(v);
+        }
+    } else if (name == "glPopClientAttrib") {
+        unpackAlignment = unpackRowLength = unpackSkipPixels = std::nullopt;
+    } else if (name == "glPixelTransferi" || name == "glPixelTransferf") {
+        const auto pname = static_cast<GLenum>(call.args[0]);
+        const double v = call.args[1];
+        if (pname == GL_INDEX_SHIFT) {
+            indexShiftEverSet |= v != 0;
+            indexShiftEverWide |= !(std::abs(v) <= 24);
+        }
+        const bool scale =
+            pname == GL_RED_SCALE || pname == GL_GREEN_SCALE || pname == GL_BLUE_SCALE || pname == GL_ALPHA_SCALE;
+        const bool bias =
+            pname == GL_RED_BIAS || pname == GL_GREEN_BIAS || pname == GL_BLUE_BIAS || pname == GL_ALPHA_BIAS;
+        colorTransferEverSet |= (scale && v != 1) || (bias && v != 0) || (pname == GL_MAP_COLOR && v != 0);
+        imageTransferEverSet |=
+            colorTransferEverSet || ((pname == GL_INDEX_SHIFT || pname == GL_INDEX_OFFSET) && v != 0);
     } else if (name == "glFlush" || name == "glFinish") {
         alphaNotOneSinceFlush = false;
         colorSinceFlush = false;
@@ -318,6 +412,14 @@ void StreamContext::update(const Call& call) {
         inBlock.vertexSize = components(name, "glVertex");
         atFirstVertex = inBlock;
     }
+}
+
+bool textureImageArguments(std::string_view name, std::size_t& width, std::size_t& format) {
+    if (name == "glTexImage1D") return width = 3, format = 5, true;
+    if (name == "glTexImage2D") return width = 3, format = 6, true;
+    if (name == "glTexSubImage1D") return width = 3, format = 4, true;
+    if (name == "glTexSubImage2D") return width = 4, format = 6, true;
+    return false;
 }
 
 std::span<const Departure> referenceDepartures() { return kDepartures; }

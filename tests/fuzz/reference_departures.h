@@ -5,7 +5,9 @@
 #include <glad/gl.h>
 
 #include <array>
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "gl_call.h"
@@ -32,6 +34,16 @@ struct StreamContext {
     bool alphaNotOneSinceFlush = false;  // a glColor4* set an alpha other than 1 since the last glFlush/glFinish
     bool borderedTexture = false;        // a texture image with a border was given
     bool colorSinceFlush = false;        // a glColor came outside glBegin/glEnd since the last glFlush/glFinish
+    // GL_POLYGON_OFFSET_FILL, _LINE and _POINT as the stream left them (after a glPopAttrib: FILL
+    // off and the others on, as nothing is known).
+    bool offsetFill = false, offsetLine = false, offsetPoint = false;
+    // The unpack modes a colour-index texture image's rows depend on (nullopt: unknown, after a
+    // glPopClientAttrib or a glPixelStoref); whether a glPixelTransfer ever set an index shift
+    // other than 0 (even in a list), or one beyond +-24, or a colour scale, bias or GL_MAP_COLOR,
+    // or any of these or an index offset (the reference's image transfer).
+    std::optional<int> unpackAlignment = 4, unpackRowLength = 0, unpackSkipPixels = 0;
+    bool indexShiftEverSet = false, indexShiftEverWide = false, colorTransferEverSet = false;
+    bool imageTransferEverSet = false;
 
     // Each glPushAttrib that pushed: its mask, the flags above as they were then (a pop may
     // bring back their values, so a pop ORs them back in), and whether a call that may change
@@ -53,6 +65,10 @@ struct Departure {
 };
 
 std::span<const Departure> referenceDepartures();
+
+// For glTexImage1D/2D and glTexSubImage1D/2D: the argument positions of the width and the
+// format (the type follows it); false for other calls.
+bool textureImageArguments(std::string_view name, std::size_t& width, std::size_t& format);
 
 // The rule `call` would run into after `context`, or nullptr.
 const Departure* departureFor(const Call& call, const StreamContext& context);
