@@ -9,6 +9,7 @@
 
 #include "fragment_inputs.h"
 #include "glrenderer/framebuffer.h"
+#include "glrenderer/invariant.h"
 #include "pixel_rect.h"
 
 namespace glrenderer {
@@ -38,9 +39,13 @@ public:
     template <class T, class... Args>
     T& make(Args&&... args) {
         static_assert(std::is_trivially_destructible_v<T>);
+        static_assert(sizeof(T) <= kMaxRecordBytes && alignof(T) <= kMaxRecordAlignment);
         return *new (allocate(sizeof(T), alignof(T))) T(std::forward<Args>(args)...);
     }
     virtual void queue(const TiledPrimitive& primitive) = 0;
+
+    // The largest record, and alignment, the memory behind a queue must take.
+    static constexpr std::size_t kMaxRecordBytes = 64 * 1024, kMaxRecordAlignment = 64;
 
 protected:
     ~PrimitiveQueue() = default;
@@ -52,6 +57,7 @@ protected:
 class RecordPool {
 public:
     void* allocate(std::size_t bytes, std::size_t alignment) {
+        MYGL_INVARIANT(bytes <= kBlockBytes && alignment <= PrimitiveQueue::kMaxRecordAlignment);
         std::size_t offset = (used_ + alignment - 1) & ~(alignment - 1);
         if (block_ == blocks_.size() || offset + bytes > kBlockBytes) {
             if (block_ < blocks_.size()) ++block_;
@@ -64,9 +70,9 @@ public:
     void reset() { block_ = 0, used_ = 0; }
 
 private:
-    static constexpr std::size_t kBlockBytes = 64 * 1024;  // far more than any record
+    static constexpr std::size_t kBlockBytes = PrimitiveQueue::kMaxRecordBytes;  // far more than any record
     struct Block {
-        alignas(64) std::byte bytes[kBlockBytes];
+        alignas(PrimitiveQueue::kMaxRecordAlignment) std::byte bytes[kBlockBytes];
     };
     std::vector<std::unique_ptr<Block>> blocks_;
     std::size_t block_ = 0, used_ = 0;
