@@ -232,7 +232,9 @@ void BatchSetup::setUpSidedTriangle(const Call& call, const std::array<const Win
 void BatchSetup::setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1,
                                const WindowVertex& v2, const glm::vec4& flatColor, TriangleTarget& target,
                                Stats& stats) {
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(*batch.state, batch.methods), *batch.state);
+    FragmentKey key = triangleFragmentKey(*batch.state, batch.methods);
+    key.depthOffset = false;
+    const FragmentChoice fragments(bestFragmentPaths(), key, *batch.state);
     const PixelRect drawable =
         drawableRect(batch.state->fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
     setUpTriangle(Call{batch, {}, {}, &target, stats, &fragments, false, nullptr, nullptr, drawable}, v0, v1, v2,

@@ -51,7 +51,8 @@ public:
     Batch stage(const SubmittedBatch& batch);
     std::span<const Outcode> outcodes() const { return vertexStage_.outcodes(); }
     std::span<const WindowVertex> windowVertices() const { return vertexStage_.windowVertices(); }
-    // The setup of one triangle the unfilled stage has clipped.
+    // The setup of one filled triangle the unfilled stage has clipped (and offset: the draw
+    // module's offset stage moves its vertices, so setup adds no offset of its own).
     void setUpTriangle(const BatchHeader& batch, const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
                        const glm::vec4& flatColor, TriangleTarget& target, Stats& stats);
 

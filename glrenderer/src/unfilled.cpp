@@ -165,12 +165,12 @@ public:
         // The stipple stage restarts its counter at each face that reaches it, but for the
         // edges of one polygon drawn as lines.
         if (stippling_ && (mode != PolygonMode::Line || (edges & kResetStipple))) target_.stippler->restart();
+        // Polygon offset in the draw module: on the vertices, filled faces' too.
+        if (offsetStage_) offsetInDrawModule(offset, w0, w1, w2);
         if (mode == PolygonMode::Fill) {
             target_.fill(w0, w1, w2, flatColor);
             return;
         }
-        // Polygon offset of line and point modes: the draw module's, on the vertices.
-        if (offsetStage_) offsetInDrawModule(offset, w0, w1, w2);
         ++stats_.rasterized;
         const bool flat = state_.shadeModel == ShadeModel::Flat;
         if (mode == PolygonMode::Line && (edges & kResetStipple) && target_.feedback)

@@ -29,9 +29,10 @@ struct Offset {
 };
 
 // Random triangles with random depth slopes in a perspective view, drawn once plainly and then
-// again offset in another colour with GL_LEQUAL (the offset decides which colour shows), in
-// `mode` (GL_FILL, GL_LINE or GL_POINT) with that mode's offset enable.
-Frame offsetFrame(Offset offset, GLenum mode, unsigned seed) {
+// again offset in another colour with GL_LEQUAL (the offset decides which colour shows), front
+// faces in `mode` (GL_FILL, GL_LINE or GL_POINT) with that mode's offset enable, back faces in
+// `backMode` (the same unless given).
+Frame offsetFrame(Offset offset, GLenum mode, unsigned seed, GLenum backMode = 0) {
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
@@ -60,7 +61,8 @@ Frame offsetFrame(Offset offset, GLenum mode, unsigned seed) {
                                             : GL_POLYGON_OFFSET_POINT;
     glEnable(enable);
     glPolygonOffset(offset.factor, offset.units);
-    glPolygonMode(GL_FRONT_AND_BACK, mode);
+    glPolygonMode(GL_FRONT, mode);
+    glPolygonMode(GL_BACK, backMode ? backMode : mode);
     glColor3f(0.2f, 0.9f, 0.3f);
     draw();
     return readFrame(kWidth, kHeight);
@@ -114,4 +116,20 @@ TEST(PolygonOffset, StateQueriesMatchTheReference) {
         return a;
     });
     EXPECT_EQ(answers.mygl, answers.osmesa);
+}
+
+// Faces of one draw in different polygon modes go through the reference's draw module, whose
+// offset stage offsets the filled ones too, per vertex (not as setup does, per fragment).
+TEST(PolygonOffset, FilledFacesBesideUnfilledOnesTakeTheDrawModulesOffset) {
+    const Offset offsets[] = {{0.0f, 1.0f}, {1.0f, 0.0f}, {2.5f, -3.0f}, {0.5f, 1000.0f}};
+    for (GLenum backMode : {GL_LINE, GL_POINT}) {
+        for (const Offset& o : offsets) {
+            for (unsigned seed : {1u, 2u, 3u}) {
+                const auto frames =
+                    onBothBackends<Frame>([&] { return offsetFrame(o, GL_FILL, seed, backMode); }, kWidth, kHeight);
+                EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0)
+                    << "back mode " << backMode << " factor " << o.factor << " units " << o.units << " seed " << seed;
+            }
+        }
+    }
 }
