@@ -2,9 +2,11 @@
 // (docs/reference-rules.md, Textures). A 4 x 1 texture (red, green, blue, white; MAG_FILTER
 // LINEAR by default) in MODULATE; the raster position (1, 1) set with the texture coordinates
 // (0.6, 0.5) and the colour (0.8, 0.6, 1.0); then a 12 x 4 bitmap of set bits, or a white
-// 12 x 4 glDrawPixels. Prints the first pixels of row 1. Modes (argv[1], bits): 1 MIN_FILTER
-// LINEAR, 2 glDrawPixels instead of glBitmap, 4 glTexCoord2f(0.1, 0.5) after glRasterPos, 8 the
-// texture matrix translated by 0.25 after glRasterPos.
+// 12 x 4 glDrawPixels. Prints rows 1 to 3. Modes (argv[1], bits): 1 MIN_FILTER LINEAR, 2
+// glDrawPixels instead of glBitmap, 4 glTexCoord2f(0.1, 0.5) after glRasterPos, 8 the texture
+// matrix translated by 0.25 after glRasterPos, 16 a draw with texture coordinates after
+// glRasterPos, 32 a 2 x 2 bitmap moving the raster position by (3, 1) first, 64 a draw with
+// texture coordinates before glRasterPos.
 // Build: g++ -std=c++20 -I tests/api -I mygl/include -I glrenderer/include -I reference/include
 //   -I build/glad/include textured_bitmap_probe.cpp build/mygl/libmygl.a
 //   build/glrenderer/libglrenderer.a build/reference/libmygl_reference.a build/libmygl_loader.a
@@ -33,6 +35,15 @@ int main(int argc, char** argv) {
     glEnable(GL_TEXTURE_2D);
     const std::vector<GLubyte> ones(4 * 16 * 16, 0xFF);
     glColor4f(0.8f, 0.6f, 1.0f, 1.0f);
+    if (mode & 64) {  // a draw with texture coordinates before the raster position
+        glBegin(GL_TRIANGLES);
+        glTexCoord2f(0.3f, 0.5f);
+        glVertex2f(-5, -5);
+        glVertex2f(-4, -5);
+        glVertex2f(-4, -4);
+        glEnd();
+    }
+    glColor4f(0.8f, 0.6f, 1.0f, 1.0f);
     glTexCoord2f(0.6f, 0.5f);
     glRasterPos2i(1, 1);
     if (mode & 4) glTexCoord2f(0.1f, 0.5f);
@@ -41,16 +52,29 @@ int main(int argc, char** argv) {
         glTranslatef(0.25f, 0, 0);
         glMatrixMode(GL_MODELVIEW);
     }
+    if (mode & 16) {  // a draw whose vertex format has texture coordinates, before the bitmap
+        glBegin(GL_TRIANGLES);
+        glTexCoord2f(0.6f, 0.5f);
+        glVertex2f(-5, -5);
+        glVertex2f(-4, -5);
+        glVertex2f(-4, -4);
+        glEnd();
+    }
+    if (mode & 32) {  // a second bitmap first, moving the raster position by 3, 1
+        glBitmap(2, 2, 0, 0, 3, 1, ones.data());
+    }
     if (mode & 2) {
         glDrawPixels(12, 4, GL_RGBA, GL_UNSIGNED_BYTE, ones.data());
     } else {
         glBitmap(12, 4, 0, 0, 0, 0, ones.data());
     }
     const testing_support::Frame frame = testing_support::readFrame(W, H);
-    for (int x = 0; x < 14; ++x) {
-        const GLubyte* p = &frame.color[static_cast<std::size_t>(4 * (W + x))];
-        std::printf("%02x%02x%02x ", p[0], p[1], p[2]);
+    for (int y = 1; y <= 3; ++y) {
+        for (int x = 0; x < 18; ++x) {
+            const GLubyte* p = &frame.color[static_cast<std::size_t>(4 * (y * W + x))];
+            std::printf("%02x%02x%02x ", p[0], p[1], p[2]);
+        }
+        std::printf("\n");
     }
-    std::printf("\n");
     return 0;
 }

@@ -5,9 +5,36 @@
 #include "batch_drawer.h"
 #include "fragment_paths.h"
 #include "pixel_rect.h"
+#include "triangle_setup.h"
 #include "glrenderer/pipeline.h"
 
 namespace glrenderer {
+namespace {
+
+// The texture planes of a bitmap's fragments (BitmapTexCoords), in internal rows of a
+// framebuffer `height` high: constant, or those of the reference's quad over the bitmap's
+// rectangle, through three of its corners as setup builds a triangle's.
+void setBitmapTexture(FragmentInputs& fragment, const FragmentChoice& fragments, const Bitmap& bitmap, int height) {
+    const auto texture = [&](const auto& planes, const auto&... corners) {
+        fragment.setTexture(fragments.texture, fragments.textureEnvColor, fragments.textureBorderColor, planes,
+                            corners...);
+    };
+    if (!bitmap.texCoords.vary) {
+        WindowVertex constant;
+        constant.texCoord = bitmap.texCoords.current;
+        return texture(ConstantPlanes{}, constant);
+    }
+    const float left = static_cast<float>(bitmap.x), right = static_cast<float>(std::int64_t{bitmap.x} + bitmap.width);
+    const float bottom = static_cast<float>(height - std::int64_t{bitmap.y});
+    const float top = static_cast<float>(height - (std::int64_t{bitmap.y} + bitmap.height));
+    WindowVertex lowerLeft, lowerRight, upperRight;
+    lowerLeft.x = left, lowerLeft.y = bottom, lowerLeft.texCoord = {0.0f, 0.0f, 0.0f, 1.0f};
+    lowerRight.x = right, lowerRight.y = bottom, lowerRight.texCoord = {1.0f, 0.0f, 0.0f, 1.0f};
+    upperRight.x = right, upperRight.y = top, upperRight.texCoord = {1.0f, 1.0f, 0.0f, 1.0f};
+    texture(PlaneBuilder(lowerLeft, lowerRight, upperRight), lowerLeft, lowerRight, upperRight);
+}
+
+}  // namespace
 
 void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     finish();
@@ -22,9 +49,7 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     const std::int64_t y1 = std::min<std::int64_t>(bottom + bitmap.height, fb.height() - drawable.minY);
     // Runs of set bits, in each row, are spans of one colour and depth for the fragment stage.
     FragmentInputs fragment;
-    // Not textured yet (the raster position's texture coordinates are not kept).
-    const FragmentKey key = withTexture(flatFragmentKey(state), TextureState{});
-    const FragmentChoice fragments(bestFragmentPaths(), key, state);
+    const FragmentChoice fragments(bestFragmentPaths(), flatFragmentKey(state), state);
     fragment.setPath(fragments.varyingW);
     fragment.ops = fragments.ops;
     fragment.setFlatColor(bitmap.color);
@@ -34,6 +59,7 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     fragment.fog = state.fog;
     fragment.invW = {1.0f, 0.0f, 0.0f};
     fragment.fogCoord = {0.0f, 0.0f, 0.0f};
+    if (fragment.key.textureEnv != TextureEnv::Off) setBitmapTexture(fragment, fragments, bitmap, fb.height());
     FragmentCounts counts;
     for (std::int64_t y = y0; y < y1; ++y) {
         const std::uint8_t* row = bitmap.rows.data() + static_cast<std::size_t>(y - bottom) * bitmap.rowStride;

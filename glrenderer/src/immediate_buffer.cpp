@@ -60,6 +60,7 @@ bool ImmediateBuffer::endPrimitive(PrimitiveMode mode, std::size_t count, bool l
 }
 
 void ImmediateBuffer::flush() {
+    if (vertices_ > 0) lastDrawTexCoords_ = has(VertexAttribute::TexCoord);
     if (!fromArrays_) usedBytes_ += vertices_ * vertexFloats_ * sizeof(float);
     if (kBufferBytes <= usedBytes_ + kMinFreeBytes) usedBytes_ = 0;  // a new buffer object
     updateMaxVertices();

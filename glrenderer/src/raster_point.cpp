@@ -16,10 +16,6 @@ constexpr float kMaxPointCoordinate = 1 << 22;
 constexpr float kMaxPointSize = 255.0f;
 
 // Planes of one value at every pixel.
-struct ConstantPlanes {
-    AttributePlane plane(float a) const { return {a, 0.0f, 0.0f}; }
-};
-
 struct PixelBox {
     std::int64_t x0, y0, x1, y1;  // inclusive
 };

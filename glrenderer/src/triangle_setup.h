@@ -143,4 +143,9 @@ private:
     float x0Center_, y0Center_;
 };
 
+// Planes of attributes that are the same at every pixel (a point's, a bitmap's).
+struct ConstantPlanes {
+    AttributePlane plane(float a) const { return {a, 0.0f, 0.0f}; }
+};
+
 }  // namespace glrenderer

@@ -45,6 +45,7 @@ glrenderer::Bitmap BitmapCache::bitmap() const {
     b.rowStride = kStride;
     b.color = color_;
     b.z = z_;
+    b.texCoords = texCoords_;
     return b;
 }
 

@@ -30,8 +30,12 @@ public:
     // The whole cache as one bitmap to draw; then clear().
     glrenderer::Bitmap bitmap() const;
     void clear();
-    // The state of the last glBitmap call, which the cache is drawn with.
-    void setDrawState(const glrenderer::DrawState& state) { drawState_ = state; }
+    // The state of the last glBitmap call, which the cache is drawn with, and its texture
+    // coordinates.
+    void setDrawState(const glrenderer::DrawState& state, const glrenderer::BitmapTexCoords& texCoords) {
+        drawState_ = state;
+        texCoords_ = texCoords;
+    }
     const glrenderer::DrawState& drawState() const { return drawState_; }
 
 private:
@@ -42,6 +46,7 @@ private:
     float z_ = 0;
     std::array<std::uint8_t, kStride * kHeight> bits_{};
     glrenderer::DrawState drawState_;
+    glrenderer::BitmapTexCoords texCoords_;
 };
 
 }  // namespace mygl

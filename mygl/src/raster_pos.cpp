@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "compiled.h"
+#include "textures.h"
 #include "vertex_input.h"
 
 namespace mygl {
@@ -75,6 +76,12 @@ std::size_t bitmapRowStride(GLsizei width, int alignment) {
     return (bytes + a - 1) / a * a;
 }
 
+// The texture coordinates the reference's bitmap fragments take (BitmapTexCoords).
+glrenderer::BitmapTexCoords bitmapTexCoords(const Context::State& s) {
+    const glrenderer::TextureState& texture = s.draw->texture;
+    return {!texture.identityMatrix || texture.gen.enabled != 0 || s.pipeline.drawsTexCoords(), s.texCoord};
+}
+
 // `stride`: bytes from one row to the next (the unpack alignment's when the program calls it,
 // 1-aligned rows when a display list replays it).
 void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
@@ -95,7 +102,8 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
         const int x = static_cast<int>(std::floor(s->rasterPosition.x + kEpsilon - xorig));
         const int y = static_cast<int>(std::floor(s->rasterPosition.y + kEpsilon - yorig));
         const float z = s->rasterPosition.z;
-        s->bitmapCache.setDrawState(*s->draw);
+        updateTexturing(*s);
+        s->bitmapCache.setDrawState(*s->draw, bitmapTexCoords(*s));
         if (BitmapCache::cacheable(width, height)) {
             if (!s->bitmapCache.accepts(x, y, width, height, s->rasterColor, z)) drawCachedBitmaps(*s);
             s->bitmapCache.add(x, y, width, height, bits, stride, s->rasterColor, z);
@@ -109,6 +117,7 @@ void bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat
             b.rowStride = stride;
             b.color = s->rasterColor;
             b.z = z;
+            b.texCoords = bitmapTexCoords(*s);
             endBatch(*s);
             s->pipeline.drawBitmap(*s->draw, b);
         }

@@ -52,6 +52,9 @@ public:
 
     bool hasVertices() const { return vertices_ > 0; }
     bool has(VertexAttribute attribute) const { return sizes_[index(attribute)] > 0; }
+    // Whether the reference's last draw, or the one pending, had texture coordinates in its
+    // vertex format (its fragment program then reads them as varying: glBitmap's).
+    bool drawsTexCoords() const { return vertices_ > 0 ? has(VertexAttribute::TexCoord) : lastDrawTexCoords_; }
     // Draws what the buffer holds.
     void flush();
     // A state change, glFlush, glClear, a read: the vertices are drawn and the format forgotten.
@@ -72,6 +75,7 @@ private:
     PrimitiveMode lastMode_ = PrimitiveMode::Points;
     bool lastMergeable_ = false;
     bool fromArrays_ = false;
+    bool lastDrawTexCoords_ = false;
 };
 
 // Which of the open primitive's `count` vertices (in this part of the buffer) the reference

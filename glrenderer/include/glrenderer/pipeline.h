@@ -82,6 +82,8 @@ public:
     // Between the calls, primitives are glDrawArrays or glDrawElements draws, which the
     // reference does not pass through its immediate-mode buffer (see ImmediateBuffer).
     void drawFromArrays(bool fromArrays) { buffer_.setFromArrays(fromArrays); }
+    // Whether the last draw (or the pending one) had texture coordinates per vertex.
+    bool drawsTexCoords() const { return buffer_.drawsTexCoords(); }
     IndexedPart addIndexedPart(std::size_t vertexCount, std::size_t indexCount);
     // glColor inside glBegin/glEnd. The reference's vertex buffer then gains a color per vertex
     // until its draw ends, and what it held before is drawn as a draw of its own (it decides
