@@ -153,6 +153,22 @@ std::vector<Case> cases() {
              glRasterPos2i(2, 30);
              text(9, 5);
          }},
+        {"fog and blending over a textured draw",
+         [] {
+             setUp();
+             mipmappedTexture();
+             glEnable(GL_TEXTURE_2D);
+             texturedQuad();
+             glEnable(GL_FOG);
+             glFogi(GL_FOG_MODE, GL_LINEAR);
+             glFogf(GL_FOG_START, -1.0f);
+             glFogf(GL_FOG_END, 2.0f);
+             glEnable(GL_BLEND);
+             glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+             glColor4f(0.9f, 0.5f, 0.2f, 0.6f);
+             glRasterPos2i(2, 20);
+             text(8, 6);
+         }},
         {"a bitmap larger than the cache: its own quad",
          [] {
              setUp();
