@@ -6,7 +6,7 @@
 // glDrawPixels instead of glBitmap, 4 glTexCoord2f(0.1, 0.5) after glRasterPos, 8 the texture
 // matrix translated by 0.25 after glRasterPos, 16 a draw with texture coordinates after
 // glRasterPos, 32 a 2 x 2 bitmap moving the raster position by (3, 1) first, 64 a draw with
-// texture coordinates before glRasterPos.
+// texture coordinates before glRasterPos, 128 texture generation on s.
 // Build: g++ -std=c++20 -I tests/api -I mygl/include -I glrenderer/include -I reference/include
 //   -I build/glad/include textured_bitmap_probe.cpp build/mygl/libmygl.a
 //   build/glrenderer/libglrenderer.a build/reference/libmygl_reference.a build/libmygl_loader.a
@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
     if (mode & 32) {  // a second bitmap first, moving the raster position by 3, 1
         glBitmap(2, 2, 0, 0, 3, 1, ones.data());
     }
+    if (mode & 128) glEnable(GL_TEXTURE_GEN_S);  // texture generation (eye linear) on s
     if (mode & 2) {
         glDrawPixels(12, 4, GL_RGBA, GL_UNSIGNED_BYTE, ones.data());
     } else {

@@ -7,17 +7,20 @@
 #include <bit>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "batch.h"
 #include "batch_drawer.h"
+#include "image_texturing.h"
 #include "glrenderer/color_convert.h"
 #include "glrenderer/pipeline.h"
 
 namespace glrenderer {
 namespace {
 
-// The image as the texture the reference samples: its colours as fragment colour words.
-std::shared_ptr<const Texture> imageTexture(const PixelImage& image) {
+// The image as the texture the reference samples: its colours as fragment colour words, taken
+// through `texturing` when there is one.
+std::shared_ptr<const Texture> imageTexture(const PixelImage& image, const ImageTexturing* texturing) {
     auto texture = std::make_shared<Texture>();
     texture->levelCount = 1;
     texture->width[0] = static_cast<std::uint32_t>(image.width);
@@ -29,6 +32,9 @@ std::shared_ptr<const Texture> imageTexture(const PixelImage& image) {
     } else {
         texture->texels.resize(image.colors.size());
         std::transform(image.colors.begin(), image.colors.end(), texture->texels.begin(), fragmentRgba8);
+    }
+    if (texturing) {
+        for (std::uint32_t& texel : texture->texels) texel = texturing->apply(texel);
     }
     if (image.topRowFirst) {
         const auto width = static_cast<std::ptrdiff_t>(image.width);
@@ -57,9 +63,10 @@ FragmentOps stencilImageOps(const FragmentOps& ops) {
 // The state of the reference's quad: the draw's fragment operations (depth, fog, scissor,
 // alpha, stencil, blending, logic op, masks) with the whole window as the viewport, depth range
 // [0, 1], the image replacing the colour (or giving depths or stencil values: `use`), nothing
-// culled or offset.
-DrawState quadState(const DrawState& state, int width, int height, std::shared_ptr<const Texture> texture,
-                    TexelUse use) {
+// culled or offset. `textured`: the image's colours have been through the draw's texturing and
+// fog (ImageTexturing) already.
+DrawState quadState(const DrawState& state, int width, int height, std::shared_ptr<const Texture> texture, TexelUse use,
+                    bool textured) {
     DrawState quad;
     quad.shadeModel = ShadeModel::Flat;
     quad.viewport = {0, 0, width, height};
@@ -70,7 +77,7 @@ DrawState quadState(const DrawState& state, int width, int height, std::shared_p
         quad.depthFunc = state.depthFunc;
         quad.depthWrite = state.depthWrite;
         quad.fragmentOps = state.fragmentOps;  // scissor, alpha test, stencil, blending, logic op, masks
-        if (use == TexelUse::Color) quad.fog = state.fog;
+        if (use == TexelUse::Color && !textured) quad.fog = state.fog;
     }
     quad.texture.use = use;
     quad.texture.env = TextureEnv::Replace;
@@ -120,7 +127,10 @@ void Pipeline::drawPixels(const DrawState& state, const PixelImage& image) {
     const Stats counted = submitted_;
     setTransform(kQuadTransform);
     setUnlit();
-    submit(intern(quadState(state, fb.width(), fb.height(), imageTexture(image), image.use)),
+    std::optional<ImageTexturing> texturing;
+    if (image.use == TexelUse::Color && state.texture.env != TextureEnv::Off) texturing.emplace(state, image.texCoord);
+    submit(intern(quadState(state, fb.width(), fb.height(), imageTexture(image, texturing ? &*texturing : nullptr),
+                            image.use, texturing.has_value())),
            PrimitiveMode::TriangleFan, vertices);
     endBatch();
     setTransform(transform);

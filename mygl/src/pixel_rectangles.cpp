@@ -10,6 +10,7 @@
 #include "compiled.h"
 #include "pixel_unpack.h"
 #include "pixel_values.h"
+#include "textures.h"
 
 namespace mygl {
 namespace {
@@ -55,6 +56,8 @@ void drawImage(Context::State& s, glrenderer::PixelImage image) {
     image.zoomX = s.pixelModes.zoomX;
     image.zoomY = s.pixelModes.zoomY;
     image.z = s.rasterPosition.z;
+    updateTexturing(s);
+    image.texCoord = s.texCoord;
     drawCachedBitmaps(s);
     endBatch(s);
     s.pipeline.drawPixels(*s.draw, image);

@@ -1,7 +1,8 @@
-// glBitmap under an enabled texture against OSMesa: the reference textures a bitmap's fragments
-// with the current texture coordinates as a constant, or, when something may make them vary
-// (a texture matrix, texture generation, coordinates in the last draw's vertex format), with
-// the coordinates of the quad it draws the bitmap (or its cache of bitmaps) with
+// glBitmap, glDrawPixels and glCopyPixels under an enabled texture against OSMesa: the reference
+// textures a bitmap's fragments with the current texture coordinates as a constant, or, when
+// something may make them vary (a texture matrix, texture generation, coordinates in the last
+// draw's vertex format), with the coordinates of the quad it draws the bitmap (or its cache of
+// bitmaps) with; an image's fragments always with the current coordinates as a constant
 // (docs/reference-rules.md, "Textured bitmaps"). Every frame is compared bit for bit.
 #include <gtest/gtest.h>
 
@@ -193,5 +194,74 @@ TEST(TexturedBitmaps, FragmentsTakeTheReferencesTextureCoordinates) {
             },
             kWidth, kHeight);
         EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0) << c.name;
+    }
+}
+
+namespace {
+
+// A 5 x 3 texture of `base` (random texels) with `env`, `filter` both ways.
+void smallTexture(GLenum base, GLenum env, GLenum filter, unsigned seed) {
+    std::mt19937 random(seed);
+    std::vector<GLubyte> texels(5 * 3 * 4);
+    for (GLubyte& t : texels) t = static_cast<GLubyte>(random());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(base), 5, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, static_cast<GLint>(env));
+    const GLfloat envColor[] = {0.3f, 0.7f, 0.45f, 0.6f};
+    glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, envColor);
+}
+
+// A 20 x 9 image of random RGBA bytes drawn zoomed at (2, 3) and copied to (50, 20).
+void images(unsigned seed) {
+    std::mt19937 random(seed);
+    std::vector<GLubyte> pixels(20 * 9 * 4);
+    for (GLubyte& p : pixels) p = static_cast<GLubyte>(random());
+    glRasterPos2i(2, 3);
+    glPixelZoom(1.5f, 2.0f);
+    glDrawPixels(20, 9, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    glPixelZoom(1.0f, 1.0f);
+    glRasterPos2i(50, 20);
+    glCopyPixels(2, 3, 30, 18, GL_COLOR);
+}
+
+}  // namespace
+
+TEST(TexturedPixelImages, DrawnAndCopiedImagesTakeTheCurrentCoordinatesAsAConstant) {
+    const GLenum bases[] = {GL_RGB, GL_RGBA, GL_LUMINANCE, GL_LUMINANCE_ALPHA, GL_ALPHA, GL_INTENSITY};
+    const GLenum envs[] = {GL_MODULATE, GL_DECAL, GL_BLEND, GL_REPLACE, GL_ADD};
+    unsigned seed = 1;
+    for (GLenum base : bases) {
+        for (GLenum env : envs) {
+            for (GLenum filter : {GL_NEAREST, GL_LINEAR}) {
+                ++seed;
+                const auto frames = onBothBackends<Frame>(
+                    [&] {
+                        setUp();
+                        smallTexture(base, env, filter, seed);
+                        glEnable(GL_TEXTURE_2D);
+                        if (seed % 3 == 0) texturedQuad();  // the coordinates stay constant all the same
+                        if (seed % 4 == 0) {                // and under a texture matrix
+                            glMatrixMode(GL_TEXTURE);
+                            glRotatef(30.0f, 0, 0, 1);
+                            glMatrixMode(GL_MODELVIEW);
+                        }
+                        if (seed % 7 == 0) {  // linear fog (the images' fog coordinate is 0: 2/3 here)
+                            glEnable(GL_FOG);
+                            glFogi(GL_FOG_MODE, GL_LINEAR);
+                            glFogf(GL_FOG_START, -1.0f);
+                            glFogf(GL_FOG_END, 2.0f);
+                        }
+                        glTexCoord4f(0.37f, 0.61f, 0.0f, seed % 5 == 0 ? 1.5f : 1.0f);
+                        images(seed);
+                        return readFrame(kWidth, kHeight);
+                    },
+                    kWidth, kHeight);
+                EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0)
+                    << "base " << base << " env " << env << " filter " << filter << " seed " << seed;
+            }
+        }
     }
 }

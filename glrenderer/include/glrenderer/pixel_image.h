@@ -26,6 +26,9 @@ struct PixelImage {
     // write their values under the stencil write mask and the scissor alone, no colour.
     TexelUse use = TexelUse::Color;
     glm::vec4 color{1.0f};
+    // The current texture coordinates: a colour image under texturing is textured with them,
+    // as a constant (ImageTexturing).
+    glm::vec4 texCoord{0.0f, 0.0f, 0.0f, 1.0f};
     float z = 0;  // window depth in [0, 1] of every fragment
     // glCopyPixels' texture holds the rows top first, with t = 0 at the quad's top: the same
     // texels, but a centre on a texel boundary may fall the other way.
