@@ -282,6 +282,7 @@ void queueLine(const WindowVertex& start, const WindowVertex& end, const glm::ve
     FragmentInputs fragment;
     fragment.setPath(fragments.varyingW);
     fragment.ops = fragments.ops;
+    fragment.polygonStipple = fragments.polygonStipple;  // with a key that has it (unfilled faces')
     const FragmentKey& key = fragments.varyingW.key;
     if (key.shading == Shading::Flat) {
         fragment.setFlatColor(flatColor, start.secondaryColor);  // both ends carry the flat secondary colour

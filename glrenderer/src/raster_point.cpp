@@ -84,6 +84,7 @@ void queuePoint(const WindowVertex& point, const DrawState& state, const Fragmen
     FragmentInputs fragment;
     fragment.setPath(fragments.varyingW);
     fragment.ops = fragments.ops;
+    fragment.polygonStipple = fragments.polygonStipple;  // with a key that has it (unfilled faces')
     fragment.setFlatColor(c, secondary);
     fragment.depth = {point.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
     if (fragment.key.fog != FogMode::Off) {  // the fog coordinate as a perspective attribute, as the colour

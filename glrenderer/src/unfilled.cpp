@@ -115,18 +115,35 @@ bool clipPolygon(Polygon& polygon, Outcode outcodeUnion, const ViewportTransform
     return true;
 }
 
+// The key of an unfilled face's lines or points: polygon stipple masks them too when a filled
+// face of the same draw reaches the reference's polygon stipple stage, which binds its stippled
+// fragment shader for everything its draw module then sends to the rasterizer.
+FragmentKey unfilledKey(FragmentKey key, const DrawState& state, bool stippled) {
+    key.polygonStipple = stippled && state.polygonStipple.active();
+    return key;
+}
+
 class UnfilledDrawer {
 public:
+    // `survey`: only find whether a face is filled (filledFace()), drawing nothing; `stippled`:
+    // the lines and points take the polygon stipple.
     UnfilledDrawer(const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
-                   const UnfilledTarget& target)
+                   const UnfilledTarget& target, bool survey, bool stippled)
         : state_(state),
           anyEdgeShown_(anyEdgeShown),
+          survey_(survey),
           drawable_(drawableRect(state.fragmentOps.scissor, framebuffer.width(), framebuffer.height())),
           stats_(stats),
           target_(target),
-          lineFragments_(bestFragmentPaths(), state.lineSmooth ? smoothFragmentKey(state) : fragmentKey(state), state),
-          pointFragments_(bestFragmentPaths(), state.pointSmooth ? smoothFragmentKey(state) : flatFragmentKey(state),
-                          state) {}
+          lineFragments_(bestFragmentPaths(),
+                         unfilledKey(state.lineSmooth ? smoothFragmentKey(state) : fragmentKey(state), state, stippled),
+                         state),
+          pointFragments_(
+              bestFragmentPaths(),
+              unfilledKey(state.pointSmooth ? smoothFragmentKey(state) : flatFragmentKey(state), state, stippled),
+              state) {}
+
+    bool filledFace() const { return filledFace_; }
 
     // One triangle out of the clipper (provoking vertex last) with its edge bits and the
     // provoking vertex (for its flat colours).
@@ -161,6 +178,10 @@ public:
         // front mode under GL_CW).
         const bool useFront = det == 0.0f ? !state_.cullEnabled && !state_.frontFaceCCW : front;
         const PolygonMode mode = useFront ? state_.polygonFront : state_.polygonBack;
+        if (survey_) {
+            filledFace_ = filledFace_ || mode == PolygonMode::Fill;
+            return;
+        }
         const PolygonOffset& offset = offsetFor(mode);
         // The stipple stage restarts its counter at each face that reaches it, but for the
         // edges of one polygon drawn as lines.
@@ -229,6 +250,8 @@ private:
 
     const DrawState& state_;
     const bool anyEdgeShown_;  // false: the batch's edges are all hidden by the current edge flag
+    const bool survey_;
+    bool filledFace_ = false;
     const bool offsetStage_ = state_.polygonOffset.fill || state_.polygonOffset.line || state_.polygonOffset.point;
     bool offsetChosen_ = false, offsetOn_ = false;
     const PixelRect drawable_;
@@ -238,13 +261,10 @@ private:
     const FragmentChoice lineFragments_, pointFragments_;  // the batch's, chosen once
 };
 
-}  // namespace
-
-void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices, std::span<const Outcode> outcodes,
-                       std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
-                       const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
-                       const UnfilledTarget& target) {
-    UnfilledDrawer drawer(state, anyEdgeShown, framebuffer, stats, target);
+// Decomposes, clips and hands `drawer` a batch's faces.
+void runUnfilled(UnfilledDrawer& drawer, PrimitiveMode mode, std::span<const ClipVertex> vertices,
+                 std::span<const Outcode> outcodes, std::span<const WindowVertex> windowVertices,
+                 const ViewportTransform& viewport, const DrawState& state, Stats& stats) {
     const auto count = static_cast<std::uint32_t>(vertices.size());
     decomposeWithEdges(mode, count, [&](std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, std::uint8_t edges) {
         ++stats.triangles;
@@ -278,6 +298,25 @@ void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices,
             drawer.triangle(a, b, first, fanEdges, vertices[i2]);
         }
     });
+}
+
+}  // namespace
+
+void drawUnfilledBatch(PrimitiveMode mode, std::span<const ClipVertex> vertices, std::span<const Outcode> outcodes,
+                       std::span<const WindowVertex> windowVertices, const ViewportTransform& viewport,
+                       const DrawState& state, bool anyEdgeShown, Framebuffer& framebuffer, Stats& stats,
+                       const UnfilledTarget& target) {
+    // Under polygon stipple, a first pass finds whether any face is drawn filled.
+    bool stippled = false;
+    if (state.polygonStipple.active() && !target.feedback &&
+        (state.polygonFront == PolygonMode::Fill || state.polygonBack == PolygonMode::Fill)) {
+        Stats uncounted;
+        UnfilledDrawer survey(state, anyEdgeShown, framebuffer, uncounted, target, true, false);
+        runUnfilled(survey, mode, vertices, outcodes, windowVertices, viewport, state, uncounted);
+        stippled = survey.filledFace();
+    }
+    UnfilledDrawer drawer(state, anyEdgeShown, framebuffer, stats, target, false, stippled);
+    runUnfilled(drawer, mode, vertices, outcodes, windowVertices, viewport, state, stats);
 }
 
 }  // namespace glrenderer

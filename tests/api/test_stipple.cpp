@@ -268,6 +268,38 @@ TEST(PolygonStipple, DisplayListsKeepThePatternOfTheirCompilation) {
     EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0);
 }
 
+// One draw of front faces filled and back faces as lines or points: the reference's polygon
+// stipple stage, reached by a filled face, stipples the draw's lines and points as well, whether
+// they come before or after it; a draw with no filled face leaves them unstippled.
+TEST(PolygonStipple, UnfilledFacesOfADrawWithAFilledFaceAreStippledToo) {
+    const float front[6] = {2, 3, 80, 8, 40, 58}, back[6] = {4, 57, 78, 59, 20, 25};
+    const auto triangle = [](const float* v) {
+        for (int i = 0; i < 3; ++i) glVertex2f(v[2 * i], v[2 * i + 1]);
+    };
+    for (GLenum backMode : {GL_LINE, GL_POINT}) {
+        for (int order = 0; order < 3; ++order) {  // back first, front first, back alone
+            const auto frames = onBothBackends<Frame>(
+                [&] {
+                    clear();
+                    orthoView();
+                    const std::array<GLubyte, 128> pattern = randomPattern(7);
+                    glPolygonStipple(pattern.data());
+                    glEnable(GL_POLYGON_STIPPLE);
+                    glPolygonMode(GL_BACK, backMode);
+                    glPointSize(3.0f);
+                    glBegin(GL_TRIANGLES);
+                    if (order == 0 || order == 2) triangle(back);
+                    if (order != 2) triangle(front);
+                    if (order == 1) triangle(back);
+                    glEnd();
+                    return readFrame(kWidth, kHeight);
+                },
+                kWidth, kHeight);
+            EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), 0) << "back mode " << backMode << " order " << order;
+        }
+    }
+}
+
 TEST(Stipple, StateQueriesAttribStackAndErrorsMatchTheReference) {
     const auto answers = onBothBackends<std::vector<double>>([] {
         std::vector<double> a;
