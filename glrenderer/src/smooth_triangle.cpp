@@ -78,6 +78,7 @@ void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const Smoo
     FragmentInputs fragment;
     fragment.setPath(fragments.varyingW);
     fragment.ops = fragments.ops;
+    fragment.polygonStipple = fragments.polygonStipple;  // with a key that has it (unfilled faces')
     const FragmentKey& key = fragments.varyingW.key;
     if (key.depthTest) fragment.depth = planes.plane(v0.z, v1.z, v2.z);
     if (key.fog != FogMode::Off) {
