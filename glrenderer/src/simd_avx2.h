@@ -163,7 +163,9 @@ struct Avx2Lanes {
         const Int low = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table)), index);
         const Int high =
             _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + 8)), index);
-        return select(_mm256_cmpgt_epi32(index, _mm256_set1_epi32(7)), high, low);
+        // Bit 3 of the index (8-15: the second half) as the sign bit a float blend reads.
+        const __m256 second = _mm256_castsi256_ps(_mm256_slli_epi32(index, 28));
+        return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(low), _mm256_castsi256_ps(high), second));
     }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
