@@ -25,7 +25,7 @@ struct TexelFields {
 
     static TexelFields of(typename L::Int word) {
         const typename L::Int low = L::ints(0x00FF00FF);
-        return {L::bitAnd(word, low), L::bitAnd(L::template shiftRightUnsigned<8>(word), low)};
+        return {L::bitAnd(word, low), L::shiftRight16By8(word)};
     }
     // The texel words again.
     typename L::Int word() const { return L::bitOr(redBlue, L::template shiftLeft<8>(greenAlpha)); }

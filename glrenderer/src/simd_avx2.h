@@ -133,9 +133,10 @@ struct Avx2Lanes {
     // The two 16-bit fields (each 0-255) of words a and b lerped with weights w (0-255):
     // a + ((w * (b - a) + 128) >> 8) per field with pmulhrsw, as llvmpipe's sampler does. The
     // result lies between a and b: no field carries into the next.
+    // The weight takes the factor 128 (w * 128 < 2^15), one shift a weight instead of one a lerp.
     static Int lerpFields(Int w, Int a, Int b) {
-        const __m256i w16 = _mm256_or_si256(w, _mm256_slli_epi32(w, 16));
-        return _mm256_add_epi16(a, _mm256_mulhrs_epi16(w16, _mm256_slli_epi16(_mm256_sub_epi16(b, a), 7)));
+        const __m256i w16 = _mm256_or_si256(_mm256_slli_epi32(w, 7), _mm256_slli_epi32(w, 16 + 7));
+        return _mm256_add_epi16(a, _mm256_mulhrs_epi16(w16, _mm256_sub_epi16(b, a)));
     }
     static Mask greaterThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_GT_OQ)); }
     // Lane 2k (even) or 2k + 1 (odd) in both lanes 2k and 2k + 1.
@@ -162,7 +163,9 @@ struct Avx2Lanes {
         const Int low = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table)), index);
         const Int high =
             _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + 8)), index);
-        return select(_mm256_cmpgt_epi32(index, _mm256_set1_epi32(7)), high, low);
+        // Bit 3 of the index (8-15: the second half) as the sign bit a float blend reads.
+        const __m256 second = _mm256_castsi256_ps(_mm256_slli_epi32(index, 28));
+        return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(low), _mm256_castsi256_ps(high), second));
     }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {

@@ -86,8 +86,8 @@ struct Avx512Lanes {
     static Int select(Mask m, Int ifSet, Int ifClear) { return _mm512_mask_blend_epi32(m, ifClear, ifSet); }
     // As Avx2Lanes::lerpFields (pmulhrsw at this width is AVX-512BW).
     static Int lerpFields(Int w, Int a, Int b) {
-        const __m512i w16 = _mm512_or_si512(w, _mm512_slli_epi32(w, 16));
-        return _mm512_add_epi16(a, _mm512_mulhrs_epi16(w16, _mm512_slli_epi16(_mm512_sub_epi16(b, a), 7)));
+        const __m512i w16 = _mm512_or_si512(_mm512_slli_epi32(w, 7), _mm512_slli_epi32(w, 16 + 7));
+        return _mm512_add_epi16(a, _mm512_mulhrs_epi16(w16, _mm512_sub_epi16(b, a)));
     }
     static Mask greaterThan(Float a, Float b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
     // Lane 2k (even) or 2k + 1 (odd) in both lanes 2k and 2k + 1.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -123,11 +124,12 @@ FragmentKey randomKey(std::mt19937& random) {
     return key;
 }
 
-// A texture of 8 x 4 texels (or 6 x 4, not a power of two) and its mipmaps, random texels.
-Texture randomTexture(std::mt19937& random, bool powerOfTwo) {
+// A texture of width x height texels and its mipmaps, random texels.
+Texture randomTexture(std::mt19937& random, int width, int height) {
     std::uniform_int_distribution<std::uint32_t> word;
     Texture t;
-    int width = powerOfTwo ? 8 : 6, height = 4;
+    t.powerOfTwoWidth = std::has_single_bit(static_cast<unsigned>(width));
+    t.powerOfTwoHeight = std::has_single_bit(static_cast<unsigned>(height));
     for (; t.levelCount == 0 || width > 1 || height > 1;
          width = std::max(width / 2, 1), height = std::max(height / 2, 1)) {
         const auto level = static_cast<std::size_t>(t.levelCount++);
@@ -137,9 +139,10 @@ Texture randomTexture(std::mt19937& random, bool powerOfTwo) {
         for (int i = 0; i < width * height; ++i) t.texels.push_back(word(random));
         if (width == 1 && height == 1) break;
     }
-    t.powerOfTwoWidth = powerOfTwo;
     return t;
 }
+// 8 x 4 texels (or 6 x 4, not a power of two).
+Texture randomTexture(std::mt19937& random, bool powerOfTwo) { return randomTexture(random, powerOfTwo ? 8 : 6, 4); }
 
 // A plane whose values over the framebuffer lie around [low, high], now and then a special one.
 AttributePlane randomPlane(std::mt19937& random, float low, float high) {
@@ -288,12 +291,14 @@ namespace {
 // Random triangles drawn by the fast exact method of every path against per-pixel coverage.
 // `lodTextures`: every triangle samples a texture with a level of detail (the row pairs of
 // shadeRowPairs), and every fourth is cut to one or two rows from any row, odd or even.
-void checkTrianglesAgainstThePerPixelReference(unsigned seed, bool lodTextures) {
+// `texture`: level 0's size, 8 x 4 unless given.
+void checkTrianglesAgainstThePerPixelReference(unsigned seed, bool lodTextures, int textureWidth = 8,
+                                               int textureHeight = 4) {
     std::mt19937 random(seed);
     std::uniform_int_distribution<int> depthFunc(0, 7), coin(0, 1), fourth(0, 3);
     std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1);
     const std::vector<const FragmentPaths*> allPaths = pathsOfThisCpu();
-    const auto texture = std::make_shared<const Texture>(randomTexture(random, true));
+    const auto texture = std::make_shared<const Texture>(randomTexture(random, textureWidth, textureHeight));
     int drawn = 0;
     for (int i = 0; i < 3000; ++i) {
         const float spread = i % 3 == 0 ? 3.0f : (i % 3 == 1 ? 30.0f : 400.0f);
@@ -370,4 +375,13 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
 
 TEST(FragmentPaths, TrianglesWithALevelOfDetailMatchThePerPixelReferenceInEveryPath) {
     checkTrianglesAgainstThePerPixelReference(6, true);
+}
+
+// Larger textures, whose levels of detail stay on one pair of levels over most blocks (the
+// samplers' path for such blocks) and change level within others; sides of powers of two and
+// not, down to levels of one texel.
+TEST(FragmentPaths, TrianglesWithALevelOfDetailOnLargerTexturesMatchThePerPixelReferenceInEveryPath) {
+    checkTrianglesAgainstThePerPixelReference(7, true, 64, 64);
+    checkTrianglesAgainstThePerPixelReference(8, true, 48, 20);
+    checkTrianglesAgainstThePerPixelReference(9, true, 1, 32);
 }
