@@ -1,4 +1,9 @@
 #pragma once
+#include <immintrin.h>
+
+#include <bit>
+#include <cstdint>
+
 #include "fragment_inputs.h"
 #include "raster_triangle.h"
 
@@ -11,6 +16,49 @@ struct Span {
     int begin, end;  // inclusive; empty when begin > end
 };
 Span coveredSpan(const RasterTriangle& triangle, int row, int minX, int maxX);
+
+// The covered span of each row of an area up to kMaxColumns wide, row after row: the edge
+// functions at the area's columns in 64-bit SSE lanes, stepped down a row at a time, and the
+// columns' signs taken at once (a row of a dense mesh's triangle cost a call, three evaluations
+// of the edge functions and a branch per pixel in coveredSpan).
+class NarrowRows {
+public:
+    static constexpr int kMaxColumns = 4;
+
+    // The area's columns [minX, maxX] (at most kMaxColumns), from `row` on.
+    NarrowRows(const RasterTriangle& t, int minX, int maxX, int row)
+        : minX_(minX), columnBits_((1u << (maxX - minX + 1)) - 1) {
+        for (int k = 0; k < 3; ++k) {
+            const EdgeFunction& edge = t.edges[k];
+            const std::int64_t value = edge.at(minX, row);
+            first_[k] = _mm_set_epi64x(value + edge.stepX, value);  // columns 0 and 1
+            second_[k] = _mm_set_epi64x(value + 3 * edge.stepX, value + 2 * edge.stepX);
+            down_[k] = _mm_set1_epi64x(edge.stepY);
+        }
+    }
+
+    // The current row's span (coveredSpan's), then the next row.
+    Span next() {
+        const __m128i first = _mm_or_si128(_mm_or_si128(first_[0], first_[1]), first_[2]);
+        const __m128i second = _mm_or_si128(_mm_or_si128(second_[0], second_[1]), second_[2]);
+        // Bit c set where column minX + c is outside an edge (a negative value).
+        const auto outside = static_cast<unsigned>(_mm_movemask_pd(_mm_castsi128_pd(first)) |
+                                                   _mm_movemask_pd(_mm_castsi128_pd(second)) << 2);
+        for (int k = 0; k < 3; ++k) {
+            first_[k] = _mm_add_epi64(first_[k], down_[k]);
+            second_[k] = _mm_add_epi64(second_[k], down_[k]);
+        }
+        const unsigned covered = ~outside & columnBits_;
+        // A row's covered pixels are contiguous.
+        if (covered == 0) return {1, 0};
+        return {minX_ + std::countr_zero(covered), minX_ + 31 - std::countl_zero(covered)};
+    }
+
+private:
+    int minX_;
+    unsigned columnBits_;
+    __m128i first_[3], second_[3], down_[3];
+};
 
 // The fast exact method: spans from the edge functions, or the narrow blocks of `routine` where
 // it has them, shaded by `routine` (the triangle's own, or another width's for the same key).

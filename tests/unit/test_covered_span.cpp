@@ -1,6 +1,6 @@
-// coveredSpan against its definition: the pixels of the row whose centers pass all three edge
-// functions, over random triangles from tiny to huge, on areas narrow enough for the per-pixel
-// search and wide enough for the divisions.
+// coveredSpan and NarrowRows against their definition: the pixels of the row whose centers pass
+// all three edge functions, over random triangles from tiny to huge, on areas narrow enough for
+// the per-pixel search and wide enough for the divisions, odd and even rows.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -17,13 +17,24 @@ bool covers(const RasterTriangle& t, int x, int row) {
     return (t.edges[0].at(x, row) | t.edges[1].at(x, row) | t.edges[2].at(x, row)) >= 0;
 }
 
+// The covered pixels of a row by the pixel tests (contiguous: checked below), empty as {1, 0}.
+Span pixelSpan(const RasterTriangle& t, int row, int minX, int maxX) {
+    Span span{1, 0};
+    for (int x = minX; x <= maxX; ++x) {
+        if (!covers(t, x, row)) continue;
+        if (span.begin > span.end) span.begin = x;
+        span.end = x;
+    }
+    return span;
+}
+
 // Triangles with vertices up to `reach` fixed-point units (1/256 pixel) from a center up to
 // `reach` from the origin, in either winding; rows and areas around them.
 void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
     std::mt19937_64 random(seed);
     std::uniform_int_distribution<std::int64_t> offset(-reach, reach);
     std::uniform_int_distribution<int> width(-1, 12), pick(0, 7);
-    int compared = 0, nonEmpty = 0;
+    int compared = 0, nonEmpty = 0, walked = 0;
     for (int i = 0; i < 4000; ++i) {
         const std::int64_t cx = offset(random), cy = offset(random);
         FixedPoint p[3];
@@ -36,6 +47,21 @@ void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
         const auto pixelNear = [&](std::int64_t fixed) {
             return static_cast<int>((fixed >> kSubpixelBits) + pick(random) - 3);
         };
+        // NarrowRows down the rows of an area up to its width from above the first vertex.
+        for (int j = 0; j < 4; ++j) {
+            const FixedPoint& corner = p[static_cast<std::size_t>(j % 3)];
+            const int minX = pixelNear(corner.x) - pick(random) / 2, top = pixelNear(corner.y) - 3;
+            const int maxX = minX + pick(random) % NarrowRows::kMaxColumns;
+            NarrowRows rows(t, minX, maxX, top);
+            for (int row = top; row < top + 10; ++row) {
+                const Span expected = pixelSpan(t, row, minX, maxX), span = rows.next();
+                ++walked;
+                EXPECT_TRUE(expected.begin > expected.end ? span.begin > span.end
+                                                          : span.begin == expected.begin && span.end == expected.end)
+                    << "NarrowRows row " << row << " [" << minX << ", " << maxX << "] gives [" << span.begin << ", "
+                    << span.end << "], pixels [" << expected.begin << ", " << expected.end << "]";
+            }
+        }
         for (int j = 0; j < 24; ++j) {
             const FixedPoint& corner = p[static_cast<std::size_t>(j % 3)];
             const int row = pixelNear(corner.y);
@@ -61,6 +87,7 @@ void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
         }
     }
     EXPECT_GT(nonEmpty, compared / 20);  // the cases reach covered pixels, not only empty rows
+    EXPECT_GT(walked, 100000);
 }
 
 }  // namespace

@@ -385,3 +385,71 @@ TEST(FragmentPaths, TrianglesWithALevelOfDetailOnLargerTexturesMatchThePerPixelR
     checkTrianglesAgainstThePerPixelReference(8, true, 48, 20);
     checkTrianglesAgainstThePerPixelReference(9, true, 1, 32);
 }
+
+// Areas up to 16 columns wide (the narrow blocks of AVX2 and AVX-512, and the spans of the
+// others) cut from huge triangles (edge values past 32 bits: the blocks step aside), slivers,
+// one-pixel and mesh-sized triangles, from odd and even rows and at the framebuffer's borders:
+// every path against per-pixel coverage.
+TEST(FragmentPaths, NarrowAreasMatchThePerPixelReferenceInEveryPath) {
+    std::mt19937 random(8);
+    std::uniform_int_distribution<int> columns(1, 16), column(0, kWidth - 1), row(0, kHeight - 1), coin(0, 1);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    const std::vector<const FragmentPaths*> allPaths = pathsOfThisCpu();
+    const std::vector<std::uint32_t> color(kWidth * kHeight, 0);
+    const glm::vec4 flatColor{0.3f, 0.6f, 0.9f, 1.0f};
+    std::uint64_t fragments = 0;
+    for (int i = 0; i < 4000; ++i) {
+        WindowVertex v[3] = {randomVertex(random, 30.0f), randomVertex(random, 30.0f), randomVertex(random, 30.0f)};
+        switch (i % 4) {
+        case 0:  // huge: up to 2^17 pixels from the framebuffer's center
+            for (WindowVertex& vertex : v) {
+                vertex.x = kWidth / 2.0f + (vertex.x - kWidth / 2.0f) * 4096.0f;
+                vertex.y = kHeight / 2.0f + (vertex.y - kHeight / 2.0f) * 4096.0f;
+            }
+            break;
+        case 1: {  // a sliver along a random direction, a fraction of a pixel thick
+            const float dx = unit(random) * 60.0f, dy = unit(random) * 60.0f, thickness = unit(random) * 0.4f;
+            v[1].x = v[0].x + dx, v[1].y = v[0].y + dy;
+            v[2].x = v[0].x + dx / 2 - dy * thickness / 60.0f, v[2].y = v[0].y + dy / 2 + dx * thickness / 60.0f;
+            break;
+        }
+        case 2:  // about a pixel
+            for (WindowVertex& vertex : v) vertex.x = v[0].x + unit(random), vertex.y = v[0].y + unit(random);
+            break;
+        default:  // a few pixels, as a dense mesh's
+            for (WindowVertex& vertex : v)
+                vertex.x = v[0].x + 4.0f * unit(random), vertex.y = v[0].y + 4.0f * unit(random);
+        }
+        SetupTriangle setup{{&v[0], &v[1], &v[2]}, {snap(v[0]), snap(v[1]), snap(v[2])}, 0, &flatColor};
+        setup.area = fixedArea(setup.fixed[0], setup.fixed[1], setup.fixed[2]);
+        if (setup.area == 0) continue;
+        DrawState state;
+        state.depthTest = coin(random);
+        state.depthWrite = coin(random);
+        state.shadeModel = coin(random) ? ShadeModel::Smooth : ShadeModel::Flat;
+        // A narrow area anywhere, the framebuffer's first or last columns now and then.
+        int minX = column(random);
+        if (i % 8 == 5) minX = 0;
+        const int maxX = std::min(kWidth - 1, minX + columns(random) - 1);
+        const int y0 = row(random), y1 = row(random);
+        const PixelRect rect{i % 8 == 7 ? kWidth - 1 - (maxX - minX) : minX, i % 8 == 7 ? kWidth - 1 : maxX,
+                             std::min(y0, y1), std::max(y0, y1)};
+        const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
+        for (const FragmentPaths* paths : allPaths) {
+            RasterTriangle triangle;
+            const FragmentChoice choice(*paths, triangleFragmentKey(state, Methods{}), state);
+            if (!prepareTriangle(setup, choice, RasterMethod::Exact, {0, kWidth - 1, 0, kHeight - 1}, triangle)) break;
+            Target expected(color, depth);
+            rasterizeTriangleExact(triangle, rect, expected.framebuffer, expected.counts);
+            if (paths == allPaths.front()) fragments += expected.counts.fragments;
+            for (const FragmentRoutine* routine : {triangle.fragment.routine, &paths->anyKey()}) {
+                Target actual(color, depth);
+                rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, *routine);
+                ASSERT_TRUE(same(expected, actual))
+                    << paths->name() << " key " << describe(triangle.fragment.key)
+                    << (routine == &paths->anyKey() ? " any key" : "") << " triangle " << i;
+            }
+        }
+    }
+    EXPECT_GT(fragments, 20000u);  // the areas reach covered pixels
+}
