@@ -12,6 +12,7 @@
 #include "glrenderer/stats.h"
 #include "clip_vertex.h"
 #include "glrenderer/vertex.h"
+#include "glrenderer/vertex_run.h"
 #include "raster_triangle.h"
 
 namespace glrenderer {
@@ -70,7 +71,7 @@ struct BatchChunk {
         setUpTriangles.reserve(vertexCapacity);  // strips and fans: a triangle per vertex
     }
 
-    std::vector<Vertex> vertices;
+    VertexRun vertices;
     std::vector<std::uint32_t> indices;  // of its indexed batches, into their own vertices
     std::vector<BatchEntry> batches;
     bool lit = false;  // lightChunk has lit its batches' vertices

@@ -88,9 +88,8 @@ void Pipeline::beginPrimitive(const StateRef& state, PrimitiveMode mode, QuadSpl
 }
 
 void Pipeline::keepOpenVertices(std::size_t count) {
-    const auto end = open_.begin() + static_cast<std::ptrdiff_t>(count);
-    chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), end);
-    open_.erase(open_.begin(), end);
+    chunk_->vertices.append(open_.begin(), open_.begin() + count);
+    open_.eraseFront(count);
 }
 
 void Pipeline::closeBatchInPrimitive() {
@@ -113,15 +112,15 @@ std::size_t Pipeline::wrapOpenPrimitive() {
     MYGL_INVARIANT(split.carriedCount <= carried.size());
     const std::size_t carriedCount = std::min(split.carriedCount, carried.size());  // (a bound the compiler sees)
     for (std::size_t i = 0; i < carriedCount; ++i) carried[i] = open_[split.carried[i]];
-    open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(split.drawnFirst));
-    open_.resize(split.drawnCount);
+    open_.eraseFront(split.drawnFirst);
+    open_.truncate(split.drawnCount);
     if (mode == PrimitiveMode::LineLoop) batch_->mode = PrimitiveMode::LineStrip;
     keepOpenVertices(usableVertexCount(batch_->mode, open_.size()));
     closeBatchInPrimitive();
     batch_->mode = mode;
     // (A part that carries all its vertices over starts the primitive again as it was.)
     if (mode == PrimitiveMode::LineLoop && split.carriedCount < count) loopContinued_ = true;
-    open_.assign(carried.begin(), carried.begin() + static_cast<std::ptrdiff_t>(carriedCount));
+    open_.assign(carried.data(), carried.data() + carriedCount);
     return carriedCount;
 }
 
@@ -155,7 +154,7 @@ void Pipeline::endPrimitive() {
     const bool loopClosed = batch_->mode == PrimitiveMode::LineLoop && loopContinued_;
     if (loopClosed) {
         open_.push_back(open_.front());
-        open_.erase(open_.begin());
+        open_.eraseFront(1);
         batch_->mode = PrimitiveMode::LineStrip;
     }
     const BatchEntry& batch = *batch_;
@@ -186,7 +185,7 @@ Pipeline::IndexedPart Pipeline::addIndexedPart(std::size_t vertexCount, std::siz
     closeBatchInPrimitive();  // the part before, or the primitive's vertices so far
     BatchChunk& chunk = *chunk_;
     const std::size_t firstVertex = chunk.vertices.size(), firstIndex = chunk.indices.size();
-    chunk.vertices.resize(firstVertex + vertexCount);
+    chunk.vertices.appendUninitialized(vertexCount);  // the caller fills them whole
     chunk.indices.resize(firstIndex + indexCount);
     batch_->indexCount = indexCount;
     submitted_.vertices += indexCount;
@@ -223,7 +222,7 @@ void Pipeline::lightOpenBatch() {
     if (!batch_->lighting) return;
     const bool twoSided = batch_->state->twoSidedColors;
     batch_->lighting->lightVertices(std::span(chunk_->vertices).subspan(batch_->first), twoSided);
-    batch_->lighting->lightVertices(open_, twoSided);
+    batch_->lighting->lightVertices(std::span(open_.begin(), open_.end()), twoSided);
     batch_->lighting = nullptr;
 }
 

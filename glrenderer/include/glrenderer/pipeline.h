@@ -18,6 +18,7 @@
 #include "glrenderer/state_interner.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
+#include "glrenderer/vertex_run.h"
 
 namespace glrenderer {
 
@@ -60,20 +61,22 @@ public:
     // `state` as the pipeline draws with it, as an interned object for beginPrimitive (see
     // StateInterner): a caller keeps it until its state changes.
     StateRef intern(const DrawState& state);
-    // A new vertex of the open primitive, to be filled in place.
+    // A new vertex of the open primitive, to be filled in place, whole (it is not initialized).
     [[gnu::always_inline]] Vertex& addVertex() {
-        if (cuttable_ && open_.size() == kPartVertices) handOverPart();
-        if (buffer_.full()) wrapBuffer();
+        if (cuttable_ && open_.size() == kPartVertices) [[unlikely]]
+            handOverPart();
+        if (buffer_.full()) [[unlikely]]
+            wrapBuffer();
         buffer_.addVertex();
         ++submitted_.vertices;
-        return open_.emplace_back();
+        return open_.append();
     }
     void endPrimitive();
     // glDrawElements' independent triangles, when acceptsIndexedParts(): the open primitive
     // takes them in parts of at most kPartVertices indices, each a batch of its own with its own
-    // vertices (the elements between its smallest and largest index, filled in place by the
-    // caller) and its indices into them, so that a vertex the part shares is staged once. The
-    // reference draws such a draw from its arrays, not through its immediate-mode buffer.
+    // vertices (the elements between its smallest and largest index, filled in place, whole,
+    // by the caller: they are not initialized) and its indices into them, so that a vertex the part shares is staged
+    // once. The reference draws such a draw from its arrays, not through its immediate-mode buffer.
     struct IndexedPart {
         std::span<Vertex> vertices;
         std::span<std::uint32_t> indices;
@@ -178,7 +181,7 @@ private:
     std::unique_ptr<BatchEntry> batch_;              // the batch being merged: the end of chunk_
     // The open primitive's vertices: kept apart (and hot in this thread's cache) until it ends,
     // then copied into the batch, whose arrays come back from the batch thread.
-    std::vector<Vertex> open_;
+    VertexRun open_;
     bool cuttable_ = false;  // the open primitive goes over in parts
     bool insidePrimitive_ = false;
     bool loopContinued_ = false;               // the open GL_LINE_LOOP wrapped: open_[0] is its first vertex
