@@ -18,7 +18,7 @@
 #include "glrenderer/state_interner.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
-#include "glrenderer/vertex_run.h"
+#include "glrenderer/append_array.h"
 
 namespace glrenderer {
 
@@ -63,13 +63,13 @@ public:
     StateRef intern(const DrawState& state);
     // A new vertex of the open primitive, to be filled in place, whole (it is not initialized).
     [[gnu::always_inline]] Vertex& addVertex() {
-        if (cuttable_ && open_.size() == kPartVertices) [[unlikely]]
+        if (cuttable_ && openCount() == kPartVertices) [[unlikely]]
             handOverPart();
         if (buffer_.full()) [[unlikely]]
             wrapBuffer();
         buffer_.addVertex();
         ++submitted_.vertices;
-        return open_.append();
+        return vertices_->append();
     }
     void endPrimitive();
     // glDrawElements' independent triangles, when acceptsIndexedParts(): the open primitive
@@ -154,7 +154,8 @@ private:
     // one value, then color to another).
     void drawSubmitted();
     // Moves the open primitive's first `count` vertices into the batch.
-    void keepOpenVertices(std::size_t count);
+    void keepOpenVertices(std::size_t count) { openFirst_ += count; }
+    std::size_t openCount() const { return vertices_->size() - openFirst_; }
     // Ends the batch (not a flush of the reference's buffer: a cut of our own).
     void closeBatch();
     // Ends the batch in the middle of a primitive, keeping whether it has colors per vertex.
@@ -179,13 +180,16 @@ private:
     std::pair<StateRef, StateRef> lastFlatVersion_;  // a state and its flat version
     std::unique_ptr<BatchChunk> chunk_;              // being filled on the caller's thread
     std::unique_ptr<BatchEntry> batch_;              // the batch being merged: the end of chunk_
-    // The open primitive's vertices: kept apart (and hot in this thread's cache) until it ends,
-    // then copied into the batch, whose arrays come back from the batch thread.
-    VertexRun open_;
-    bool cuttable_ = false;  // the open primitive goes over in parts
+    // chunk_'s vertices: the batches' kept ones, then from openFirst_ the open primitive's,
+    // staged in place (kept by moving openFirst_ on; moved to the next chunk if the chunk goes
+    // over with a primitive still open).
+    AppendArray<Vertex>* vertices_;
+    std::size_t openFirst_ = 0;
+    AppendArray<Vertex> moved_;  // the open vertices on their way to the next chunk
+    bool cuttable_ = false;      // the open primitive goes over in parts
     bool insidePrimitive_ = false;
-    bool loopContinued_ = false;               // the open GL_LINE_LOOP wrapped: open_[0] is its first vertex
-    ImmediateBuffer buffer_;                   // where the reference's buffer wraps and flushes
+    bool loopContinued_ = false;  // the open GL_LINE_LOOP wrapped: its first open vertex is the loop's first
+    ImmediateBuffer buffer_;      // where the reference's buffer wraps and flushes
     std::unique_ptr<LightingPool> lightings_;  // what batches' `lighting` points to
     std::unique_ptr<BatchDrawer> drawer_;
     std::unique_ptr<BatchThread> thread_;  // null when the pipeline runs on one thread
