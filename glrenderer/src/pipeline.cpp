@@ -92,7 +92,7 @@ void Pipeline::closeBatchInPrimitive() {
     // A full buffer keeps the reference's vertex format.
     const bool colors = batch_->colorsPerVertex, colorInFormat = batch_->colorInFormat;
     closeBatch();
-    batch_->colorsPerVertex = colors, batch_->colorInFormat = colorInFormat;
+    batch_->colorsPerVertex = colorsPerVertex_ = colors, batch_->colorInFormat = colorInFormat;
 }
 
 void Pipeline::handOverPart() {
@@ -136,13 +136,12 @@ void Pipeline::widen(VertexAttribute attribute, int size) {
     if (attribute == VertexAttribute::EdgeFlag) batch_->edgeFlagsPerVertex = true;
 }
 
-void Pipeline::colorPerVertex() {
-    if (batch_->colorsPerVertex) return;
+void Pipeline::startColorsPerVertex() {
     // The open quads' whole quads so far belong to the draw without colors (the reference
     // carries only an incomplete quad over).
     if (batch_->mode == PrimitiveMode::Quads) keepOpenVertices(openCount() - openCount() % 4);
     closeBatch();
-    batch_->colorsPerVertex = true;
+    batch_->colorsPerVertex = colorsPerVertex_ = true;
 }
 
 void Pipeline::endPrimitive() {
@@ -244,7 +243,7 @@ void Pipeline::closeBatch() {
     batch_->first = openFirst_;
     batch_->firstIndex = chunk_->indices.size();
     batch_->indexCount = 0;
-    batch_->colorsPerVertex = false;
+    batch_->colorsPerVertex = colorsPerVertex_ = false;
     if (openFirst_ >= kPartVertices || chunk_->indices.size() >= kPartVertices) handOverChunk();
 }
 

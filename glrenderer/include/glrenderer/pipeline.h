@@ -89,7 +89,9 @@ public:
     // glColor inside glBegin/glEnd. The reference's vertex buffer then gains a color per vertex
     // until its draw ends, and what it held before is drawn as a draw of its own (it decides
     // how flat quads are split).
-    void colorPerVertex();
+    void colorPerVertex() {
+        if (!colorsPerVertex_) startColorsPerVertex();
+    }
     // All three for a whole primitive whose vertices carry their own colors.
     void submit(const StateRef& state, PrimitiveMode mode, std::span<const Vertex> vertices);
     // glVertex, glColor, glNormal, glTexCoord or glEdgeFlag, in or outside glBegin/glEnd, with
@@ -161,6 +163,7 @@ private:
     // Ends the batch in the middle of a primitive, keeping whether it has colors per vertex.
     void closeBatchInPrimitive();
     void handOverPart();
+    void startColorsPerVertex();
     // The reference's buffer is full (or its vertex format grows) inside glBegin/glEnd: the
     // batch is drawn with the open primitive's part so far, which goes on with the vertices the
     // reference copies. Returns their number.
@@ -185,8 +188,9 @@ private:
     // over with a primitive still open).
     AppendArray<Vertex>* vertices_;
     std::size_t openFirst_ = 0;
-    AppendArray<Vertex> moved_;  // the open vertices on their way to the next chunk
-    bool cuttable_ = false;      // the open primitive goes over in parts
+    AppendArray<Vertex> moved_;     // the open vertices on their way to the next chunk
+    bool cuttable_ = false;         // the open primitive goes over in parts
+    bool colorsPerVertex_ = false;  // batch_->colorsPerVertex, tested inline by each glColor
     bool insidePrimitive_ = false;
     bool loopContinued_ = false;  // the open GL_LINE_LOOP wrapped: its first open vertex is the loop's first
     ImmediateBuffer buffer_;      // where the reference's buffer wraps and flushes
