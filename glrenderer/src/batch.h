@@ -12,6 +12,7 @@
 #include "glrenderer/stats.h"
 #include "clip_vertex.h"
 #include "glrenderer/vertex.h"
+#include "glrenderer/append_array.h"
 #include "raster_triangle.h"
 
 namespace glrenderer {
@@ -70,8 +71,8 @@ struct BatchChunk {
         setUpTriangles.reserve(vertexCapacity);  // strips and fans: a triangle per vertex
     }
 
-    std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;  // of its indexed batches, into their own vertices
+    AppendArray<Vertex> vertices;
+    AppendArray<std::uint32_t> indices;  // of its indexed batches, into their own vertices
     std::vector<BatchEntry> batches;
     bool lit = false;  // lightChunk has lit its batches' vertices
     // Set when the chunk's poster has set its triangles up (BatchSetup, into slots of the

@@ -83,6 +83,7 @@ void ImmediateBuffer::updateMaxVertices() {
     // One vertex is kept free for the copy of a line loop's first vertex at glEnd.
     const std::size_t fit = (kBufferBytes - usedBytes_) / (vertexFloats_ * sizeof(float));
     maxVertices_ = fit > 0 ? fit - 1 : 0;
+    updateFullAt();
 }
 
 WrapSplit splitAtWrap(PrimitiveMode mode, std::size_t count, bool continuedLoop) {

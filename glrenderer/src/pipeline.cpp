@@ -51,6 +51,7 @@ std::unique_ptr<BatchChunk> makeChunk() { return std::make_unique<BatchChunk>(kC
 Pipeline::Pipeline(Framebuffer& framebuffer)
     : chunk_(makeChunk()),
       batch_(std::make_unique<BatchEntry>()),
+      vertices_(&chunk_->vertices),
       lightings_(std::make_unique<LightingPool>()),
       drawer_(std::make_unique<BatchDrawer>(framebuffer)) {
     if (workerThreadCount() > 1) {
@@ -62,7 +63,7 @@ Pipeline::Pipeline(Framebuffer& framebuffer)
 
 Pipeline::~Pipeline() = default;
 
-std::size_t Pipeline::batchSize() const { return chunk_->vertices.size() - batch_->first; }
+std::size_t Pipeline::batchSize() const { return openFirst_ - batch_->first; }
 
 StateRef Pipeline::intern(const DrawState& state) { return states_.intern(withCulledFaceModes(state)); }
 
@@ -84,44 +85,40 @@ void Pipeline::beginPrimitive(const StateRef& state, PrimitiveMode mode, QuadSpl
     cuttable_ = canCut(batch);
     insidePrimitive_ = true;
     loopContinued_ = false;
-    open_.clear();
-}
-
-void Pipeline::keepOpenVertices(std::size_t count) {
-    const auto end = open_.begin() + static_cast<std::ptrdiff_t>(count);
-    chunk_->vertices.insert(chunk_->vertices.end(), open_.begin(), end);
-    open_.erase(open_.begin(), end);
+    MYGL_INVARIANT(openCount() == 0);
 }
 
 void Pipeline::closeBatchInPrimitive() {
     // A full buffer keeps the reference's vertex format.
     const bool colors = batch_->colorsPerVertex, colorInFormat = batch_->colorInFormat;
     closeBatch();
-    batch_->colorsPerVertex = colors, batch_->colorInFormat = colorInFormat;
+    batch_->colorsPerVertex = colorsPerVertex_ = colors, batch_->colorInFormat = colorInFormat;
 }
 
 void Pipeline::handOverPart() {
-    keepOpenVertices(open_.size());
+    keepOpenVertices(openCount());
     closeBatchInPrimitive();
 }
 
 std::size_t Pipeline::wrapOpenPrimitive() {
     const PrimitiveMode mode = batch_->mode;
-    const std::size_t count = open_.size();
+    const std::size_t count = openCount();
     const WrapSplit split = splitAtWrap(mode, count, loopContinued_);
     std::array<Vertex, std::tuple_size_v<decltype(split.carried)>> carried;
     MYGL_INVARIANT(split.carriedCount <= carried.size());
     const std::size_t carriedCount = std::min(split.carriedCount, carried.size());  // (a bound the compiler sees)
-    for (std::size_t i = 0; i < carriedCount; ++i) carried[i] = open_[split.carried[i]];
-    open_.erase(open_.begin(), open_.begin() + static_cast<std::ptrdiff_t>(split.drawnFirst));
-    open_.resize(split.drawnCount);
+    for (std::size_t i = 0; i < carriedCount; ++i) carried[i] = (*vertices_)[openFirst_ + split.carried[i]];
+    // The part drawn: drawnCount vertices from drawnFirst.
+    vertices_->erase(openFirst_, split.drawnFirst);
+    vertices_->truncate(openFirst_ + split.drawnCount);
     if (mode == PrimitiveMode::LineLoop) batch_->mode = PrimitiveMode::LineStrip;
-    keepOpenVertices(usableVertexCount(batch_->mode, open_.size()));
+    keepOpenVertices(usableVertexCount(batch_->mode, openCount()));
+    vertices_->truncate(openFirst_);
     closeBatchInPrimitive();
     batch_->mode = mode;
     // (A part that carries all its vertices over starts the primitive again as it was.)
     if (mode == PrimitiveMode::LineLoop && split.carriedCount < count) loopContinued_ = true;
-    open_.assign(carried.begin(), carried.begin() + static_cast<std::ptrdiff_t>(carriedCount));
+    vertices_->append(carried.data(), carried.data() + carriedCount);
     return carriedCount;
 }
 
@@ -139,31 +136,30 @@ void Pipeline::widen(VertexAttribute attribute, int size) {
     if (attribute == VertexAttribute::EdgeFlag) batch_->edgeFlagsPerVertex = true;
 }
 
-void Pipeline::colorPerVertex() {
-    if (batch_->colorsPerVertex) return;
+void Pipeline::startColorsPerVertex() {
     // The open quads' whole quads so far belong to the draw without colors (the reference
     // carries only an incomplete quad over).
-    if (batch_->mode == PrimitiveMode::Quads) keepOpenVertices(open_.size() - open_.size() % 4);
+    if (batch_->mode == PrimitiveMode::Quads) keepOpenVertices(openCount() - openCount() % 4);
     closeBatch();
-    batch_->colorsPerVertex = true;
+    batch_->colorsPerVertex = colorsPerVertex_ = true;
 }
 
 void Pipeline::endPrimitive() {
     if (buffer_.full()) wrapBuffer();
-    const std::size_t inBuffer = open_.size();
+    const std::size_t inBuffer = openCount();
     // A GL_LINE_LOOP that wrapped ends as a line strip back to its first vertex.
     const bool loopClosed = batch_->mode == PrimitiveMode::LineLoop && loopContinued_;
     if (loopClosed) {
-        open_.push_back(open_.front());
-        open_.erase(open_.begin());
+        vertices_->push_back((*vertices_)[openFirst_]);
+        vertices_->erase(openFirst_, 1);
         batch_->mode = PrimitiveMode::LineStrip;
     }
     const BatchEntry& batch = *batch_;
-    const std::size_t count = open_.size();
+    const std::size_t count = openCount();
     ++submitted_.primitivesByMode[static_cast<std::size_t>(loopClosed ? PrimitiveMode::LineLoop : batch.mode)];
     const std::size_t usable = usableVertexCount(batch.mode, count);
     keepOpenVertices(usable);
-    open_.clear();
+    vertices_->truncate(openFirst_);
     cuttable_ = false;
     insidePrimitive_ = false;
     // The reference keeps an incomplete tail's vertices in its buffer, so the next block is not
@@ -184,10 +180,12 @@ bool Pipeline::acceptsIndexedParts(const DrawState& state, PrimitiveMode mode) {
 
 Pipeline::IndexedPart Pipeline::addIndexedPart(std::size_t vertexCount, std::size_t indexCount) {
     closeBatchInPrimitive();  // the part before, or the primitive's vertices so far
+    MYGL_INVARIANT(openCount() == 0);
     BatchChunk& chunk = *chunk_;
     const std::size_t firstVertex = chunk.vertices.size(), firstIndex = chunk.indices.size();
-    chunk.vertices.resize(firstVertex + vertexCount);
-    chunk.indices.resize(firstIndex + indexCount);
+    chunk.vertices.appendUninitialized(vertexCount);  // the caller fills them whole
+    chunk.indices.appendUninitialized(indexCount);
+    openFirst_ = chunk.vertices.size();  // the batch's
     batch_->indexCount = indexCount;
     submitted_.vertices += indexCount;
     return {std::span(chunk.vertices).subspan(firstVertex), std::span(chunk.indices).subspan(firstIndex)};
@@ -222,8 +220,8 @@ void Pipeline::setUnlit() {
 void Pipeline::lightOpenBatch() {
     if (!batch_->lighting) return;
     const bool twoSided = batch_->state->twoSidedColors;
+    // (With the open primitive's so far.)
     batch_->lighting->lightVertices(std::span(chunk_->vertices).subspan(batch_->first), twoSided);
-    batch_->lighting->lightVertices(open_, twoSided);
     batch_->lighting = nullptr;
 }
 
@@ -242,11 +240,11 @@ void Pipeline::closeBatch() {
     // program then reads the current colour as a uniform, which the fragment shader takes exactly).
     const bool textured = closed.state->texture.env != TextureEnv::Off;
     if (!closed.colorsPerVertex && !(textured && closed.colorInFormat)) closed.state = flatVersion(closed.state);
-    batch_->first = chunk_->vertices.size();
+    batch_->first = openFirst_;
     batch_->firstIndex = chunk_->indices.size();
     batch_->indexCount = 0;
-    batch_->colorsPerVertex = false;
-    if (chunk_->vertices.size() >= kPartVertices || chunk_->indices.size() >= kPartVertices) handOverChunk();
+    batch_->colorsPerVertex = colorsPerVertex_ = false;
+    if (openFirst_ >= kPartVertices || chunk_->indices.size() >= kPartVertices) handOverChunk();
 }
 
 StateRef Pipeline::flatVersion(const StateRef& state) {
@@ -262,12 +260,18 @@ StateRef Pipeline::flatVersion(const StateRef& state) {
 void Pipeline::handOverChunk() {
     if (chunk_->batches.empty()) return;
     const DenormalsAreZero denormals;
+    const bool moving = openCount() > 0;  // (rare: glColor after a glBegin's first vertices)
+    if (moving) moved_.assign(vertices_->begin() + openFirst_, vertices_->end());
+    vertices_->truncate(openFirst_);
     if (thread_) {
         chunk_ = thread_->post(std::move(chunk_));
     } else {
         drawer_->draw(*chunk_);
         chunk_->clear();
     }
+    vertices_ = &chunk_->vertices;
+    if (moving) vertices_->append(moved_.begin(), moved_.end());
+    openFirst_ = 0;
     batch_->first = 0;
     batch_->firstIndex = 0;
 }

@@ -26,22 +26,30 @@ void prepareLighting(Context::State& s);
 // glBegin/glEnd): its colour, and with two-sided lighting its back colour.
 void lightVertex(Context::State& s, glrenderer::Vertex& v);
 
+// The pipeline's new vertices are not initialized: their writer fills each whole, the lighting
+// outputs with zeros (the vertex stage lights them).
+[[gnu::always_inline]] inline void clearLightingOutputs(glrenderer::Vertex& v) {
+    v.backColor = glm::vec4(0.0f);
+    v.secondaryColor = v.backSecondaryColor = glm::vec3(0.0f);
+}
+
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
 // The vertex goes to the pipeline as given; its vertex stage transforms it. `size`: glVertex2, 3 or 4.
 // `pushVertex`: the vertex with the current attributes, once the vertex format has its position.
 [[gnu::always_inline]] inline void pushVertex(Context::State& s, const glm::vec4& object) {
+    // Written whole: the pipeline's new vertex is not initialized.
     glrenderer::Vertex& v = s.pipeline.addVertex();
+    // Lit colours come from the current colour unclamped: lit by the pipeline's vertex stage, or
+    // here after glMaterial inside glBegin/glEnd.
+    // (Field by field: a whole Vertex built on the stack first was copied with store-forwarding stalls.)
     v.position = object;
+    v.color = s.lightingEnabled ? s.color : s.vertexColor;
+    clearLightingOutputs(v);
     v.normal = s.normal;
-    v.edgeFlag = s.edgeFlag;
     v.texCoord = s.texCoord;
-    if (!s.lightingEnabled) {
-        v.color = s.vertexColor;
-    } else {
-        v.color = s.color;  // lit by the pipeline's vertex stage, or here after glMaterial inside glBegin/glEnd
-        if (s.lightingOnProgramThread) lightVertex(s, v);
-    }
+    v.edgeFlag = s.edgeFlag;
+    if (s.lightingEnabled && s.lightingOnProgramThread) lightVertex(s, v);
 }
 [[gnu::always_inline]] inline void addVertex(const glm::vec4& object, int size) {
     Context::State* s = currentState();

@@ -2,6 +2,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "glrenderer/draw_state.h"
 
@@ -38,10 +39,13 @@ public:
     void beginPrimitive();
     // Whether the next vertex must go to a new part of the buffer: the last one filled it.
     // (Vertices given without a format, by Pipeline::submit, never fill it.)
-    bool full() const { return !fromArrays_ && maxVertices_ > 0 && vertices_ >= maxVertices_; }
+    bool full() const { return vertices_ >= fullAt_; }
     // glDrawArrays and glDrawElements, while set: the reference draws them from the arrays, not
     // through this buffer, so their vertices neither fill it nor use up its room.
-    void setFromArrays(bool fromArrays) { fromArrays_ = fromArrays; }
+    void setFromArrays(bool fromArrays) {
+        fromArrays_ = fromArrays;
+        updateFullAt();
+    }
     void addVertex() { ++vertices_; }
     // The full buffer is drawn; the open primitive goes on with `carried` vertices copied.
     void wrap(std::size_t carried);
@@ -64,13 +68,18 @@ private:
     static std::size_t index(VertexAttribute attribute) { return static_cast<std::size_t>(attribute); }
     void resetFormat();
     void updateMaxVertices();
+    // (One comparison for each glVertex.)
+    void updateFullAt() {
+        fullAt_ = fromArrays_ || maxVertices_ == 0 ? std::numeric_limits<std::size_t>::max() : maxVertices_;
+    }
 
     std::array<int, kVertexAttributeCount> sizes_{};
     std::size_t vertexFloats_ = 0;
-    std::size_t usedBytes_ = 0;    // by earlier draws, in the current buffer object
-    std::size_t vertices_ = 0;     // since the last draw
-    std::size_t maxVertices_ = 0;  // 0 until the format has an attribute
-    std::size_t primitives_ = 0;   // blocks since the last draw, merged ones counted once
+    std::size_t usedBytes_ = 0;                                     // by earlier draws, in the current buffer object
+    std::size_t vertices_ = 0;                                      // since the last draw
+    std::size_t maxVertices_ = 0;                                   // 0 until the format has an attribute
+    std::size_t fullAt_ = std::numeric_limits<std::size_t>::max();  // vertices_ that make it full()
+    std::size_t primitives_ = 0;  // blocks since the last draw, merged ones counted once
     // The previous block of this draw, which the next one may merge with.
     PrimitiveMode lastMode_ = PrimitiveMode::Points;
     bool lastMergeable_ = false;

@@ -18,6 +18,7 @@
 #include "glrenderer/state_interner.h"
 #include "glrenderer/stats.h"
 #include "glrenderer/vertex.h"
+#include "glrenderer/append_array.h"
 
 namespace glrenderer {
 
@@ -60,20 +61,22 @@ public:
     // `state` as the pipeline draws with it, as an interned object for beginPrimitive (see
     // StateInterner): a caller keeps it until its state changes.
     StateRef intern(const DrawState& state);
-    // A new vertex of the open primitive, to be filled in place.
+    // A new vertex of the open primitive, to be filled in place, whole (it is not initialized).
     [[gnu::always_inline]] Vertex& addVertex() {
-        if (cuttable_ && open_.size() == kPartVertices) handOverPart();
-        if (buffer_.full()) wrapBuffer();
+        if (cuttable_ && openCount() == kPartVertices) [[unlikely]]
+            handOverPart();
+        if (buffer_.full()) [[unlikely]]
+            wrapBuffer();
         buffer_.addVertex();
         ++submitted_.vertices;
-        return open_.emplace_back();
+        return vertices_->append();
     }
     void endPrimitive();
     // glDrawElements' independent triangles, when acceptsIndexedParts(): the open primitive
     // takes them in parts of at most kPartVertices indices, each a batch of its own with its own
-    // vertices (the elements between its smallest and largest index, filled in place by the
-    // caller) and its indices into them, so that a vertex the part shares is staged once. The
-    // reference draws such a draw from its arrays, not through its immediate-mode buffer.
+    // vertices (the elements between its smallest and largest index, filled in place, whole,
+    // by the caller: they are not initialized) and its indices into them, so that a vertex the part shares is staged
+    // once. The reference draws such a draw from its arrays, not through its immediate-mode buffer.
     struct IndexedPart {
         std::span<Vertex> vertices;
         std::span<std::uint32_t> indices;
@@ -88,7 +91,9 @@ public:
     // glColor inside glBegin/glEnd. The reference's vertex buffer then gains a color per vertex
     // until its draw ends, and what it held before is drawn as a draw of its own (it decides
     // how flat quads are split).
-    void colorPerVertex();
+    void colorPerVertex() {
+        if (!colorsPerVertex_) startColorsPerVertex();
+    }
     // All three for a whole primitive whose vertices carry their own colors.
     void submit(const StateRef& state, PrimitiveMode mode, std::span<const Vertex> vertices);
     // glVertex, glColor, glNormal, glTexCoord or glEdgeFlag, in or outside glBegin/glEnd, with
@@ -153,12 +158,14 @@ private:
     // one value, then color to another).
     void drawSubmitted();
     // Moves the open primitive's first `count` vertices into the batch.
-    void keepOpenVertices(std::size_t count);
+    void keepOpenVertices(std::size_t count) { openFirst_ += count; }
+    std::size_t openCount() const { return vertices_->size() - openFirst_; }
     // Ends the batch (not a flush of the reference's buffer: a cut of our own).
     void closeBatch();
     // Ends the batch in the middle of a primitive, keeping whether it has colors per vertex.
     void closeBatchInPrimitive();
     void handOverPart();
+    void startColorsPerVertex();
     // The reference's buffer is full (or its vertex format grows) inside glBegin/glEnd: the
     // batch is drawn with the open primitive's part so far, which goes on with the vertices the
     // reference copies. Returns their number.
@@ -178,13 +185,17 @@ private:
     std::pair<StateRef, StateRef> lastFlatVersion_;  // a state and its flat version
     std::unique_ptr<BatchChunk> chunk_;              // being filled on the caller's thread
     std::unique_ptr<BatchEntry> batch_;              // the batch being merged: the end of chunk_
-    // The open primitive's vertices: kept apart (and hot in this thread's cache) until it ends,
-    // then copied into the batch, whose arrays come back from the batch thread.
-    std::vector<Vertex> open_;
-    bool cuttable_ = false;  // the open primitive goes over in parts
+    // chunk_'s vertices: the batches' kept ones, then from openFirst_ the open primitive's,
+    // staged in place (kept by moving openFirst_ on; moved to the next chunk if the chunk goes
+    // over with a primitive still open).
+    AppendArray<Vertex>* vertices_;
+    std::size_t openFirst_ = 0;
+    AppendArray<Vertex> moved_;     // the open vertices on their way to the next chunk
+    bool cuttable_ = false;         // the open primitive goes over in parts
+    bool colorsPerVertex_ = false;  // batch_->colorsPerVertex, tested inline by each glColor
     bool insidePrimitive_ = false;
-    bool loopContinued_ = false;               // the open GL_LINE_LOOP wrapped: open_[0] is its first vertex
-    ImmediateBuffer buffer_;                   // where the reference's buffer wraps and flushes
+    bool loopContinued_ = false;  // the open GL_LINE_LOOP wrapped: its first open vertex is the loop's first
+    ImmediateBuffer buffer_;      // where the reference's buffer wraps and flushes
     std::unique_ptr<LightingPool> lightings_;  // what batches' `lighting` points to
     std::unique_ptr<BatchDrawer> drawer_;
     std::unique_ptr<BatchThread> thread_;  // null when the pipeline runs on one thread
