@@ -15,7 +15,6 @@ template <class T>
 class AppendArray {
 public:
     std::size_t size() const { return size_; }
-    bool empty() const { return size_ == 0; }
     T* begin() { return storage_.get(); }
     T* end() { return storage_.get() + size_; }
     const T* begin() const { return storage_.get(); }
