@@ -199,4 +199,34 @@ TEST(FuzzFindings, ImageDrawnAfterAPointKeepsItsTextureUntilDrawn) {
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
+// A call with several errors records the one the reference checks first (GL leaves the choice
+// open; the fuzzer's seeds 500, 528, 733, 949): glTexImage's format and type before its internal
+// format and size, glTexSubImage's negative size before an undefined level, glPixelMap's size
+// before its map.
+TEST(FuzzFindings, CallsWithSeveralErrorsRecordTheReferencesFirst) {
+    const auto results = onBothBackends<std::vector<GLenum>>([] {
+        std::vector<GLubyte> data(4100, 7);
+        const GLfloat values[16] = {};
+        std::vector<GLenum> errors;
+        glTexImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 1, 0, 0, data.data());
+        errors.push_back(glGetError());
+        glTexImage2D(GL_TEXTURE_2D, 1, 0, 0, 0, 1, 0, 0, data.data());
+        errors.push_back(glGetError());
+        glTexImage2D(GL_TEXTURE_2D, 0, 0, 3, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, data.data());
+        errors.push_back(glGetError());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 3, 3, 0, GL_DEPTH_COMPONENT, GL_FLOAT, data.data());
+        errors.push_back(glGetError());
+        glTexImage1D(GL_TEXTURE_1D, 0, 0, -1, 0, GL_RGBA, 0, data.data());
+        errors.push_back(glGetError());
+        glTexSubImage2D(GL_TEXTURE_2D, 1, 0, 0, -1, 0, 0, 0, data.data());
+        errors.push_back(glGetError());
+        glPixelMapfv(0, 0, values);
+        errors.push_back(glGetError());
+        glPixelMapfv(0, 3, values);
+        errors.push_back(glGetError());
+        return errors;
+    });
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
 }  // namespace
