@@ -222,8 +222,10 @@ void copyTexSubImage(GLenum target, int dims, GLint level, GLint xOffset, GLint 
                      GLsizei width, GLsizei height) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    const GLenum error = texSubImageError(*s, target, dims, level, width, height, GL_RGBA, GL_FLOAT);
+    // The reference checks the level here before the size.
+    const GLenum error = texSubImageError(*s, target, dims, level, 0, 0, GL_RGBA, GL_FLOAT);
     if (error != GL_NO_ERROR) return setError(*s, error);
+    if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
     texSubImage(target, dims, level, xOffset, yOffset, width, height,
                 transferred(*s, UnpackedImage{readFramebuffer(*s, x, y, width, height), {}, {}, 0, true}));
 }

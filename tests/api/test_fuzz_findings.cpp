@@ -229,4 +229,22 @@ TEST(FuzzFindings, CallsWithSeveralErrorsRecordTheReferencesFirst) {
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
+// glReadPixels of GL_LUMINANCE_ALPHA under a pixel transfer clamps the alpha to [0, 1] as it
+// clamps the colours it sums (the fuzzer's seed 743: an alpha bias of 1.24 read as floats).
+TEST(FuzzFindings, LuminanceAlphaReadUnderATransferClampsAlpha) {
+    const auto results = onBothBackends<std::vector<GLfloat>>([] {
+        glClearColor(0.2f, 0.3f, 0.4f, 0.5f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        std::vector<GLfloat> read;
+        for (GLfloat bias : {1.23936641f, -0.9f}) {
+            glPixelTransferf(GL_ALPHA_BIAS, bias);
+            GLfloat pixel[2] = {};
+            glReadPixels(0, 0, 1, 1, GL_LUMINANCE_ALPHA, GL_FLOAT, pixel);
+            read.insert(read.end(), pixel, pixel + 2);
+        }
+        return read;
+    });
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
 }  // namespace
