@@ -37,7 +37,7 @@ void lightVertex(Context::State& s, glrenderer::Vertex& v);
     v.edgeFlag = s.edgeFlag;
     v.texCoord = s.texCoord;
     if (!s.lightingEnabled) {
-        v.color = s.vertexColor;
+        v.color = s.pipeline.colorInFormat() ? s.vertexColor : glrenderer::saturateConstant(s.color);
     } else {
         v.color = s.color;  // lit by the pipeline's vertex stage, or here after glMaterial inside glBegin/glEnd
         if (s.lightingOnProgramThread) lightVertex(s, v);

@@ -4,6 +4,7 @@
 
 #include <glad/gl.h>
 
+#include <limits>
 #include <vector>
 
 #include "backends.h"
@@ -244,6 +245,46 @@ TEST(FuzzFindings, LuminanceAlphaReadUnderATransferClampsAlpha) {
         }
         return read;
     });
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
+// A NaN colour component is drawn as 0 when the colour is not in the vertex format (the current
+// colour, given outside glBegin/glEnd: the reference takes it as a constant), and as 1 when the
+// vertices carry it (its vertex stage saturates them). The fuzzer's seed 623: glColor4f(0, 0,
+// NaN, 0); glRectf drew blue 255.
+TEST(FuzzFindings, NanColourIsZeroUnlessTheVerticesCarryIt) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const auto results = onBothBackends<std::vector<GLubyte>>(
+        [nan] {
+            std::vector<GLubyte> pixels;
+            for (int variant = 0; variant < 4; ++variant) {
+                glClear(GL_COLOR_BUFFER_BIT);
+                if (variant == 0) {  // the current colour
+                    glColor4f(0.5f, 0.5f, nan, 1.0f);
+                    glRectf(-1, -1, 1, 1);
+                } else if (variant == 1) {  // per vertex
+                    glBegin(GL_POINTS);
+                    glColor4f(0.5f, nan, 0.5f, 1.0f);
+                    glVertex2f(0, 0);
+                    glEnd();
+                } else if (variant == 2) {  // the current colour again (glClear forgot the format)
+                    glColor4f(0.5f, 0.5f, 0.5f, nan);
+                    glBegin(GL_POINTS);
+                    glVertex2f(0, 0);
+                    glEnd();
+                } else {
+                    glShadeModel(GL_FLAT);
+                    glColor4f(nan, 0.5f, 0.5f, 1.0f);
+                    glBegin(GL_TRIANGLES);
+                    glVertex2f(-1, -1), glVertex2f(3, -1), glVertex2f(-1, 3);
+                    glEnd();
+                }
+                pixels.resize(pixels.size() + 4);
+                glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data() + pixels.size() - 4);
+            }
+            return pixels;
+        },
+        1, 1);
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
