@@ -288,4 +288,36 @@ TEST(FuzzFindings, NanColourIsZeroUnlessTheVerticesCarryIt) {
     EXPECT_EQ(results.mygl, results.osmesa);
 }
 
+// NaN in LIT's inputs lights with the ambient term only, as the reference's LIT does (x > 0 and
+// max(y, 0) fail over to 0): an infinite normal under GL_LIGHT7 with shininess 1 (the fuzzer's
+// seed 610), and a local viewer's half vector of a vertex on the eye axis, normalize(0, 0, 0)
+// (seed 977). MyGL's NaN weights made the colour NaN, saturated to 255.
+TEST(FuzzFindings, NanLightingProductsLeaveTheAmbientTerm) {
+    const auto results = onBothBackends<std::vector<GLubyte>>(
+        [] {
+            std::vector<GLubyte> pixels;
+            for (int variant = 0; variant < 2; ++variant) {
+                glClear(GL_COLOR_BUFFER_BIT);
+                glEnable(GL_LIGHTING);
+                glEnable(variant == 0 ? GL_LIGHT7 : GL_LIGHT1);
+                glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 1.0f);
+                glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, variant);
+                glBegin(GL_POINTS);
+                if (variant == 0) {
+                    glNormal3d(-1e300, 0.0, 0.0);
+                    glVertex2f(0, 0);
+                } else {
+                    glVertex4i(0, 0, 1, 1);
+                }
+                glEnd();
+                glDisable(variant == 0 ? GL_LIGHT7 : GL_LIGHT1);
+                pixels.resize(pixels.size() + 4);
+                glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data() + pixels.size() - 4);
+            }
+            return pixels;
+        },
+        1, 1);
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
 }  // namespace
