@@ -94,12 +94,13 @@ struct LightingLanes {
         return L::select(L::equal(base, L::floats(0.0f)), L::floats(0.0f), result);
     }
 
-    // LIT's z: x > 0 ? pow(max(y, 0), clamp(w, -128, 128)) : 0, as NIR lowers it.
+    // LIT's z: x > 0 ? pow(max(y, 0), clamp(w, -128, 128)) : 0, as NIR lowers it. A NaN x or y
+    // gives 0 (the comparison fails; the max takes the other operand).
     static Float litSpecular(Float x, Float y, Float w) {
         const Float low = L::floats(-128.0f), high = L::floats(128.0f);
         const Float clamped = L::select(L::lessThan(w, low), low, L::select(L::lessThan(high, w), high, w));
-        const Float specular = power(L::max(L::floats(0.0f), y), clamped);
-        return L::select(L::lessEqual(x, L::floats(0.0f)), L::floats(0.0f), specular);
+        const Float specular = power(L::max(y, L::floats(0.0f)), clamped);
+        return L::select(L::lessThan(L::floats(0.0f), x), specular, L::floats(0.0f));
     }
 
     // Mesa's TRANSFORM_POINT: m * p, each row summed left to right.
@@ -303,7 +304,7 @@ private:
         Float diffuseWeight, specularWeight;
         if (hasAttenuation) {
             const Float exponent = p_.shininessIsZero ? normalDotLight : shininess;
-            diffuseWeight = L::mul(L::max(zero, normalDotLight), attenuation);
+            diffuseWeight = L::mul(L::max(normalDotLight, zero), attenuation);  // LIT's y: NaN gives 0
             specularWeight = L::mul(Lanes::litSpecular(normalDotLight, normalDotHalf, exponent), attenuation);
             sum = Lanes::scaleAdd(attenuation, ambient, sum);  // LIT's x (1) times the attenuation
         } else {
@@ -311,7 +312,7 @@ private:
                 diffuseWeight = L::max(normalDotLight, zero);
                 specularWeight = L::select(L::lessThan(zero, normalDotLight), one, zero);
             } else {
-                diffuseWeight = L::max(zero, normalDotLight);
+                diffuseWeight = L::max(normalDotLight, zero);  // LIT's y: NaN gives 0
                 specularWeight = Lanes::litSpecular(normalDotLight, normalDotHalf, shininess);
             }
             sum = Lanes::sum(ambient, sum);

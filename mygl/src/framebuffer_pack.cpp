@@ -114,8 +114,8 @@ void packColors(std::span<const std::uint32_t> rgba8, int width, int height, GLe
     const bool swap = modes.swapBytes;
     const std::size_t step = bytesOfType(type);
     if (pixel.transfersColor()) {
-        // Through floats (each byte times 1/255) and the transfer, unclamped; luminance as the
-        // sum of the components clamped to [0, 1], clamped again.
+        // Through floats (each byte times 1/255) and the transfer, unclamped; luminance formats
+        // clamp every component to [0, 1] (alpha too), the sum again.
         const std::array<int, 4> order = byteOrderOf(format);
         packRows(width, height, format, type, modes, target, [&](std::uint8_t* p, std::size_t i) {
             glm::vec4 c;
@@ -124,7 +124,7 @@ void packColors(std::span<const std::uint32_t> rgba8, int width, int height, GLe
             if (format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA) {
                 const auto unit = [](float v) { return std::clamp(v, 0.0f, 1.0f); };
                 putFloatComponent(p, std::min(unit(c.r) + unit(c.g) + unit(c.b), 1.0f), type, swap);
-                if (format == GL_LUMINANCE_ALPHA) putFloatComponent(p + step, c.a, type, swap);
+                if (format == GL_LUMINANCE_ALPHA) putFloatComponent(p + step, unit(c.a), type, swap);
                 return;
             }
             for (int k = 0; k < 4 && order[static_cast<std::size_t>(k)] >= 0; ++k, p += step) {

@@ -140,7 +140,9 @@ void pixelTransfer(GLenum name, float value) {
     }
 }
 
-bool isIndexMap(GLenum map) { return map <= GL_PIXEL_MAP_I_TO_A; }  // I_TO_I, S_TO_S, I_TO_R..A
+bool isIndexMap(GLenum map) {
+    return map >= GL_PIXEL_MAP_I_TO_I && map <= GL_PIXEL_MAP_I_TO_A;
+}  // I_TO_I, S_TO_S, I_TO_R..A
 
 // glPixelMap: `convert` turns entry i into the map's float value. Index maps (I_TO_I, S_TO_S)
 // keep values as given; colour maps take them as normalized.
@@ -148,10 +150,11 @@ template <class T>
 void pixelMap(GLenum map, GLsizei size, const T* values) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    if (map < GL_PIXEL_MAP_I_TO_I || map > GL_PIXEL_MAP_A_TO_A) return setError(*s, GL_INVALID_ENUM);
+    // The size before the map, as the reference checks them (a call with both wrong: GL_INVALID_VALUE).
     if (size < 1 || size > PixelMaps::kMaxSize) return setError(*s, GL_INVALID_VALUE);
     // Maps indexed by colour or stencil indices must have a power-of-two size.
     if (isIndexMap(map) && !std::has_single_bit(static_cast<unsigned>(size))) return setError(*s, GL_INVALID_VALUE);
+    if (map < GL_PIXEL_MAP_I_TO_I || map > GL_PIXEL_MAP_A_TO_A) return setError(*s, GL_INVALID_ENUM);
     if (!values) return;
     std::vector<float>& target = s->pixelMaps.of(map);
     target.resize(static_cast<std::size_t>(size));

@@ -18,13 +18,21 @@ bool isTarget(GLenum target, int dims) {
 }
 bool isProxy(GLenum target) { return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D; }
 
-// A colour or colour-index image for glTexImage or glTexSubImage: stencil and depth images have
-// no place in a colour texture.
-GLenum pixelFormatError(GLenum format, GLenum type) {
+// The format and type as GL names them (GL_BITMAP only for index images).
+GLenum pixelEnumsError(GLenum format, GLenum type) {
     if (!isPixelFormat(format) || !isPixelType(type)) return GL_INVALID_ENUM;
     if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return GL_INVALID_ENUM;
-    if (format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT) return GL_INVALID_OPERATION;
     return GL_NO_ERROR;
+}
+// Stencil and depth images have no place in a colour texture.
+GLenum colorFormatError(GLenum format) {
+    return format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT ? GL_INVALID_OPERATION : GL_NO_ERROR;
+}
+
+// A colour or colour-index image for glTexImage or glTexSubImage.
+GLenum pixelFormatError(GLenum format, GLenum type) {
+    if (const GLenum error = pixelEnumsError(format, type)) return error;
+    return colorFormatError(format);
 }
 
 // The image's colours after the pixel transfer as it is now.
@@ -59,14 +67,18 @@ void defineLevel(TextureLevel& level, int width, int height, int border, GLint i
 // The checks of glTexImage before the data is read; GL_NO_ERROR when the call may proceed.
 GLenum texImageError(GLenum target, int dims, GLint level, GLint internalFormat, GLsizei width, GLsizei height,
                      GLint border, GLenum format, GLenum type) {
+    // In the reference's order (a call with several errors records the first).
     if (!isTarget(target, dims)) return GL_INVALID_ENUM;
     if (level < 0 || level >= kMaxTextureLevels) return GL_INVALID_VALUE;
-    if (!textureBaseOf(internalFormat)) return GL_INVALID_VALUE;
     if (border != 0 && border != 1) return GL_INVALID_VALUE;
+    if (width < 0 || height < 0) return GL_INVALID_VALUE;
+    if (const GLenum error = pixelEnumsError(format, type)) return error;
+    if (!textureBaseOf(internalFormat)) return GL_INVALID_VALUE;
+    if (const GLenum error = colorFormatError(format)) return error;
     const int limit = (kMaxTextureSize >> level) + 2 * border;
     if (width < 2 * border || width > limit) return GL_INVALID_VALUE;
     if (dims == 2 && (height < 2 * border || height > limit)) return GL_INVALID_VALUE;
-    return pixelFormatError(format, type);
+    return GL_NO_ERROR;
 }
 
 void texImage(GLenum target, GLint level, GLint internalFormat, GLsizei width, GLsizei height, GLint border,
@@ -118,8 +130,7 @@ void texSubImage(GLenum target, int dims, GLint level, GLint x, GLint y, GLsizei
     TextureObject& texture = boundTexture(s->textures, target);
     TextureLevel& defined = texture.levels[static_cast<std::size_t>(level)];
     const int b = defined.border;
-    if (x < -b || y < -b || width < 0 || height < 0 || x + width > defined.width - b ||
-        (dims == 2 && y + height > defined.height - b)) {
+    if (x < -b || y < -b || x + width > defined.width - b || (dims == 2 && y + height > defined.height - b)) {
         return setError(*s, GL_INVALID_VALUE);
     }
     if (width == 0 || height == 0) return;
@@ -137,9 +148,12 @@ void texSubImage(GLenum target, int dims, GLint level, GLint x, GLint y, GLsizei
     texture.snapshot.reset();  // batches queued with the old images keep them
 }
 
-GLenum texSubImageError(Context::State& s, GLenum target, int dims, GLint level, GLenum format, GLenum type) {
+// In the reference's order: a negative size before an undefined level.
+GLenum texSubImageError(Context::State& s, GLenum target, int dims, GLint level, GLsizei width, GLsizei height,
+                        GLenum format, GLenum type) {
     if (!isTarget(target, dims) || isProxy(target)) return GL_INVALID_ENUM;
     if (level < 0 || level >= kMaxTextureLevels) return GL_INVALID_VALUE;
+    if (width < 0 || height < 0) return GL_INVALID_VALUE;
     if (!boundTexture(s.textures, target).levels[static_cast<std::size_t>(level)].defined) return GL_INVALID_OPERATION;
     return pixelFormatError(format, type);
 }
@@ -150,7 +164,7 @@ void texSubImageCall(GLenum target, int dims, GLint level, GLint x, GLint y, GLs
     if (!s) return;
     const bool compiling = s->lists.compiling();
     if (!compiling && s->insideBeginEnd) return setError(*s, GL_INVALID_OPERATION);
-    GLenum error = compiling ? GL_NO_ERROR : texSubImageError(*s, target, dims, level, format, type);
+    GLenum error = compiling ? GL_NO_ERROR : texSubImageError(*s, target, dims, level, width, height, format, type);
     UnpackedImage image;
     if (error == GL_NO_ERROR && isPixelFormat(format) && isPixelType(type) && width > 0 && height > 0) {
         image = unpackTextureImage(pixels, width, height, format, type, s->unpack,
@@ -159,7 +173,7 @@ void texSubImageCall(GLenum target, int dims, GLint level, GLint x, GLint y, GLs
     auto call = [=, image = std::move(image)] {
         Context::State* now = stateOutsideBeginEnd();
         if (!now) return;
-        const GLenum found = texSubImageError(*now, target, dims, level, format, type);
+        const GLenum found = texSubImageError(*now, target, dims, level, width, height, format, type);
         if (found != GL_NO_ERROR) return setError(*now, found);
         texSubImage(target, dims, level, x, y, width, height, transferred(*now, image));
     };
@@ -208,7 +222,8 @@ void copyTexSubImage(GLenum target, int dims, GLint level, GLint xOffset, GLint 
                      GLsizei width, GLsizei height) {
     Context::State* s = stateOutsideBeginEnd();
     if (!s) return;
-    const GLenum error = texSubImageError(*s, target, dims, level, GL_RGBA, GL_FLOAT);
+    // The reference checks the level here before the size.
+    const GLenum error = texSubImageError(*s, target, dims, level, 0, 0, GL_RGBA, GL_FLOAT);
     if (error != GL_NO_ERROR) return setError(*s, error);
     if (width < 0 || height < 0) return setError(*s, GL_INVALID_VALUE);
     texSubImage(target, dims, level, xOffset, yOffset, width, height,

@@ -41,10 +41,13 @@ void lightVertex(Context::State& s, glrenderer::Vertex& v);
     // Written whole: the pipeline's new vertex is not initialized.
     glrenderer::Vertex& v = s.pipeline.addVertex();
     // Lit colours come from the current colour unclamped: lit by the pipeline's vertex stage, or
-    // here after glMaterial inside glBegin/glEnd.
+    // here after glMaterial inside glBegin/glEnd. Unlit, a colour the vertex format does not hold
+    // is the reference's constant (a NaN component 0).
     // (Field by field: a whole Vertex built on the stack first was copied with store-forwarding stalls.)
     v.position = object;
-    v.color = s.lightingEnabled ? s.color : s.vertexColor;
+    v.color = s.lightingEnabled            ? s.color
+              : s.pipeline.colorInFormat() ? s.vertexColor
+                                           : glrenderer::saturateConstant(s.color);
     clearLightingOutputs(v);
     v.normal = s.normal;
     v.texCoord = s.texCoord;

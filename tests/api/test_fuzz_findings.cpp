@@ -4,6 +4,7 @@
 
 #include <glad/gl.h>
 
+#include <limits>
 #include <vector>
 
 #include "backends.h"
@@ -194,6 +195,126 @@ TEST(FuzzFindings, ImageDrawnAfterAPointKeepsItsTextureUntilDrawn) {
             std::vector<GLubyte> pixel(4);
             glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel.data());
             return pixel;
+        },
+        1, 1);
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
+// A call with several errors records the one the reference checks first (GL leaves the choice
+// open; the fuzzer's seeds 500, 528, 733, 949): glTexImage's format and type before its internal
+// format and size, glTexSubImage's negative size before an undefined level, glPixelMap's size
+// before its map.
+TEST(FuzzFindings, CallsWithSeveralErrorsRecordTheReferencesFirst) {
+    const auto results = onBothBackends<std::vector<GLenum>>([] {
+        std::vector<GLubyte> data(4100, 7);
+        const GLfloat values[16] = {};
+        std::vector<GLenum> errors;
+        glTexImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 1, 0, 0, data.data());
+        errors.push_back(glGetError());
+        glTexImage2D(GL_TEXTURE_2D, 1, 0, 0, 0, 1, 0, 0, data.data());
+        errors.push_back(glGetError());
+        glTexImage2D(GL_TEXTURE_2D, 0, 0, 3, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, data.data());
+        errors.push_back(glGetError());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 3, 3, 0, GL_DEPTH_COMPONENT, GL_FLOAT, data.data());
+        errors.push_back(glGetError());
+        glTexImage1D(GL_TEXTURE_1D, 0, 0, -1, 0, GL_RGBA, 0, data.data());
+        errors.push_back(glGetError());
+        glTexSubImage2D(GL_TEXTURE_2D, 1, 0, 0, -1, 0, 0, 0, data.data());
+        errors.push_back(glGetError());
+        glPixelMapfv(0, 0, values);
+        errors.push_back(glGetError());
+        glPixelMapfv(0, 3, values);
+        errors.push_back(glGetError());
+        return errors;
+    });
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
+// glReadPixels of GL_LUMINANCE_ALPHA under a pixel transfer clamps the alpha to [0, 1] as it
+// clamps the colours it sums (the fuzzer's seed 743: an alpha bias of 1.24 read as floats).
+TEST(FuzzFindings, LuminanceAlphaReadUnderATransferClampsAlpha) {
+    const auto results = onBothBackends<std::vector<GLfloat>>([] {
+        glClearColor(0.2f, 0.3f, 0.4f, 0.5f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        std::vector<GLfloat> read;
+        for (GLfloat bias : {1.23936641f, -0.9f}) {
+            glPixelTransferf(GL_ALPHA_BIAS, bias);
+            GLfloat pixel[2] = {};
+            glReadPixels(0, 0, 1, 1, GL_LUMINANCE_ALPHA, GL_FLOAT, pixel);
+            read.insert(read.end(), pixel, pixel + 2);
+        }
+        return read;
+    });
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
+// A NaN colour component is drawn as 0 when the colour is not in the vertex format (the current
+// colour, given outside glBegin/glEnd: the reference takes it as a constant), and as 1 when the
+// vertices carry it (its vertex stage saturates them). The fuzzer's seed 623: glColor4f(0, 0,
+// NaN, 0); glRectf drew blue 255.
+TEST(FuzzFindings, NanColourIsZeroUnlessTheVerticesCarryIt) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const auto results = onBothBackends<std::vector<GLubyte>>(
+        [nan] {
+            std::vector<GLubyte> pixels;
+            for (int variant = 0; variant < 4; ++variant) {
+                glClear(GL_COLOR_BUFFER_BIT);
+                if (variant == 0) {  // the current colour
+                    glColor4f(0.5f, 0.5f, nan, 1.0f);
+                    glRectf(-1, -1, 1, 1);
+                } else if (variant == 1) {  // per vertex
+                    glBegin(GL_POINTS);
+                    glColor4f(0.5f, nan, 0.5f, 1.0f);
+                    glVertex2f(0, 0);
+                    glEnd();
+                } else if (variant == 2) {  // the current colour again (glClear forgot the format)
+                    glColor4f(0.5f, 0.5f, 0.5f, nan);
+                    glBegin(GL_POINTS);
+                    glVertex2f(0, 0);
+                    glEnd();
+                } else {
+                    glShadeModel(GL_FLAT);
+                    glColor4f(nan, 0.5f, 0.5f, 1.0f);
+                    glBegin(GL_TRIANGLES);
+                    glVertex2f(-1, -1), glVertex2f(3, -1), glVertex2f(-1, 3);
+                    glEnd();
+                }
+                pixels.resize(pixels.size() + 4);
+                glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data() + pixels.size() - 4);
+            }
+            return pixels;
+        },
+        1, 1);
+    EXPECT_EQ(results.mygl, results.osmesa);
+}
+
+// NaN in LIT's inputs lights with the ambient term only, as the reference's LIT does (x > 0 and
+// max(y, 0) fail over to 0): an infinite normal under GL_LIGHT7 with shininess 1 (the fuzzer's
+// seed 610), and a local viewer's half vector of a vertex on the eye axis, normalize(0, 0, 0)
+// (seed 977). MyGL's NaN weights made the colour NaN, saturated to 255.
+TEST(FuzzFindings, NanLightingProductsLeaveTheAmbientTerm) {
+    const auto results = onBothBackends<std::vector<GLubyte>>(
+        [] {
+            std::vector<GLubyte> pixels;
+            for (int variant = 0; variant < 2; ++variant) {
+                glClear(GL_COLOR_BUFFER_BIT);
+                glEnable(GL_LIGHTING);
+                glEnable(variant == 0 ? GL_LIGHT7 : GL_LIGHT1);
+                glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 1.0f);
+                glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, variant);
+                glBegin(GL_POINTS);
+                if (variant == 0) {
+                    glNormal3d(-1e300, 0.0, 0.0);
+                    glVertex2f(0, 0);
+                } else {
+                    glVertex4i(0, 0, 1, 1);
+                }
+                glEnd();
+                glDisable(variant == 0 ? GL_LIGHT7 : GL_LIGHT1);
+                pixels.resize(pixels.size() + 4);
+                glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data() + pixels.size() - 4);
+            }
+            return pixels;
         },
         1, 1);
     EXPECT_EQ(results.mygl, results.osmesa);

@@ -234,6 +234,14 @@ bool copiesRowsUnderTransfer(const Call& call, const StreamContext& c) {
     return name == "glCopyTexSubImage2D" && call.args[7] > 1;
 }
 
+// A query (not glGetError) between a glBegin given while compiling a GL_COMPILE_AND_EXECUTE list
+// and its glEnd.
+bool queriesInsideExecutedListBegin(const Call& call, const StreamContext& c) {
+    const std::string_view name = functionName(call);
+    const bool query = (name.starts_with("glGet") && name != "glGetError") || name.starts_with("glIs");
+    return query && c.insideBegin && c.beginFromExecutedList;
+}
+
 constexpr Departure kDepartures[] = {
     {"integer-query-of-matrix",
      "glGetIntegerv of a matrix: OSMesa maps entries like colours ([-1,1] to the integer range), the spec rounds them",
@@ -320,6 +328,10 @@ constexpr Departure kDepartures[] = {
     {"texture-priority-as-integer",
      "glGetTexParameteriv(GL_TEXTURE_PRIORITY): OSMesa maps [0, 1] to [0, INT_MAX], the spec rounds",
      queriesPriorityAsInteger},
+    {"query-inside-executed-list-begin",
+     "glGet*/glIs* between a glBegin compiled under GL_COMPILE_AND_EXECUTE and its glEnd: OSMesa answers as outside "
+     "glBegin/glEnd (it plays the list's primitives later), the spec gives GL_INVALID_OPERATION",
+     queriesInsideExecutedListBegin},
 };
 
 }  // namespace
@@ -347,14 +359,22 @@ void StreamContext::update(const Call& call) {
         case GL_POLYGON_OFFSET_POINT: offsetPoint = on; break;
         default: break;
         }
+    } else if (name == "glNewList") {
+        const bool listMode = call.args[1] == GL_COMPILE || call.args[1] == GL_COMPILE_AND_EXECUTE;
+        if (insideBegin || listOpen || call.args[0] == 0 || !listMode) return;  // an error: no list opens
+        listOpen = true;
+        compilingAndExecuting = call.args[1] == GL_COMPILE_AND_EXECUTE;
+    } else if (name == "glEndList") {
+        listOpen = compilingAndExecuting = false;
     } else if (name == "glBegin") {
         if (insideBegin || call.args[0] > GL_POLYGON) return;  // an error: nothing begins
         insideBegin = true;
+        beginFromExecutedList = compilingAndExecuting;
         mode = static_cast<GLenum>(call.args[0]);
         verticesInBlock = 0;
         inBlock = atFirstVertex = {};
     } else if (name == "glEnd") {
-        insideBegin = false;
+        insideBegin = beginFromExecutedList = false;
     } else if (double height = 0; definesBorderedTexture(name, call.args, height)) {
         borderedTexture = true;
     } else if (name == "glPixelStorei" || name == "glPixelStoref") {

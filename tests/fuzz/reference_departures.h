@@ -23,6 +23,9 @@ struct StreamContext {
         bool normal = false, texCoord = false, edgeFlag = false;
     };
     bool insideBegin = false;
+    bool listOpen = false;               // a glNewList opened a list not ended yet
+    bool compilingAndExecuting = false;  // inside a glNewList(GL_COMPILE_AND_EXECUTE) that opened
+    bool beginFromExecutedList = false;  // the open glBegin came while compiling and executing a list
     GLenum mode = GL_POINTS;
     int verticesInBlock = 0;
     Attributes inBlock, atFirstVertex;

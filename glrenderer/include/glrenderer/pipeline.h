@@ -87,6 +87,8 @@ public:
     void drawFromArrays(bool fromArrays) { buffer_.setFromArrays(fromArrays); }
     // Whether the last draw (or the pending one) had texture coordinates per vertex.
     bool drawsTexCoords() const { return buffer_.drawsTexCoords(); }
+    // Whether the vertex format holds a colour (else the reference's vertices take the current one as a constant).
+    bool colorInFormat() const { return buffer_.has(VertexAttribute::Color); }
     IndexedPart addIndexedPart(std::size_t vertexCount, std::size_t indexCount);
     // glColor inside glBegin/glEnd. The reference's vertex buffer then gains a color per vertex
     // until its draw ends, and what it held before is drawn as a draw of its own (it decides

@@ -15,4 +15,12 @@ inline glm::vec4 saturate(const glm::vec4& c) {
     return out;
 }
 
+// A colour the reference takes as a constant (not in the vertex format) is clamped with NaN
+// becoming 0 instead.
+inline glm::vec4 saturateConstant(const glm::vec4& c) {
+    glm::vec4 out;
+    _mm_storeu_ps(&out.x, _mm_min_ps(_mm_max_ps(_mm_loadu_ps(&c.x), _mm_setzero_ps()), _mm_set1_ps(1.0f)));
+    return out;
+}
+
 }  // namespace glrenderer
