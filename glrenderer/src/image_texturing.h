@@ -3,7 +3,10 @@
 
 #include <glm/vec4.hpp>
 
+#include "fragment_fog.h"
+#include "fragment_key.h"
 #include "glrenderer/draw_state.h"
+#include "simd_scalar.h"
 
 namespace glrenderer {
 
@@ -22,13 +25,12 @@ public:
     std::uint32_t apply(std::uint32_t color) const;
 
 private:
-    TextureEnv env_;
-    TextureBase base_;
+    FragmentKey key_;  // the environment's fields
     float texel_[4];
     float envColor_[4];
-    bool fogged_;
+    FogMode fogMode_;
+    FogLanes<ScalarLanes> fog_;
     float fogFactor_;  // with fog: the fraction of the colour kept
-    glm::vec4 fogColor_;
 };
 
 }  // namespace glrenderer
