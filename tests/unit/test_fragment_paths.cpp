@@ -199,6 +199,19 @@ testing::AssertionResult same(const Target& expected, const Target& actual) {
     return testing::AssertionSuccess();
 }
 
+// `triangle`'s part in `rect` drawn by spans with its own routine and with the path's any-key
+// routine, each onto `color` and `depth`, against `expected` (the per-pixel reference).
+void expectSpansMatch(const Target& expected, const RasterTriangle& triangle, const PixelRect& rect,
+                      const FragmentPaths& paths, const std::vector<std::uint32_t>& color,
+                      const std::vector<std::uint32_t>& depth, int i) {
+    for (const FragmentRoutine* routine : {triangle.fragment.routine, &paths.anyKey()}) {
+        Target actual(color, depth);
+        rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, *routine);
+        EXPECT_TRUE(same(expected, actual)) << paths.name() << " key " << describe(triangle.fragment.key)
+                                            << (routine == &paths.anyKey() ? " any key" : "") << " triangle " << i;
+    }
+}
+
 std::vector<std::uint32_t> randomPixels(std::mt19937& random, std::uint32_t max) {
     std::uniform_int_distribution<std::uint32_t> value(0, max);
     std::vector<std::uint32_t> pixels(kWidth * kHeight);
@@ -355,13 +368,7 @@ void checkTrianglesAgainstThePerPixelReference(unsigned seed, bool lodTextures, 
             if (paths == allPaths.front()) ++drawn;
             Target expected(color, depth);
             rasterizeTriangleExact(triangle, rect, expected.framebuffer, expected.counts);
-            for (const FragmentRoutine* routine : {triangle.fragment.routine, &paths->anyKey()}) {
-                Target actual(color, depth);
-                rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, *routine);
-                ASSERT_TRUE(same(expected, actual))
-                    << paths->name() << " key " << describe(triangle.fragment.key)
-                    << (routine == &paths->anyKey() ? " any key" : "") << " triangle " << i;
-            }
+            expectSpansMatch(expected, triangle, rect, *paths, color, depth, i);
         }
     }
     EXPECT_GT(drawn, 2000);
@@ -442,13 +449,7 @@ TEST(FragmentPaths, NarrowAreasMatchThePerPixelReferenceInEveryPath) {
             Target expected(color, depth);
             rasterizeTriangleExact(triangle, rect, expected.framebuffer, expected.counts);
             if (paths == allPaths.front()) fragments += expected.counts.fragments;
-            for (const FragmentRoutine* routine : {triangle.fragment.routine, &paths->anyKey()}) {
-                Target actual(color, depth);
-                rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, *routine);
-                ASSERT_TRUE(same(expected, actual))
-                    << paths->name() << " key " << describe(triangle.fragment.key)
-                    << (routine == &paths->anyKey() ? " any key" : "") << " triangle " << i;
-            }
+            expectSpansMatch(expected, triangle, rect, *paths, color, depth, i);
         }
     }
     EXPECT_GT(fragments, 20000u);  // the areas reach covered pixels
