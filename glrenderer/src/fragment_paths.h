@@ -91,9 +91,12 @@ private:
 const FragmentPaths& scalarFragmentPaths();
 // 8 lanes of AVX2 with FMA; only after cpuHasAvx2Fma().
 const FragmentPaths& avx2FragmentPaths();
+// The AVX2 paths compiled for AVX-512VL (32 registers); only after cpuHasAvx512().
+const FragmentPaths& avx2EvexFragmentPaths();
 // 16 lanes of AVX-512F; only after cpuHasAvx512(). Keys that sample a texture with a level of
-// detail take the AVX2 paths: with 14 gathers a block, 16-lane blocks on short spans made
-// bench-textured-cubes take 1.3-1.9 times as long (AMD EPYC, 150 frames, alternating runs).
+// detail take the 8-lane avx2EvexFragmentPaths: with 14 gathers a block, 16-lane blocks on
+// short spans made bench-textured-cubes take 1.3-1.9 times as long (AMD EPYC, 150 frames,
+// alternating runs).
 const FragmentPaths& avx512FragmentPaths();
 // The widest this CPU runs (widestLanes()).
 const FragmentPaths& bestFragmentPaths();

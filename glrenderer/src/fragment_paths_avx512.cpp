@@ -5,6 +5,6 @@
 
 namespace glrenderer {
 
-const FragmentPaths& avx512FragmentPaths() { return fragmentPathsOf<Avx512Lanes, &avx2FragmentPaths>(); }
+const FragmentPaths& avx512FragmentPaths() { return fragmentPathsOf<Avx512Lanes, &avx2EvexFragmentPaths>(); }
 
 }  // namespace glrenderer

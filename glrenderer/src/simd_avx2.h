@@ -14,7 +14,11 @@ namespace glrenderer {
 // vector of all-ones or zero lanes. Masked loads and stores are slow on some CPUs, so blocks
 // whose lanes all lie inside the span use plain ones (kCheapMasks = false: loadWhole,
 // storeWhole, select).
-struct Avx2Lanes {
+// `Evex`: the same lanes in a file compiled for AVX-512VL (fragment_paths_avx2_evex.cpp), where
+// the compiler has 32 vector registers and EVEX encodings for the same code. A type of its own
+// so that the two files' copies of these functions, compiled for different CPUs, never merge.
+template <bool Evex>
+struct Avx2LanesOf {
     static constexpr int kCount = 8;
     static constexpr bool kCheapMasks = false;
     // No 2D blocks for narrow triangles: they took more instructions than spans on triangles of
@@ -23,7 +27,7 @@ struct Avx2Lanes {
     // Keys that sample a level of detail walk rows in pairs, in blocks of 4 x 2 pixels: two
     // whole 2 x 2 quads (QuadLanes::TwoRows).
     static constexpr bool kTwoRowBlocks = true;
-    static constexpr std::string_view kName = "avx2";
+    static constexpr std::string_view kName = Evex ? "avx2-evex" : "avx2";
     using Float = __m256;
     using Int = __m256i;
     using Mask = __m256i;
@@ -185,5 +189,7 @@ private:
         _mm_storeu_si128(at, lanes == 0xF ? v : _mm_blendv_epi8(_mm_loadu_si128(at), v, m));
     }
 };
+
+using Avx2Lanes = Avx2LanesOf<false>;
 
 }  // namespace glrenderer

@@ -29,7 +29,7 @@ constexpr int kWidth = 97, kHeight = 61;  // odd sizes exercise the partial bloc
 std::vector<const FragmentPaths*> pathsOfThisCpu() {
     std::vector<const FragmentPaths*> paths{&scalarFragmentPaths()};
     if (cpuHasAvx2Fma()) paths.push_back(&avx2FragmentPaths());
-    if (cpuHasAvx512()) paths.push_back(&avx512FragmentPaths());
+    if (cpuHasAvx512()) paths.insert(paths.end(), {&avx2EvexFragmentPaths(), &avx512FragmentPaths()});
     return paths;
 }
 

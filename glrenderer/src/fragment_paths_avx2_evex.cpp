@@ -1,0 +1,12 @@
+// The 8-lane AVX2 fragment routines compiled for AVX-512VL: an AVX-512 machine's routines for
+// keys that sample a texture's level of detail (avx512FragmentPaths' lodPaths). With 32
+// registers the sampler's lanes stay out of the stack. Compiled with -mavx2 -mfma -mavx512f
+// -mavx512vl -mavx512bw; called only after cpuHasAvx512().
+#include "fragment_routines.h"
+#include "simd_avx2.h"
+
+namespace glrenderer {
+
+const FragmentPaths& avx2EvexFragmentPaths() { return fragmentPathsOf<Avx2LanesOf<true>>(); }
+
+}  // namespace glrenderer
