@@ -21,15 +21,28 @@ static_assert(offsetof(WindowVertex, z) == 2 * sizeof(float) && offsetof(WindowV
 std::int64_t floorToPixel(std::int64_t fixed) { return fixed >> kSubpixelBits; }
 std::int64_t ceilToPixel(std::int64_t fixed) { return -((-fixed) >> kSubpixelBits); }
 
+// The smallest and largest of three snapped coordinates, by value: std::min({...}) compiled to
+// branches, and which vertex is leftmost is a coin toss per triangle (they mispredicted).
+std::int64_t smallest(std::int64_t a, std::int64_t b, std::int64_t c) {
+    const std::int64_t ab = b < a ? b : a;
+    return c < ab ? c : ab;
+}
+std::int64_t largest(std::int64_t a, std::int64_t b, std::int64_t c) {
+    const std::int64_t ab = b > a ? b : a;
+    return c > ab ? c : ab;
+}
+
 }  // namespace
 
 EdgeFunction::EdgeFunction(const FixedPoint& a, const FixedPoint& b) {
     const std::int64_t dx = a.y - b.y;  // dE per fixed-point unit of x
     const std::int64_t dy = b.x - a.x;
-    const bool ownsCenters = dx > 0 || (dx == 0 && dy < 0);
+    // (Bitwise, not ||: the edge's direction is a coin toss per triangle, and a branch on it
+    // mispredicted.)
+    const std::int64_t ownsCenters = static_cast<std::int64_t>((dx > 0) | ((dx == 0) & (dy < 0)));
     stepX = dx << kSubpixelBits;
     stepY = dy << kSubpixelBits;
-    valueAtOrigin = -(dy * a.y + dx * a.x) + (ownsCenters ? 0 : -1);
+    valueAtOrigin = -(dy * a.y + dx * a.x) + ownsCenters - 1;
 }
 
 FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods) {
@@ -53,10 +66,10 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     const FixedPoint& a = t.fixed[0];
     const FixedPoint& b = t.area > 0 ? t.fixed[1] : t.fixed[2];
     const FixedPoint& c = t.area > 0 ? t.fixed[2] : t.fixed[1];
-    std::int64_t minX = ceilToPixel(std::min({a.x, b.x, c.x})), maxX = floorToPixel(std::max({a.x, b.x, c.x}));
-    std::int64_t minY = ceilToPixel(std::min({a.y, b.y, c.y})), maxY = floorToPixel(std::max({a.y, b.y, c.y}));
+    std::int64_t minX = ceilToPixel(smallest(a.x, b.x, c.x)), maxX = floorToPixel(largest(a.x, b.x, c.x));
+    std::int64_t minY = ceilToPixel(smallest(a.y, b.y, c.y)), maxY = floorToPixel(largest(a.y, b.y, c.y));
     out.method = method;
-    out.meanDepth = (t.v[0]->z + t.v[1]->z + t.v[2]->z) / 3.0f;
+    out.depthSum = t.v[0]->z + t.v[1]->z + t.v[2]->z;
     if (method == RasterMethod::Scanline || method == RasterMethod::BoundingBoxFloat) {
         // Float methods may reach a pixel past the snapped bounds.
         --minX, ++maxX, --minY, ++maxY;

@@ -76,7 +76,7 @@ private:
         const TiledPrimitive& other() const {
             return *reinterpret_cast<const TiledPrimitive*>(bits_ & ~std::uintptr_t{1});
         }
-        float meanDepth() const { return triangle() ? triangle()->meanDepth : other().meanDepth; }
+        float meanDepth() const { return triangle() ? triangle()->meanDepth() : other().meanDepth; }
 
     private:
         std::uintptr_t bits_;
