@@ -29,8 +29,9 @@ bool canCut(const BatchHeader& batch) {
 
 // Chunks in circulation with a batch thread: one being filled, the others queued or drawn.
 // Each is made big enough for a usual hand-over (a part, plus the batch that crossed it), so
-// that steady state allocates nothing; 4 of them are 2.1 MB (64-byte vertices). With more in flight, the program's
-// thread would set fewer up itself when the batch thread is behind (8 measured 2-3% slower).
+// that steady state allocates nothing; 4 of them are 2.1 MB (64-byte vertices). With more in
+// flight, the program's thread would set fewer up itself when the batch thread is behind (8
+// measured 2-3% slower).
 constexpr std::size_t kChunks = 4;
 constexpr std::size_t kChunkBatches = 256;
 
