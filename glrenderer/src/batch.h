@@ -38,11 +38,15 @@ struct BatchHeader {
     const VertexLighting* lighting = nullptr;
 };
 
+// Whether a batch's state reads its vertices' LightingOutputs (the back or secondary colours).
+inline bool needsLightingOutputs(const DrawState& state) { return state.twoSidedColors || state.secondaryColors; }
+
 // One draw with its vertices as the program gave them. An indexed one (a part of glDrawElements)
 // draws the vertices its `indices` name, in their order; the others draw `vertices` in order.
 struct SubmittedBatch : BatchHeader {
     std::span<const Vertex> vertices;
     std::span<const std::uint32_t> indices;
+    std::span<const LightingOutputs> lightingOutputs;  // one per vertex with needsLightingOutputs, else none
 };
 
 // One draw after the vertex stage, its vertices assembled (VertexStage::assemble).
@@ -72,6 +76,9 @@ struct BatchChunk {
     }
 
     AppendArray<Vertex> vertices;
+    // Beside `vertices`, index for index, as far as the last batch that needs them
+    // (needsLightingOutputs): lit by lightChunk or on the program's thread, zeros when unlit.
+    AppendArray<LightingOutputs> lightingOutputs;
     AppendArray<std::uint32_t> indices;  // of its indexed batches, into their own vertices
     std::vector<BatchEntry> batches;
     bool lit = false;  // lightChunk has lit its batches' vertices
@@ -84,11 +91,26 @@ struct BatchChunk {
 
     // The entry's batch with its vertices and indices.
     SubmittedBatch batch(const BatchEntry& entry) const {
+        const bool outputs = needsLightingOutputs(*entry.state) && lightingOutputs.size() >= entry.first + entry.count;
         return {entry, std::span<const Vertex>(vertices).subspan(entry.first, entry.count),
-                std::span<const std::uint32_t>(indices).subspan(entry.firstIndex, entry.indexCount)};
+                std::span<const std::uint32_t>(indices).subspan(entry.firstIndex, entry.indexCount),
+                outputs ? std::span<const LightingOutputs>(lightingOutputs).subspan(entry.first, entry.count)
+                        : std::span<const LightingOutputs>{}};
+    }
+    // The outputs of vertices first .. first + count, the array grown to them (not initialized).
+    std::span<LightingOutputs> outputsOf(std::size_t first, std::size_t count) {
+        if (lightingOutputs.size() < first + count)
+            lightingOutputs.appendUninitialized(first + count - lightingOutputs.size());
+        return std::span(lightingOutputs).subspan(first, count);
+    }
+    // As many outputs as `count` vertices: cut, or grown with outputs not initialized.
+    void resizeOutputs(std::size_t count) {
+        if (lightingOutputs.size() > count) lightingOutputs.truncate(count);
+        outputsOf(0, count);
     }
     void clear() {
         vertices.clear();
+        lightingOutputs.clear();
         indices.clear();
         batches.clear();
         lit = false;

@@ -169,9 +169,9 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
     const Outcode outsideAny = outcodes[t.v[0]] | outcodes[t.v[1]] | outcodes[t.v[2]];
     if (outsideAny == 0) {
         if (call.stagedSnaps) return setUpStaged(call, t, provoking.color);
-        const auto& v = call.vertices;
+        const auto lit = [&](std::uint32_t i) { return &vertexStage_.lightingOutputsOf(i); };
         setUpSidedTriangle(call, {&windowVertices[t.v[0]], &windowVertices[t.v[1]], &windowVertices[t.v[2]]},
-                           std::array{&v[t.v[0]], &v[t.v[1]], &v[t.v[2]]}, provoking);
+                           std::array{lit(t.v[0]), lit(t.v[1]), lit(t.v[2])}, provoking.color, *lit(t.v[2]));
         return;
     }
     if (outcodes[t.v[0]] & outcodes[t.v[1]] & outcodes[t.v[2]]) {
@@ -199,7 +199,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
         const WindowVertex current = window(i);
         const auto k = static_cast<std::size_t>(i);
         setUpSidedTriangle(call, {&previous, &current, &first}, std::array{&clipped[k - 1], &clipped[k], &clipped[0]},
-                           provoking);
+                           provoking.color, vertexStage_.lightingOutputsOf(t.v[2]));
         previous = current;
     }
 }
@@ -210,11 +210,12 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
 // provoking vertex's secondary colour (the primary one goes as the flat colour).
 template <class Record>
 void BatchSetup::setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
-                                    std::array<const Record*, 3> records, const Vertex& provoking) {
+                                    std::array<const Record*, 3> records, const glm::vec4& provokingColor,
+                                    const LightingOutputs& provoking) {
     const DrawState& state = *call.batch.state;
     const bool back = state.twoSidedColors && facingOf(fixedArea(snap(*window[0]), snap(*window[1]), snap(*window[2])),
                                                        state.frontFaceCCW) == Facing::Back;
-    const glm::vec4& flatColor = back ? provoking.backColor : provoking.color;
+    const glm::vec4& flatColor = back ? provoking.backColor : provokingColor;
     const bool flatSecondary = state.secondaryColors && state.shadeModel == ShadeModel::Flat;
     if (!back && !flatSecondary) return setUpTriangle(call, *window[0], *window[1], *window[2], flatColor);
     std::array<WindowVertex, 3> changed{*window[0], *window[1], *window[2]};

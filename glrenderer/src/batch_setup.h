@@ -76,13 +76,14 @@ private:
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     // A triangle's window vertices (by address: most triangles take them as they are) with the
-    // records they came from (Vertex or ClipVertex), for their back colours, and its provoking
-    // vertex, for its flat colours.
+    // records of their back and secondary colours (LightingOutputs or ClipVertex), and its
+    // provoking vertex's colours, for its flat colours.
     template <class Record>
     [[gnu::always_inline]] inline void setUpSidedTriangle(const Call& call,
                                                           const std::array<const WindowVertex*, 3>& window,
                                                           std::array<const Record*, 3> records,
-                                                          const Vertex& provoking);
+                                                          const glm::vec4& provokingColor,
+                                                          const LightingOutputs& provoking);
     Outcode run(const SubmittedBatch& batch);
     // (Inlined into the callers: it is most of the work per triangle, called once each.)
     [[gnu::always_inline]] inline void setUpTriangle(const Call& call, const WindowVertex& v0, const WindowVertex& v1,

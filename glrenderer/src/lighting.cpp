@@ -88,21 +88,24 @@ VertexLighting::VertexLighting(const LightingState& state, const LightingModelvi
     }
 }
 
-void lightVerticesScalar(const PreparedLighting& lighting, std::span<Vertex> vertices, bool twoSided) {
-    LightingProgram<ScalarLanes>(lighting).lightVertices(vertices, twoSided);
+void lightVerticesScalar(const PreparedLighting& lighting, std::span<Vertex> vertices,
+                         std::span<LightingOutputs> outputs, bool twoSided) {
+    LightingProgram<ScalarLanes>(lighting).lightVertices(vertices, outputs, twoSided);
 }
 
-void VertexLighting::lightVertices(std::span<Vertex> vertices, bool twoSided) const {
+void VertexLighting::lightVertices(std::span<Vertex> vertices, std::span<LightingOutputs> outputs,
+                                   bool twoSided) const {
     switch (widestLanes()) {
-    case LaneWidth::Avx512: return lightVerticesAvx512(prepared_, vertices, twoSided);
-    case LaneWidth::Avx2: return lightVerticesAvx2(prepared_, vertices, twoSided);
+    case LaneWidth::Avx512: return lightVerticesAvx512(prepared_, vertices, outputs, twoSided);
+    case LaneWidth::Avx2: return lightVerticesAvx2(prepared_, vertices, outputs, twoSided);
     case LaneWidth::Scalar: break;
     }
-    lightVerticesScalar(prepared_, vertices, twoSided);
+    lightVerticesScalar(prepared_, vertices, outputs, twoSided);
 }
 
-void VertexLighting::lightVertex(Vertex& vertex, bool twoSided) const {
-    lightVerticesScalar(prepared_, {&vertex, 1}, twoSided);
+void VertexLighting::lightVertex(Vertex& vertex, LightingOutputs* outputs, bool twoSided) const {
+    lightVerticesScalar(prepared_, {&vertex, 1}, outputs ? std::span(outputs, 1) : std::span<LightingOutputs>{},
+                        twoSided);
 }
 
 }  // namespace glrenderer

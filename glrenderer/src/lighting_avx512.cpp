@@ -4,8 +4,9 @@
 
 namespace glrenderer {
 
-void lightVerticesAvx512(const PreparedLighting& lighting, std::span<Vertex> vertices, bool twoSided) {
-    LightingProgram<Avx512Lanes>(lighting).lightVertices(vertices, twoSided);
+void lightVerticesAvx512(const PreparedLighting& lighting, std::span<Vertex> vertices,
+                         std::span<LightingOutputs> outputs, bool twoSided) {
+    LightingProgram<Avx512Lanes>(lighting).lightVertices(vertices, outputs, twoSided);
 }
 
 }  // namespace glrenderer

@@ -12,6 +12,7 @@
 #include <limits>
 #include <span>
 
+#include "glrenderer/invariant.h"
 #include "glrenderer/lighting.h"
 
 #include "exp2_approximation.h"
@@ -148,7 +149,9 @@ public:
 
     explicit LightingProgram(const PreparedLighting& p) : p_(p) {}
 
-    void lightVertices(std::span<Vertex> vertices, bool twoSided) const {
+    void lightVertices(std::span<Vertex> vertices, std::span<LightingOutputs> outputs, bool twoSided) const {
+        MYGL_INVARIANT(outputs.empty() || outputs.size() == vertices.size());
+        if (outputs.size() != vertices.size()) outputs = {};
         VertexBlock<L> block;
         alignas(64) float lit[2][4][L::kCount], litSecondary[2][4][L::kCount];
         for (std::size_t first = 0; first < vertices.size(); first += L::kCount) {
@@ -163,16 +166,13 @@ public:
                 if (p_.separateSpecular) store(litSecondary[face], saturate(c.secondary));
             }
             for (std::size_t lane = 0; lane < part.size(); ++lane) {
-                Vertex& v = part[lane];
-                for (int c = 0; c < 4; ++c) v.color[c] = lit[0][c][lane];
-                if (twoSided) {
-                    for (int c = 0; c < 4; ++c) v.backColor[c] = lit[1][c][lane];
-                }
-                if (p_.separateSpecular) {
-                    for (int c = 0; c < 3; ++c) v.secondaryColor[c] = litSecondary[0][c][lane];
-                    if (twoSided) {
-                        for (int c = 0; c < 3; ++c) v.backSecondaryColor[c] = litSecondary[1][c][lane];
-                    }
+                for (int c = 0; c < 4; ++c) part[lane].color[c] = lit[0][c][lane];
+                if (outputs.empty()) continue;
+                LightingOutputs& o = outputs[first + lane];
+                for (int c = 0; c < 4; ++c) o.backColor[c] = twoSided ? lit[1][c][lane] : 0.0f;
+                for (int c = 0; c < 3; ++c) {
+                    o.secondaryColor[c] = p_.separateSpecular ? litSecondary[0][c][lane] : 0.0f;
+                    o.backSecondaryColor[c] = p_.separateSpecular && twoSided ? litSecondary[1][c][lane] : 0.0f;
                 }
             }
         }

@@ -6,10 +6,13 @@
 
 namespace glrenderer {
 
-void lightVerticesScalar(const PreparedLighting& lighting, std::span<Vertex> vertices, bool twoSided);
+void lightVerticesScalar(const PreparedLighting& lighting, std::span<Vertex> vertices,
+                         std::span<LightingOutputs> outputs, bool twoSided);
 // Only after cpuHasAvx2Fma().
-void lightVerticesAvx2(const PreparedLighting& lighting, std::span<Vertex> vertices, bool twoSided);
+void lightVerticesAvx2(const PreparedLighting& lighting, std::span<Vertex> vertices, std::span<LightingOutputs> outputs,
+                       bool twoSided);
 // Only after cpuHasAvx512().
-void lightVerticesAvx512(const PreparedLighting& lighting, std::span<Vertex> vertices, bool twoSided);
+void lightVerticesAvx512(const PreparedLighting& lighting, std::span<Vertex> vertices,
+                         std::span<LightingOutputs> outputs, bool twoSided);
 
 }  // namespace glrenderer

@@ -29,8 +29,9 @@ bool canCut(const BatchHeader& batch) {
 
 // Chunks in circulation with a batch thread: one being filled, the others queued or drawn.
 // Each is made big enough for a usual hand-over (a part, plus the batch that crossed it), so
-// that steady state allocates nothing; 4 of them are 1.8 MB. With more in flight, the program's
-// thread would set fewer up itself when the batch thread is behind (8 measured 2-3% slower).
+// that steady state allocates nothing; 4 of them are 2.1 MB (64-byte vertices). With more in
+// flight, the program's thread would set fewer up itself when the batch thread is behind (8
+// measured 2-3% slower).
 constexpr std::size_t kChunks = 4;
 constexpr std::size_t kChunkBatches = 256;
 
@@ -85,6 +86,7 @@ void Pipeline::beginPrimitive(const StateRef& state, PrimitiveMode mode, QuadSpl
     cuttable_ = canCut(batch);
     insidePrimitive_ = true;
     loopContinued_ = false;
+    litByCaller_ = false;
     MYGL_INVARIANT(openCount() == 0);
 }
 
@@ -105,20 +107,32 @@ std::size_t Pipeline::wrapOpenPrimitive() {
     const std::size_t count = openCount();
     const WrapSplit split = splitAtWrap(mode, count, loopContinued_);
     std::array<Vertex, std::tuple_size_v<decltype(split.carried)>> carried;
+    std::array<LightingOutputs, carried.size()> carriedOutputs;
     MYGL_INVARIANT(split.carriedCount <= carried.size());
     const std::size_t carriedCount = std::min(split.carriedCount, carried.size());  // (a bound the compiler sees)
     for (std::size_t i = 0; i < carriedCount; ++i) carried[i] = (*vertices_)[openFirst_ + split.carried[i]];
+    if (litByCaller_) {
+        syncOutputs();
+        AppendArray<LightingOutputs>& outputs = chunk_->lightingOutputs;
+        for (std::size_t i = 0; i < carriedCount; ++i) carriedOutputs[i] = outputs[openFirst_ + split.carried[i]];
+        outputs.erase(openFirst_, split.drawnFirst);
+    }
     // The part drawn: drawnCount vertices from drawnFirst.
     vertices_->erase(openFirst_, split.drawnFirst);
     vertices_->truncate(openFirst_ + split.drawnCount);
     if (mode == PrimitiveMode::LineLoop) batch_->mode = PrimitiveMode::LineStrip;
     keepOpenVertices(usableVertexCount(batch_->mode, openCount()));
     vertices_->truncate(openFirst_);
+    if (litByCaller_) syncOutputs();
     closeBatchInPrimitive();
     batch_->mode = mode;
     // (A part that carries all its vertices over starts the primitive again as it was.)
     if (mode == PrimitiveMode::LineLoop && split.carriedCount < count) loopContinued_ = true;
     vertices_->append(carried.data(), carried.data() + carriedCount);
+    if (litByCaller_) {
+        syncOutputs();
+        std::copy_n(carriedOutputs.begin(), carriedCount, chunk_->lightingOutputs.end() - carriedCount);
+    }
     return carriedCount;
 }
 
@@ -150,6 +164,11 @@ void Pipeline::endPrimitive() {
     // A GL_LINE_LOOP that wrapped ends as a line strip back to its first vertex.
     const bool loopClosed = batch_->mode == PrimitiveMode::LineLoop && loopContinued_;
     if (loopClosed) {
+        if (litByCaller_) {
+            syncOutputs();
+            chunk_->lightingOutputs.push_back(chunk_->lightingOutputs[openFirst_]);
+            chunk_->lightingOutputs.erase(openFirst_, 1);
+        }
         vertices_->push_back((*vertices_)[openFirst_]);
         vertices_->erase(openFirst_, 1);
         batch_->mode = PrimitiveMode::LineStrip;
@@ -160,6 +179,8 @@ void Pipeline::endPrimitive() {
     const std::size_t usable = usableVertexCount(batch.mode, count);
     keepOpenVertices(usable);
     vertices_->truncate(openFirst_);
+    if (litByCaller_) syncOutputs();
+    litByCaller_ = false;
     cuttable_ = false;
     insidePrimitive_ = false;
     // The reference keeps an incomplete tail's vertices in its buffer, so the next block is not
@@ -218,12 +239,22 @@ void Pipeline::setUnlit() {
 }
 
 void Pipeline::lightOpenBatch() {
+    litByCaller_ = true;
+    syncOutputs();
     if (!batch_->lighting) return;
-    const bool twoSided = batch_->state->twoSidedColors;
+    const std::size_t first = batch_->first, count = vertices_->size() - first;
     // (With the open primitive's so far.)
-    batch_->lighting->lightVertices(std::span(chunk_->vertices).subspan(batch_->first), twoSided);
+    batch_->lighting->lightVertices(std::span(chunk_->vertices).subspan(first), chunk_->outputsOf(first, count),
+                                    batch_->state->twoSidedColors);
     batch_->lighting = nullptr;
 }
+
+LightingOutputs& Pipeline::outputsOfLastVertex() {
+    syncOutputs();
+    return chunk_->lightingOutputs[chunk_->lightingOutputs.size() - 1];
+}
+
+void Pipeline::syncOutputs() { chunk_->resizeOutputs(vertices_->size()); }
 
 void Pipeline::endBatch() {
     buffer_.flushAndReset();
@@ -234,6 +265,12 @@ void Pipeline::closeBatch() {
     if (batchSize() == 0) return;
     batch_->count = batchSize();
     BatchEntry& closed = chunk_->batches.emplace_back(*batch_);
+    // Outputs a batch needs but nothing lights are zeros (as glMaterial's vertices' successors in it).
+    AppendArray<LightingOutputs>& outputs = chunk_->lightingOutputs;
+    if (!closed.lighting && needsLightingOutputs(*closed.state) && outputs.size() < closed.first + closed.count) {
+        const std::size_t missing = closed.first + closed.count - outputs.size();
+        std::fill_n(outputs.appendUninitialized(missing), missing, LightingOutputs{});
+    }
     // Without a color per vertex the color is a constant of the draw, not an interpolation of
     // equal values (which perspective would blur by one unit here and there): flat. Under
     // texturing only when the reference's vertex format has no colour either (Mesa's vertex
@@ -262,6 +299,10 @@ void Pipeline::handOverChunk() {
     const DenormalsAreZero denormals;
     const bool moving = openCount() > 0;  // (rare: glColor after a glBegin's first vertices)
     if (moving) moved_.assign(vertices_->begin() + openFirst_, vertices_->end());
+    if (moving && litByCaller_) {
+        syncOutputs();
+        movedOutputs_.assign(chunk_->lightingOutputs.begin() + openFirst_, chunk_->lightingOutputs.end());
+    }
     vertices_->truncate(openFirst_);
     if (thread_) {
         chunk_ = thread_->post(std::move(chunk_));
@@ -271,6 +312,7 @@ void Pipeline::handOverChunk() {
     }
     vertices_ = &chunk_->vertices;
     if (moving) vertices_->append(moved_.begin(), moved_.end());
+    if (moving && litByCaller_) chunk_->lightingOutputs.append(movedOutputs_.begin(), movedOutputs_.end());
     openFirst_ = 0;
     batch_->first = 0;
     batch_->firstIndex = 0;

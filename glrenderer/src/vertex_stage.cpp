@@ -26,6 +26,7 @@ VertexStage::VertexStage(std::size_t batchVertices) {
     windowVertices_.reserve(batchVertices);
     snapped_.reserve(batchVertices);
     clipVertices_.reserve(batchVertices);
+    unlitOutputs_.reserve(batchVertices);
 }
 
 Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& viewport) {
@@ -51,8 +52,16 @@ Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& v
         textureCoordinates(batch.vertices, batch.state->texture, batch.transform.modelview, texCoordinates_);
         for (std::size_t i = 0; i < count; ++i) windowVertices_[i].texCoord = texCoordinates_[i];
     }
-    if (batch.state->secondaryColors) {
-        for (std::size_t i = 0; i < count; ++i) windowVertices_[i].secondaryColor = batch.vertices[i].secondaryColor;
+    outputs_ = {};
+    if (needsLightingOutputs(*batch.state)) {
+        outputs_ = batch.lightingOutputs;
+        if (outputs_.size() != count) {
+            unlitOutputs_.assign(count, LightingOutputs{});
+            outputs_ = unlitOutputs_;
+        }
+        if (batch.state->secondaryColors) {
+            for (std::size_t i = 0; i < count; ++i) windowVertices_[i].secondaryColor = outputs_[i].secondaryColor;
+        }
     }
     const UserClipPlanes& user = batch.state->clipPlanes;
     if (user.enabled) {
@@ -69,9 +78,10 @@ ClipVertex VertexStage::clipVertex(std::span<const Vertex> vertices, std::size_t
     ClipVertex out;
     out.position = clipPositions_[i];
     out.color = in.color;
-    out.backColor = in.backColor;
-    out.secondaryColor = in.secondaryColor;
-    out.backSecondaryColor = in.backSecondaryColor;
+    const LightingOutputs& lit = lightingOutputsOf(i);
+    out.backColor = lit.backColor;
+    out.secondaryColor = lit.secondaryColor;
+    out.backSecondaryColor = lit.backSecondaryColor;
     out.edgeFlag = in.edgeFlag;
     if (!fogCoordinates_.empty()) out.fogCoord = fogCoordinates_[i];
     if (!texCoordinates_.empty()) out.texCoord = texCoordinates_[i];
@@ -97,7 +107,10 @@ void lightChunk(BatchChunk& chunk) {
     chunk.lit = true;
     for (const BatchEntry& batch : chunk.batches) {
         if (batch.lighting) {
-            batch.lighting->lightVertices(std::span(chunk.vertices).subspan(batch.first, batch.count),
+            const std::span<LightingOutputs> outputs = needsLightingOutputs(*batch.state)
+                                                           ? chunk.outputsOf(batch.first, batch.count)
+                                                           : std::span<LightingOutputs>{};
+            batch.lighting->lightVertices(std::span(chunk.vertices).subspan(batch.first, batch.count), outputs,
                                           batch.state->twoSidedColors);
         }
     }

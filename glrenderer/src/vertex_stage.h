@@ -30,6 +30,11 @@ public:
     // Each window vertex snapped, and whether it can be set up (snapVertex).
     std::span<const SnappedVertex> snapped() const { return snapped_; }
 
+    // Vertex i's back and secondary colours in the batch last run: zeros when its state has none.
+    const LightingOutputs& lightingOutputsOf(std::size_t i) const {
+        static constexpr LightingOutputs kNone;
+        return outputs_.empty() ? kNone : outputs_[i];
+    }
     // Vertex i of the batch last run (`vertices` its program's vertices), as the clipper takes it (without eye space).
     ClipVertex clipVertex(std::span<const Vertex> vertices, std::size_t i) const;
     // Every vertex of the batch last run, with eye-space positions and normals when its culling
@@ -44,6 +49,8 @@ private:
     std::vector<WindowVertex> windowVertices_;
     std::vector<SnappedVertex> snapped_;
     std::vector<ClipVertex> clipVertices_;
+    std::span<const LightingOutputs> outputs_;   // the batch's, with needsLightingOutputs
+    std::vector<LightingOutputs> unlitOutputs_;  // zeros, for such a batch left unlit
 };
 
 // The vertex stage's lighting, on the pipeline's side: the vertices of the chunk's lit batches

@@ -138,7 +138,6 @@ public:
         out.texCoord = texCoord_.size ? texCoord_.read(i, {0.0f, 0.0f, 0.0f, 1.0f}) : s.texCoord;
         out.normal = normal_.size ? glm::vec3(normal_.read(i, {})) : s.normal;
         out.edgeFlag = s.edgeFlag;
-        clearLightingOutputs(out);
         if (!color_.size) {
             out.color = s.lightingEnabled ? s.color : s.vertexColor;
             return;

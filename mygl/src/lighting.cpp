@@ -371,8 +371,8 @@ void updateLitColors(Context::State& s) {
     s.draw.edit().secondaryColors = s.lightingEnabled && s.lighting.separateSpecular;
 }
 
-void lightVertex(Context::State& s, glrenderer::Vertex& v) {
-    preparedLighting(s).lightVertex(v, s.draw->twoSidedColors);
+void lightVertex(Context::State& s, glrenderer::Vertex& v, glrenderer::LightingOutputs* outputs) {
+    preparedLighting(s).lightVertex(v, outputs, s.draw->twoSidedColors);
 }
 
 }  // namespace mygl

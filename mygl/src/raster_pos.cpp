@@ -55,7 +55,7 @@ void rasterPos(const glm::vec4& object) {
     if (s->lightingEnabled) {  // lit by the same vertex program as a vertex (the draw module's)
         glrenderer::Vertex lit;
         lit.position = object, lit.normal = s->normal, lit.color = s->color;
-        lightVertex(*s, lit);
+        lightVertex(*s, lit, nullptr);
         s->rasterColor = lit.color;
     }
     s->rasterTexCoord = transform(s->texture.top().matrix(), s->texCoord);

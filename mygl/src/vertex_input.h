@@ -23,15 +23,8 @@ void end();
 // with the state of that moment (lighting.cpp).
 void prepareLighting(Context::State& s);
 // A vertex lit on the program's thread with the current state (after glMaterial inside
-// glBegin/glEnd): its colour, and with two-sided lighting its back colour.
-void lightVertex(Context::State& s, glrenderer::Vertex& v);
-
-// The pipeline's new vertices are not initialized: their writer fills each whole, the lighting
-// outputs with zeros (the vertex stage lights them).
-[[gnu::always_inline]] inline void clearLightingOutputs(glrenderer::Vertex& v) {
-    v.backColor = glm::vec4(0.0f);
-    v.secondaryColor = v.backSecondaryColor = glm::vec3(0.0f);
-}
+// glBegin/glEnd): its colour, and into `outputs` (unless null) its back and secondary colours.
+void lightVertex(Context::State& s, glrenderer::Vertex& v, glrenderer::LightingOutputs* outputs);
 
 // Inlined into each glVertex: built in registers there, the position is not stored to the stack
 // in parts and read back whole (a store-forwarding stall that was a third of this function).
@@ -48,11 +41,10 @@ void lightVertex(Context::State& s, glrenderer::Vertex& v);
     v.color = s.lightingEnabled            ? s.color
               : s.pipeline.colorInFormat() ? s.vertexColor
                                            : glrenderer::saturateConstant(s.color);
-    clearLightingOutputs(v);
     v.normal = s.normal;
     v.texCoord = s.texCoord;
     v.edgeFlag = s.edgeFlag;
-    if (s.lightingEnabled && s.lightingOnProgramThread) lightVertex(s, v);
+    if (s.lightingEnabled && s.lightingOnProgramThread) lightVertex(s, v, &s.pipeline.outputsOfLastVertex());
 }
 [[gnu::always_inline]] inline void addVertex(const glm::vec4& object, int size) {
     Context::State* s = currentState();

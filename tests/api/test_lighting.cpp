@@ -263,6 +263,46 @@ TEST(Lighting, MaterialChangedAfterVerticesMatchesTheReference) {
                      draw);
 }
 
+// glMaterial inside primitives long enough to fill the reference's vertex buffer (a wrap that
+// carries vertices over), with back faces, separate specular colours and a glColor midway: the
+// vertices lit on the program's thread keep their back and secondary colours wherever they go.
+TEST(Lighting, MaterialInsideLongPrimitivesMatchesTheReference) {
+    constexpr int kVertices = 30000, kPasses = 8;
+    const auto point = [](int i) {
+        const float t = static_cast<float>(i / 2) / static_cast<float>(kVertices / 2) * kPasses;
+        const int pass = static_cast<int>(t);
+        const float u = t - static_cast<float>(pass), across = pass % 2 == 0 ? u : 1.0f - u;  // odd passes face back
+        glNormal3f(across - 0.5f, 0.4f * static_cast<float>(i % 2) - 0.2f, 1.0f);
+        glVertex3f(-1.4f + 2.8f * across, -1.2f + 0.3f * static_cast<float>(pass) + 0.25f * static_cast<float>(i % 2),
+                   -1.0f + 0.1f * u);
+    };
+    const auto draw = [&](GLenum mode) {
+        const GLfloat red[] = {0.9f, 0.1f, 0.1f, 1}, blue[] = {0.1f, 0.2f, 0.9f, 1};
+        glBegin(mode);
+        for (int i = 0; i < kVertices; ++i) {
+            if (i == 1001) glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, red);
+            if (i == 12003) glColor3f(0.2f, 0.9f, 0.3f);
+            if (i == 24005) glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, blue);
+            point(i);
+        }
+        glEnd();
+    };
+    const Case twoSidedSeparate{"two-sided, separate specular", [] {
+                                    whiteLight(GL_LIGHT0, kPositional);
+                                    material(20.0f);
+                                    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+                                    glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+                                }};
+    const Case colorMaterial{"two-sided, colour material", [] {
+                                 whiteLight(GL_LIGHT0, kDirectional);
+                                 glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+                                 glEnable(GL_COLOR_MATERIAL);
+                             }};
+    expectSameFrames({twoSidedSeparate, colorMaterial}, [&] { draw(GL_TRIANGLE_STRIP); });
+    expectSameFrames({twoSidedSeparate}, [&] { draw(GL_QUAD_STRIP); });
+    expectSameFrames({twoSidedSeparate}, [&] { draw(GL_LINE_LOOP); });
+}
+
 // The lighting calls' errors and the state they leave, as glGet and glGetLight/glGetMaterial
 // report them.
 TEST(Lighting, StateAndErrorsMatchTheReference) {

@@ -18,7 +18,7 @@ using namespace glrenderer;
 
 namespace {
 
-using LightFunction = void (*)(const PreparedLighting&, std::span<Vertex>, bool);
+using LightFunction = void (*)(const PreparedLighting&, std::span<Vertex>, std::span<LightingOutputs>, bool);
 
 class RandomLighting {
 public:
@@ -122,18 +122,24 @@ TEST(LightingLanes, EveryWidthLightsAsTheScalarProgram) {
         const std::vector<Vertex> input = random.vertices();
         const bool twoSided = state.twoSide;
         std::vector<Vertex> scalar = input;
-        lightVerticesScalar(lighting.prepared(), scalar, twoSided);
+        std::vector<LightingOutputs> scalarOutputs(input.size());
+        lightVerticesScalar(lighting.prepared(), scalar, scalarOutputs, twoSided);
         for (const auto& [name, light] : paths) {
             std::vector<Vertex> wide = input;
-            light(lighting.prepared(), wide, twoSided);
+            std::vector<LightingOutputs> wideOutputs(input.size());
+            light(lighting.prepared(), wide, wideOutputs, twoSided);
             for (std::size_t i = 0; i < input.size(); ++i) {
                 for (int c = 0; c < 4; ++c) {
                     ASSERT_EQ(bits(wide[i].color[c]), bits(scalar[i].color[c]))
                         << name << " round " << round << " vertex " << i << " channel " << c;
-                    if (twoSided) {
-                        ASSERT_EQ(bits(wide[i].backColor[c]), bits(scalar[i].backColor[c]))
-                            << name << " round " << round << " vertex " << i << " back channel " << c;
-                    }
+                    ASSERT_EQ(bits(wideOutputs[i].backColor[c]), bits(scalarOutputs[i].backColor[c]))
+                        << name << " round " << round << " vertex " << i << " back channel " << c;
+                }
+                for (int c = 0; c < 3; ++c) {
+                    ASSERT_EQ(bits(wideOutputs[i].secondaryColor[c]), bits(scalarOutputs[i].secondaryColor[c]))
+                        << name << " round " << round << " vertex " << i << " secondary channel " << c;
+                    ASSERT_EQ(bits(wideOutputs[i].backSecondaryColor[c]), bits(scalarOutputs[i].backSecondaryColor[c]))
+                        << name << " round " << round << " vertex " << i << " back secondary channel " << c;
                 }
                 ++compared;
             }

@@ -96,10 +96,12 @@ public:
     // Vertices lit in place: each one's colour (the current colour as given, unclamped) becomes
     // the lit colour and, with `twoSided`, its back colour the back face's (the back material,
     // the normal reversed), both clamped as the reference clamps vertex colours; with separate
-    // specular, the specular terms go to the secondary colours instead, clamped likewise.
-    void lightVertices(std::span<Vertex> vertices, bool twoSided) const;
-    // One vertex, in one lane: the same bits without a block's work.
-    void lightVertex(Vertex& vertex, bool twoSided) const;
+    // specular, the specular terms go to the secondary colours instead, clamped likewise. The
+    // back and secondary colours go to `outputs` (one per vertex; zeros for those the state
+    // does not have), or nowhere when it is empty.
+    void lightVertices(std::span<Vertex> vertices, std::span<LightingOutputs> outputs, bool twoSided) const;
+    // One vertex, in one lane: the same bits without a block's work (`outputs` may be null).
+    void lightVertex(Vertex& vertex, LightingOutputs* outputs, bool twoSided) const;
     const PreparedLighting& prepared() const { return prepared_; }
 
 private:

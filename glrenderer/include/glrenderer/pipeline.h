@@ -114,8 +114,10 @@ public:
     void setLighting(const VertexLighting& lighting);
     void setUnlit();
     // glMaterial inside glBegin/glEnd: the open batch's vertices so far are lit now, on the
-    // caller's thread, with the batch's lighting; the caller lights the primitive's next ones.
+    // caller's thread, with the batch's lighting; the caller lights the primitive's next ones,
+    // each with the outputs outputsOfLastVertex() gives, until endPrimitive().
     void lightOpenBatch();
+    LightingOutputs& outputsOfLastVertex();
 
     // A state change, glFlush: the batch ends, as the reference draws what it holds.
     void endBatch();
@@ -176,6 +178,8 @@ private:
     void widen(VertexAttribute attribute, int size);
     void handOverChunk();
     std::size_t batchSize() const;
+    // The chunk's lighting outputs as many as its vertices (see litByCaller_).
+    void syncOutputs();
     // `state` with flat shading (see BatchChunk::batch).
     StateRef flatVersion(const StateRef& state);
 
@@ -192,7 +196,11 @@ private:
     // over with a primitive still open).
     AppendArray<Vertex>* vertices_;
     std::size_t openFirst_ = 0;
-    AppendArray<Vertex> moved_;     // the open vertices on their way to the next chunk
+    AppendArray<Vertex> moved_;                  // the open vertices on their way to the next chunk
+    AppendArray<LightingOutputs> movedOutputs_;  // theirs, when litByCaller_
+    // The open primitive's vertices are lit by the caller (lightOpenBatch): their lighting
+    // outputs follow them wherever the vertices move.
+    bool litByCaller_ = false;
     bool cuttable_ = false;         // the open primitive goes over in parts
     bool colorsPerVertex_ = false;  // batch_->colorsPerVertex, tested inline by each glColor
     bool insidePrimitive_ = false;
