@@ -1,0 +1,181 @@
+// Filled draws that the reference sends through its draw module with no vertex to clip (polygon
+// stipple; a polygon offset with line stipple, smooth lines or smooth points): their quads split
+// along v1-v3 and their quad strips' triangles come in the draw module's order. Every case is
+// compared with a live OSMesa render, colour and depth (docs/probes/quad_split_probe.cpp).
+#include <gtest/gtest.h>
+
+#include <glad/gl.h>
+
+#include <string>
+
+#include "backends.h"
+
+using testing_support::Frame;
+using testing_support::onBothBackends;
+using testing_support::readFrame;
+
+namespace {
+
+constexpr int kSize = 32;
+
+enum class Prim { Quads, QuadStrip, FoldedQuadStrip, Rect };
+
+struct StateCase {
+    const char* name;
+    void (*set)();
+};
+
+void offsetFill() {
+    glPolygonOffset(1.5f, 4.0f);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+}
+
+void lineStipple(GLushort pattern) {
+    glLineStipple(1, pattern);
+    glEnable(GL_LINE_STIPPLE);
+}
+
+const StateCase kStates[] = {
+    {"plain", [] {}},
+    {"polygon stipple", [] { glEnable(GL_POLYGON_STIPPLE); }},
+    {"polygon stipple with a pattern",
+     [] {
+         GLubyte pattern[128];
+         for (int i = 0; i < 128; ++i) pattern[i] = static_cast<GLubyte>(i % 8 < 4 ? 0xB7 : 0x6D);
+         glPolygonStipple(pattern);
+         glEnable(GL_POLYGON_STIPPLE);
+     }},
+    {"polygon stipple + offset fill",
+     [] {
+         glEnable(GL_POLYGON_STIPPLE);
+         offsetFill();
+     }},
+    {"offset fill + line stipple 0x5555",
+     [] {
+         offsetFill();
+         lineStipple(0x5555);
+     }},
+    {"offset fill + line stipple 0",
+     [] {
+         offsetFill();
+         lineStipple(0);
+     }},
+    {"offset fill + line stipple 0xffff (direct)",
+     [] {
+         offsetFill();
+         lineStipple(0xFFFF);
+     }},
+    {"offset fill + line smooth",
+     [] {
+         offsetFill();
+         glEnable(GL_LINE_SMOOTH);
+     }},
+    {"offset fill + point smooth",
+     [] {
+         offsetFill();
+         glEnable(GL_POINT_SMOOTH);
+     }},
+    {"offset line + line stipple",
+     [] {
+         glPolygonOffset(1.5f, 4.0f);
+         glEnable(GL_POLYGON_OFFSET_LINE);
+         lineStipple(0x0F0F);
+     }},
+    {"line stipple alone (direct)", [] { lineStipple(0x5555); }},
+    {"line smooth alone (direct)", [] { glEnable(GL_LINE_SMOOTH); }},
+    {"polygon stipple + cull back",
+     [] {
+         glEnable(GL_POLYGON_STIPPLE);
+         glEnable(GL_CULL_FACE);
+     }},
+};
+
+// Depth near at v0 and v2, far at v1 and v3, and red at v0 and v2 only: either split shows.
+const GLfloat kCorner[4][3] = {{3, 2, 0.5f}, {29, 5, -0.5f}, {27, 30, 0.7f}, {2, 26, -0.3f}};
+
+void vertex(int i, bool ownColors) {
+    if (ownColors) glColor3f(i % 2 == 0 ? 1.0f : 0.1f, 0.3f + 0.2f * static_cast<GLfloat>(i), 0.5f);
+    glVertex3fv(kCorner[i]);
+}
+
+Frame draw(Prim prim, const StateCase& state, bool flat, bool ownColors) {
+    glClearColor(0, 0, 0, 0);
+    glClearDepth(1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glShadeModel(flat ? GL_FLAT : GL_SMOOTH);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, kSize, 0, kSize, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    state.set();
+    glColor3f(0.9f, 0.8f, 0.7f);
+    switch (prim) {
+    case Prim::Quads:
+        glBegin(GL_QUADS);
+        for (int i = 0; i < 4; ++i) vertex(i, ownColors);
+        glEnd();
+        break;
+    case Prim::QuadStrip:
+        glBegin(GL_QUAD_STRIP);
+        for (int i : {0, 1, 3, 2}) vertex(i, ownColors);
+        glEnd();
+        break;
+    case Prim::FoldedQuadStrip:
+        // A bow tie: its two triangles overlap, so the order they are drawn in shows.
+        glBegin(GL_QUAD_STRIP);
+        for (int i : {0, 1, 2, 3}) vertex(i, ownColors);
+        glEnd();
+        break;
+    case Prim::Rect: {
+        // Eye z = x + 0.5 y: the linear fog of |z| is not planar over the rect, so its split shows.
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glOrtho(-1.2, 1.2, -1.2, 1.2, -3, 3);
+        glMatrixMode(GL_MODELVIEW);
+        const GLfloat tilt[16] = {1, 0, 1, 0, 0, 1, 0.5f, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        glLoadMatrixf(tilt);
+        glEnable(GL_FOG);
+        glFogi(GL_FOG_MODE, GL_LINEAR);
+        glFogf(GL_FOG_START, 0);
+        glFogf(GL_FOG_END, 2);
+        glRectf(-1, -1, 1, 1);
+        break;
+    }
+    }
+    return readFrame(kSize, kSize);
+}
+
+// How many pixels differ in colour and in depth.
+std::string differingPixels(const Frame& a, const Frame& b) {
+    int colors = 0, depths = 0;
+    for (std::size_t i = 0; i < a.depth.size(); ++i) {
+        depths += a.depth[i] != b.depth[i];
+        for (std::size_t c = 0; c < 4; ++c) {
+            if (a.color[i * 4 + c] != b.color[i * 4 + c]) {
+                ++colors;
+                break;
+            }
+        }
+    }
+    return std::to_string(colors) + " colour, " + std::to_string(depths) + " depth";
+}
+
+TEST(QuadSplit, DrawModuleFillsSplitQuadsAsTheReference) {
+    const char* const primNames[] = {"GL_QUADS", "GL_QUAD_STRIP", "folded GL_QUAD_STRIP", "glRect under fog"};
+    for (Prim prim : {Prim::Quads, Prim::QuadStrip, Prim::FoldedQuadStrip, Prim::Rect})
+        for (const StateCase& state : kStates)
+            for (bool flat : {false, true})
+                for (bool own : {false, true}) {
+                    if (prim == Prim::Rect && own) continue;
+                    const auto frames =
+                        onBothBackends<Frame>([&] { return draw(prim, state, flat, own); }, kSize, kSize);
+                    EXPECT_EQ(differingPixels(frames.mygl, frames.osmesa), "0 colour, 0 depth")
+                        << primNames[static_cast<int>(prim)] << ", " << state.name << (flat ? ", flat" : ", smooth")
+                        << (own ? ", own colours" : ", one colour");
+                }
+}
+
+}  // namespace
