@@ -118,7 +118,8 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
                         nullptr,
                         drawable,
                         stagedSnaps && !drawModuleCulls,
-                        drawModuleOffsets};
+                        drawModuleOffsets,
+                        drawModuleFills};
         decomposeTriangles(batch.mode, count, path, v1v3Quads, [&](TriangleIndices t) {
             for (std::uint32_t& v : t.v) v = indexed ? batch.indices[v + first] : v + first;
             setUpTriangle(call, t, viewport);
@@ -220,8 +221,11 @@ template <class Record>
 void BatchSetup::setUpSidedTriangle(const Call& call, const std::array<const WindowVertex*, 3>& window,
                                     std::array<const Record*, 3> records, const Vertex& provoking) {
     const DrawState& state = *call.batch.state;
-    const bool back = state.twoSidedColors && facingOf(fixedArea(snap(*window[0]), snap(*window[1]), snap(*window[2])),
-                                                       state.frontFaceCCW) == Facing::Back;
+    const bool back =
+        state.twoSidedColors &&
+        (call.drawModuleSides ? drawModuleFacesBack(*window[0], *window[1], *window[2], state.frontFaceCCW)
+                              : facingOf(fixedArea(snap(*window[0]), snap(*window[1]), snap(*window[2])),
+                                         state.frontFaceCCW) == Facing::Back);
     const glm::vec4& flatColor = back ? provoking.backColor : provoking.color;
     const bool flatSecondary = state.secondaryColors && state.shadeModel == ShadeModel::Flat;
     if (!back && !flatSecondary) return setUpTriangle(call, *window[0], *window[1], *window[2], flatColor);
