@@ -3,11 +3,13 @@
 #include <immintrin.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <limits>
 
 #include "clip.h"
 #include "decompose.h"
+#include "polygon_offset.h"
 #include "seed_culling.h"
 #include "vertex_stage.h"
 
@@ -88,16 +90,21 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
     const ViewportTransform viewport(*batch.state, framebuffer_.height());
     const bool v1v3Quads =
         (batch.state->shadeModel == ShadeModel::Flat && batch.colorsPerVertex) || batch.quadSplit == QuadSplit::V1V3;
-    const FragmentChoice fragments(bestFragmentPaths(), triangleFragmentKey(*batch.state, batch.methods), *batch.state);
+    const bool drawModuleFills = fillsThroughDrawModule(*batch.state);
+    FragmentKey key = triangleFragmentKey(*batch.state, batch.methods);
+    const bool drawModuleOffsets = drawModuleFills && key.depthOffset;
+    key.depthOffset = key.depthOffset && !drawModuleOffsets;
+    const FragmentChoice fragments(bestFragmentPaths(), key, *batch.state);
     const std::span<const ClipVertex> assembled =
         batch.methods.needsEyeSpace() ? vertexStage_.assemble(batch).vertices : std::span<const ClipVertex>{};
     const PixelRect drawable =
         drawableRect(batch.state->fragmentOps.scissor, framebuffer_.width(), framebuffer_.height());
-    const bool stagedSnaps =
-        !batch.state->twoSidedColors && !(batch.state->secondaryColors && batch.state->shadeModel == ShadeModel::Flat);
+    const bool stagedSnaps = !batch.state->twoSidedColors && !drawModuleOffsets &&
+                             !(batch.state->secondaryColors && batch.state->shadeModel == ShadeModel::Flat);
     // The vertices first .. first + count, on the direct path or through the draw module.
     const auto decompose = [&](std::uint32_t first, std::uint32_t count, Outcode outside) {
-        const DecompositionPath path = outside == 0 ? DecompositionPath::Direct : DecompositionPath::DrawModule;
+        const DecompositionPath path =
+            outside == 0 && !drawModuleFills ? DecompositionPath::Direct : DecompositionPath::DrawModule;
         const bool drawModuleCulls = path == DecompositionPath::DrawModule && batch.state->cullEnabled &&
                                      batch.methods.culling == CullMethod::WindowArea;
         const Call call{batch,
@@ -110,14 +117,16 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
                         nullptr,
                         nullptr,
                         drawable,
-                        stagedSnaps && !drawModuleCulls};
+                        stagedSnaps && !drawModuleCulls,
+                        drawModuleOffsets,
+                        drawModuleFills};
         decomposeTriangles(batch.mode, count, path, v1v3Quads, [&](TriangleIndices t) {
             for (std::uint32_t& v : t.v) v = indexed ? batch.indices[v + first] : v + first;
             setUpTriangle(call, t, viewport);
         });
     };
     const auto count = static_cast<std::uint32_t>(indexed ? batch.indices.size() : batch.vertices.size());
-    if (batch.mode != PrimitiveMode::Quads || anyOutside == 0 || count <= kQuadSegmentVertices) {
+    if (batch.mode != PrimitiveMode::Quads || anyOutside == 0 || drawModuleFills || count <= kQuadSegmentVertices) {
         return decompose(0, count, anyOutside);
     }
     // The reference's draw module takes a long draw of quads in segments of 4096 vertices and
@@ -213,8 +222,11 @@ void BatchSetup::setUpSidedTriangle(const Call& call, const std::array<const Win
                                     std::array<const Record*, 3> records, const glm::vec4& provokingColor,
                                     const LightingOutputs& provoking) {
     const DrawState& state = *call.batch.state;
-    const bool back = state.twoSidedColors && facingOf(fixedArea(snap(*window[0]), snap(*window[1]), snap(*window[2])),
-                                                       state.frontFaceCCW) == Facing::Back;
+    const bool back =
+        state.twoSidedColors &&
+        (call.drawModuleSides ? drawModuleFacesBack(*window[0], *window[1], *window[2], state.frontFaceCCW)
+                              : facingOf(fixedArea(snap(*window[0]), snap(*window[1]), snap(*window[2])),
+                                         state.frontFaceCCW) == Facing::Back);
     const glm::vec4& flatColor = back ? provoking.backColor : provokingColor;
     const bool flatSecondary = state.secondaryColors && state.shadeModel == ShadeModel::Flat;
     if (!back && !flatSecondary) return setUpTriangle(call, *window[0], *window[1], *window[2], flatColor);
@@ -267,6 +279,13 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
     if (call.feedback) {
         call.feedback->triangle(v0, v1, v2);
         return;
+    }
+    if (call.drawModuleOffsets) {
+        std::array<WindowVertex, 3> offset{v0, v1, v2};
+        offsetInDrawModule(state.polygonOffset, offset[0], offset[1], offset[2]);
+        SetupTriangle triangle{
+            {&offset[0], &offset[1], &offset[2]}, {snap(offset[0]), snap(offset[1]), snap(offset[2])}, 0, &flatColor};
+        return setUpSnapped(call, triangle);
     }
     SetupTriangle triangle{{&v0, &v1, &v2}, {snap(v0), snap(v1), snap(v2)}, 0, &flatColor};
     setUpSnapped(call, triangle);

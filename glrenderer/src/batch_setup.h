@@ -73,6 +73,12 @@ private:
         // The triangles on the direct path take the stage's snapped vertices as they are: no
         // draw-module culling, selection, feedback, back colours or flat secondary colours.
         bool stagedSnaps = false;
+        // The draw module's offset stage offsets the triangles' vertices (fillsThroughDrawModule
+        // with GL_POLYGON_OFFSET_FILL), not setup their fragments.
+        bool drawModuleOffsets = false;
+        // The draw module's two-sided stage picks the back colours, by its determinant
+        // (fillsThroughDrawModule), not the rasterizer by setup's area.
+        bool drawModuleSides = false;
     };
     void setUpTriangle(const Call& call, const TriangleIndices& triangle, const ViewportTransform& viewport);
     // A triangle's window vertices (by address: most triangles take them as they are) with the

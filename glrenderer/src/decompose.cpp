@@ -4,6 +4,13 @@ namespace glrenderer {
 
 bool isTriangleMode(PrimitiveMode mode) { return mode >= PrimitiveMode::Triangles; }
 
+bool fillsThroughDrawModule(const DrawState& state) {
+    const PolygonOffset& offset = state.polygonOffset;
+    const bool drawModuleOffsets =
+        (state.lineStipple.enabled && state.lineStipple.pattern != 0xFFFF) || state.lineSmooth || state.pointSmooth;
+    return state.polygonStipple.enabled || ((offset.fill || offset.line || offset.point) && drawModuleOffsets);
+}
+
 std::size_t usableVertexCount(PrimitiveMode mode, std::size_t count) {
     switch (mode) {
     case PrimitiveMode::Points: return count;

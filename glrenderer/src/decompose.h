@@ -22,6 +22,12 @@ std::size_t usableVertexCount(PrimitiveMode mode, std::size_t count);
 
 bool isTriangleMode(PrimitiveMode mode);
 
+// Whether the reference sends filled polygons through its draw module with no vertex to clip:
+// polygon stipple on (even the pattern of all ones), or any polygon offset on while the
+// rasterizer leaves the offset to the draw module, which it does with line stipple on (a pattern
+// other than all ones), smooth lines or smooth points. Measured: docs/probes/quad_split_probe.cpp.
+bool fillsThroughDrawModule(const DrawState& state);
+
 // Calls emit(TriangleIndices) for each triangle of a triangle-type mode, in the reference's order.
 // v1v3Quads: quads take the v1-v3 diagonal on the direct path too. The reference does so for
 // flat shading where the draw's vertices carry colors of their own (glColor inside

@@ -81,6 +81,14 @@ inline Facing drawModuleFacing(float determinant, bool frontFaceCCW) {
     return determinant != 0.0f && (determinant < 0.0f) == frontFaceCCW ? Facing::Front : Facing::Back;
 }
 
+// The draw module's two-sided stage: a triangle back-facing by its determinant, not 0, takes the
+// back colours.
+inline bool drawModuleFacesBack(const WindowVertex& v0, const WindowVertex& v1, const WindowVertex& v2,
+                                bool frontFaceCCW) {
+    const float determinant = drawModuleDeterminant(v0, v1, v2);
+    return determinant != 0.0f && drawModuleFacing(determinant, frontFaceCCW) == Facing::Back;
+}
+
 // A linear function of the pixel position, a(x, y) = a0 + dadx * x + dady * y, evaluated at the
 // pixel's integer coordinates (a0 already holds the half-pixel offset) with the reference's fma.
 struct AttributePlane {
