@@ -139,7 +139,11 @@ struct Avx2LanesOf {
     // result lies between a and b: no field carries into the next.
     // The weight takes the factor 128 (w * 128 < 2^15), one shift a weight instead of one a lerp.
     static Int lerpFields(Int w, Int a, Int b) {
-        const __m256i w16 = _mm256_or_si256(_mm256_slli_epi32(w, 7), _mm256_slli_epi32(w, 16 + 7));
+        __m256i w16;
+        if constexpr (Evex)  // one multiply (w < 256: the two products do not overlap)
+            w16 = _mm256_mullo_epi32(w, _mm256_set1_epi32(0x00800080));
+        else
+            w16 = _mm256_or_si256(_mm256_slli_epi32(w, 7), _mm256_slli_epi32(w, 16 + 7));
         return _mm256_add_epi16(a, _mm256_mulhrs_epi16(w16, _mm256_sub_epi16(b, a)));
     }
     static Mask greaterThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_GT_OQ)); }
