@@ -139,7 +139,11 @@ struct Avx2LanesOf {
     // result lies between a and b: no field carries into the next.
     // The weight takes the factor 128 (w * 128 < 2^15), one shift a weight instead of one a lerp.
     static Int lerpFields(Int w, Int a, Int b) {
-        const __m256i w16 = _mm256_or_si256(_mm256_slli_epi32(w, 7), _mm256_slli_epi32(w, 16 + 7));
+        __m256i w16;
+        if constexpr (Evex)  // one multiply (w < 256: the two products do not overlap)
+            w16 = _mm256_mullo_epi32(w, _mm256_set1_epi32(0x00800080));
+        else
+            w16 = _mm256_or_si256(_mm256_slli_epi32(w, 7), _mm256_slli_epi32(w, 16 + 7));
         return _mm256_add_epi16(a, _mm256_mulhrs_epi16(w16, _mm256_sub_epi16(b, a)));
     }
     static Mask greaterThan(Float a, Float b) { return _mm256_castps_si256(_mm256_cmp_ps(a, b, _CMP_GT_OQ)); }
@@ -161,15 +165,20 @@ struct Avx2LanesOf {
     // Lanes 0-3 in lanes 0-3 and 4-7; lanes 0-3 and 4-7 exchanged.
     static Float firstHalfTwice(Float v) { return _mm256_permute2f128_ps(v, v, 0x00); }
     static Float swapHalves(Float v) { return _mm256_permute2f128_ps(v, v, 0x01); }
-    // table[index] per lane, index 0-15: two permutes, where a gather of a 16-entry table is
-    // several times slower.
+    // table[index] per lane, index 0-15: two permutes (one two-table permute with AVX-512VL),
+    // where a gather of a 16-entry table is several times slower.
     static Int lookup16(const std::uint32_t* table, Int index) {
-        const Int low = _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table)), index);
-        const Int high =
-            _mm256_permutevar8x32_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + 8)), index);
-        // Bit 3 of the index (8-15: the second half) as the sign bit a float blend reads.
-        const __m256 second = _mm256_castsi256_ps(_mm256_slli_epi32(index, 28));
-        return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(low), _mm256_castsi256_ps(high), second));
+        const Int first = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(table));
+        const Int second = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(table + 8));
+        if constexpr (Evex) {
+            return _mm256_permutex2var_epi32(first, index, second);  // bit 3 of the index picks the table
+        } else {
+            const Int low = _mm256_permutevar8x32_epi32(first, index),
+                      high = _mm256_permutevar8x32_epi32(second, index);
+            // Bit 3 of the index (8-15: the second half) as the sign bit a float blend reads.
+            const __m256 upper = _mm256_castsi256_ps(_mm256_slli_epi32(index, 28));
+            return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(low), _mm256_castsi256_ps(high), upper));
+        }
     }
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
