@@ -280,15 +280,16 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         call.feedback->triangle(v0, v1, v2);
         return;
     }
-    if (call.drawModuleOffsets) {
+    const auto setUpAt = [&](const WindowVertex& a, const WindowVertex& b, const WindowVertex& c) {
+        SetupTriangle triangle{{&a, &b, &c}, {snap(a), snap(b), snap(c)}, 0, &flatColor};
+        setUpSnapped(call, triangle);
+    };
+    if (call.drawModuleOffsets) {  // the draw module's offset stage moves the vertices themselves
         std::array<WindowVertex, 3> offset{v0, v1, v2};
         offsetInDrawModule(state.polygonOffset, offset[0], offset[1], offset[2]);
-        SetupTriangle triangle{
-            {&offset[0], &offset[1], &offset[2]}, {snap(offset[0]), snap(offset[1]), snap(offset[2])}, 0, &flatColor};
-        return setUpSnapped(call, triangle);
+        return setUpAt(offset[0], offset[1], offset[2]);
     }
-    SetupTriangle triangle{{&v0, &v1, &v2}, {snap(v0), snap(v1), snap(v2)}, 0, &flatColor};
-    setUpSnapped(call, triangle);
+    setUpAt(v0, v1, v2);
 }
 
 void BatchSetup::setUpStaged(const Call& call, const TriangleIndices& t, const glm::vec4& flatColor) {
