@@ -77,19 +77,20 @@ Options parse(int argc, char** argv) {
 // The course's table: what the pipeline did with each scene, culling forced off and then on.
 void printStats(const std::vector<const scenes::Scene*>& selected, const Options& o) {
     // tris + created = clipped + back + front + zero + rasterized
-    std::printf("%-28s %-9s %5s %8s %8s %7s %7s %5s %10s %10s\n", "scene", "culling", "tris", "created", "clipped",
-                "back", "front", "zero", "rasterized", "fragments");
+    std::printf("%-28s %-9s %5s %8s %8s %7s %7s %5s %10s %10s %10s\n", "scene", "culling", "tris", "created",
+                "clipped", "back", "front", "zero", "rasterized", "fragments", "passed");
     for (const scenes::Scene* scene : selected) {
         for (bool culling : {false, true}) {
             const mygl::Stats s = scenes::render(scenes::Backend::MyGL, *scene, o.width, o.height, o.frame,
                                                  {culling, std::nullopt, false, false})
                                       .stats;
-            std::printf("%-28s %-9s %5llu %8llu %8llu %7llu %7llu %5llu %10llu %10llu\n", scene->name.c_str(),
+            std::printf("%-28s %-9s %5llu %8llu %8llu %7llu %7llu %5llu %10llu %10llu %10llu\n", scene->name.c_str(),
                         culling ? "cull=back" : "cull=off", static_cast<unsigned long long>(s.triangles),
                         static_cast<unsigned long long>(s.clipCreated), static_cast<unsigned long long>(s.clippedAway),
                         static_cast<unsigned long long>(s.culledBack), static_cast<unsigned long long>(s.culledFront),
                         static_cast<unsigned long long>(s.culledZeroArea),
-                        static_cast<unsigned long long>(s.rasterized), static_cast<unsigned long long>(s.fragments));
+                        static_cast<unsigned long long>(s.rasterized), static_cast<unsigned long long>(s.fragments),
+                        static_cast<unsigned long long>(s.fragmentsPassed));
         }
     }
 }
