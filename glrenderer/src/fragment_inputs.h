@@ -53,6 +53,9 @@ struct FragmentRoutine {
     Span span = nullptr;
     Rows rows = nullptr;
     Narrow narrow = nullptr;  // optional
+    // The passes of deferred shading (DeferredPass), for a fast key that defersColor().
+    const FragmentRoutine* visibility = nullptr;
+    const FragmentRoutine* shade = nullptr;
 };
 
 // A key and the routine that serves it on this CPU.

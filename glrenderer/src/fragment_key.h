@@ -6,6 +6,19 @@
 
 namespace glrenderer {
 
+// A pass of deferred shading (TileRasterizer): where a tile's opaque, depth-tested primitives
+// overlap many times over, it draws them twice, first their depths alone, then the colour of
+// each pixel's last winner only, instead of the colour of every fragment that passes for a while.
+enum class DeferredPass : std::uint8_t {
+    None,        // depth and colour at once
+    Visibility,  // the depth test and depth writes alone; the depths written carry kDeferredMark
+    Shade,       // the colour of the first fragment whose depth is a pixel's marked depth, unmarking it
+};
+
+// Set on a depth written by a visibility pass: 24-bit depths never have it, so the stored
+// values of the primitives before the pass are told from those of the pass.
+inline constexpr std::uint32_t kDeferredMark = 1u << 24;
+
 // How a primitive's colour reaches its fragments.
 enum class Shading : std::uint8_t {
     Flat,         // one colour for the whole primitive
@@ -67,6 +80,8 @@ struct FragmentKey {
     // they replace the fragment's depth or the stencil reference, the colour stays flat.
     TexelUse texelUse = TexelUse::Color;
 
+    DeferredPass deferredPass = DeferredPass::None;
+
     // Whether the texture environment colours the fragments.
     constexpr bool texturesColor() const { return textureEnv != TextureEnv::Off && texelUse == TexelUse::Color; }
 
@@ -75,8 +90,33 @@ struct FragmentKey {
         return textureEnv != TextureEnv::Off && (mipFilter != MipmapFilter::None || minFilter != magFilter);
     }
 
+    // Whether deferred shading draws this key's primitives exactly: each pixel's colour is that
+    // of the last fragment to pass there (depth writes, the colour replaced: nothing read back,
+    // no test on the colour, no stencil), and under GL_LESS that is the first fragment to reach
+    // the pixel's final depth (the stored depth only decreases), found again from depths alone.
+    // Only for keys whose colour costs (texturing): for the others the second pass costs more
+    // than it saves.
+    constexpr bool defersColor() const {
+        return deferredPass == DeferredPass::None && depthTest && depthFunc == CompareFunc::Less && depthWrite &&
+               !readsColor() && alphaFunc == CompareFunc::Always && !stencilTest && texturesColor();
+    }
+
     bool operator==(const FragmentKey&) const = default;
 };
+
+// The two passes of deferred shading of a key that defersColor(): the visibility pass keeps only
+// what decides which fragments pass, normalized so that keys share it.
+constexpr FragmentKey visibilityKey(const FragmentKey& key) {
+    FragmentKey visibility;
+    visibility.depthTest = true, visibility.depthFunc = CompareFunc::Less, visibility.depthWrite = true;
+    visibility.depthOffset = key.depthOffset, visibility.polygonStipple = key.polygonStipple;
+    visibility.deferredPass = DeferredPass::Visibility;
+    return visibility;
+}
+constexpr FragmentKey shadeKey(FragmentKey key) {
+    key.deferredPass = DeferredPass::Shade;
+    return key;
+}
 
 // A key from its parts, normalized.
 constexpr FragmentKey makeFragmentKey(Shading shading, bool depthTest, CompareFunc depthFunc, bool depthWrite) {

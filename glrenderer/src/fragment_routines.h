@@ -300,14 +300,22 @@ struct RoutinesOf {
         return shadeNarrowTriangle<L>(t.fragment.key, t, area, fb, counts);
     }
 
-    // The fast path of `Key`.
+    // The fast path of `Key`, with its deferred shading's if the key defers its colour.
     template <FragmentKey Key>
     static constexpr FragmentRoutine fastRoutine() {
-        if constexpr (L::kNarrowBlocks)
-            return {&span<Key>, &rows<Key>, &narrow<Key>};
-        else
-            return {&span<Key>, &rows<Key>, nullptr};
+        FragmentRoutine routine{&span<Key>, &rows<Key>, nullptr};
+        if constexpr (L::kNarrowBlocks) routine.narrow = &narrow<Key>;
+        if constexpr (Key.defersColor()) {
+            routine.visibility = &DeferredPassesOf<Key>::visibility;
+            routine.shade = &DeferredPassesOf<Key>::shade;
+        }
+        return routine;
     }
+    template <FragmentKey Key>
+    struct DeferredPassesOf {
+        static constexpr FragmentRoutine visibility = fastRoutine<visibilityKey(Key)>();
+        static constexpr FragmentRoutine shade = fastRoutine<shadeKey(Key)>();
+    };
     template <std::size_t... I>
     static constexpr auto fastPaths(std::index_sequence<I...>) {
         return std::array<FragmentPaths::FastPath, sizeof...(I)>{

@@ -236,7 +236,21 @@ template <class L, class Block>
         stencil = updatedStencil = block.load(buffers.stencil, live);
         live = stencilTest<L>(key, in, live, stencilRef, stencil, updatedStencil);
     }
-    if (key.depthTest) {
+    if (key.deferredPass == DeferredPass::Visibility) {
+        // The depth test against the depths without their marks; the depths written marked.
+        const Int z = in.depth24(key, x, y, live);
+        const Int stored = L::bitAnd(block.load(buffers.depth, live), L::ints(kDeferredMark - 1));
+        live = L::compare(key.depthFunc, live, z, stored);
+        block.store(buffers.depth, live, L::bitOr(z, L::ints(kDeferredMark)));
+        return live;
+    }
+    if (key.deferredPass == DeferredPass::Shade) {
+        // The pixels whose last winner this fragment is: their marked depth is its own.
+        const Int z = in.depth24(key, x, y, live);
+        live =
+            L::compare(CompareFunc::Equal, live, L::bitOr(z, L::ints(kDeferredMark)), block.load(buffers.depth, live));
+        block.store(buffers.depth, live, z);
+    } else if (key.depthTest) {
         const Int z = in.depth24(key, x, y, live);
         const typename L::Mask depthPass = L::compare(key.depthFunc, live, z, block.load(buffers.depth, live));
         if (key.stencilDepthFail != StencilOp::Keep) {

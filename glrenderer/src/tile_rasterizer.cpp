@@ -2,6 +2,7 @@
 
 #include "glrenderer/invariant.h"
 #include "raster_float_methods.h"
+#include "raster_span.h"
 #include "thread_count.h"
 
 #include <algorithm>
@@ -59,6 +60,30 @@ void prefetch(const RasterTriangle& triangle) {
     const char* bytes = reinterpret_cast<const char*>(&triangle);
     for (std::size_t line = 0; line < kCommonTriangleBytes; line += 64) __builtin_prefetch(bytes + line);
 }
+
+// The tile's entries in order, each triangle's record fetched a few ahead: a tile's triangles
+// lie scattered over the queue, usually far out of cache.
+template <class Entry, class Draw>
+void forEachFetchingAhead(std::span<const Entry> entries, Draw&& draw) {
+    constexpr std::size_t kAhead = 4;
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        if (i + kAhead < entries.size()) {
+            if (const RasterTriangle* ahead = entries[i + kAhead].triangle()) prefetch(*ahead);
+        }
+        draw(entries[i]);
+    }
+}
+
+// Whether the entry is a triangle that defers its colour (FragmentKey::defersColor).
+template <class Entry>
+bool defersColor(const Entry& entry) {
+    const RasterTriangle* t = entry.triangle();
+    return t && t->method == RasterMethod::Exact && t->fragment.routine->shade;
+}
+
+// Deferred shading pays where a run of triangles covers a tile this many times over, counting
+// their bounds (about twice their area).
+constexpr std::int64_t kDeferredMinCover = 4;
 
 }  // namespace
 
@@ -168,6 +193,38 @@ void TileRasterizer::clearTile(std::size_t tile, const PixelRect& rect, bool dra
     finishStreaming();
 }
 
+void TileRasterizer::drawInOrder(std::span<const BinEntry> entries, const PixelRect& rect, FragmentCounts& counts) {
+    forEachFetchingAhead(entries, [&](const BinEntry& entry) {
+        if (const RasterTriangle* triangle = entry.triangle())
+            rasterizeWithMethod(*triangle, rect, framebuffer_, counts);
+        else
+            entry.other().draw(rect, framebuffer_, counts);
+    });
+}
+
+void TileRasterizer::drawDeferred(std::span<const BinEntry> run, const PixelRect& rect, FragmentCounts& counts) {
+    std::int64_t boundsArea = 0;  // of the run's triangles in the tile
+    for (const BinEntry& entry : run) {
+        const RasterTriangle& t = *entry.triangle();
+        const int width = std::min(t.maxX, rect.maxX) - std::max(t.minX, rect.minX) + 1;
+        const int height = std::min(t.maxY, rect.maxY) - std::max(t.minY, rect.minY) + 1;
+        if (width > 0 && height > 0) boundsArea += std::int64_t{width} * height;
+    }
+    const std::int64_t tileArea = std::int64_t{rect.maxX - rect.minX + 1} * (rect.maxY - rect.minY + 1);
+    if (boundsArea < kDeferredMinCover * tileArea) return drawInOrder(run, rect, counts);
+    forEachFetchingAhead(run, [&](const BinEntry& entry) {
+        const RasterTriangle& t = *entry.triangle();
+        rasterizeTriangleSpans(t, rect, framebuffer_, counts, *t.fragment.routine->visibility);
+    });
+    // Each pixel's winner is the first fragment to reach its final depth (FragmentKey::defersColor);
+    // its shading unmarks the depth, so that no later fragment of that depth takes the pixel.
+    FragmentCounts shaded;  // the same fragments again: the visibility pass counted them
+    forEachFetchingAhead(run, [&](const BinEntry& entry) {
+        const RasterTriangle& t = *entry.triangle();
+        rasterizeTriangleSpans(t, rect, framebuffer_, shaded, *t.fragment.routine->shade);
+    });
+}
+
 void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool paintersSort) {
     const int tx = static_cast<int>(tile % static_cast<std::size_t>(tilesX_));
     const int ty = static_cast<int>(tile / static_cast<std::size_t>(tilesX_));
@@ -184,17 +241,17 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
         clearPending_[tile] = 0;
     }
     if (!bin.empty()) holdsClear_[tile] = 0;
-    // A tile's triangles lie scattered over the queue, usually far out of cache: fetch a few
-    // ahead while drawing the current one.
-    constexpr std::size_t kPrefetchAhead = 4;
-    for (std::size_t i = 0; i < bin.size(); ++i) {
-        if (i + kPrefetchAhead < bin.size()) {
-            if (const RasterTriangle* ahead = bin[i + kPrefetchAhead].triangle()) prefetch(*ahead);
-        }
-        if (const RasterTriangle* triangle = bin[i].triangle())
-            rasterizeWithMethod(*triangle, rect, framebuffer_, counts);
+    // Runs of entries: triangles that defer their colour, or others.
+    for (std::size_t first = 0; first < bin.size();) {
+        const bool deferring = defersColor(bin[first]);
+        std::size_t end = first + 1;
+        while (end < bin.size() && defersColor(bin[end]) == deferring) ++end;
+        const std::span<const BinEntry> run = std::span(bin).subspan(first, end - first);
+        if (deferring)
+            drawDeferred(run, rect, counts);
         else
-            bin[i].other().draw(rect, framebuffer_, counts);
+            drawInOrder(run, rect, counts);
+        first = end;
     }
     bin.clear();
 }

@@ -14,9 +14,10 @@ namespace glrenderer {
 
 // Defers rasterization: triangles, points and lines are binned into screen tiles and drawn at
 // flush(), tiles in parallel, each tile's primitives in submission order; drawSomeTiles() may
-// draw part of the queue earlier on a thread that would otherwise wait. Every pixel is computed
-// exactly as the immediate kernel computes it, so the result does not depend on tiling, threads
-// or timing.
+// draw part of the queue earlier on a thread that would otherwise wait. Where textured triangles
+// cover a tile many times over, their colour is deferred (drawDeferred): each pixel is shaded
+// once, by the fragment that wins it. Every pixel is computed exactly as the immediate kernel
+// computes it, so the result does not depend on tiling, deferral, threads or timing.
 class TileRasterizer final : public TriangleTarget, public PrimitiveQueue {
 public:
     explicit TileRasterizer(Framebuffer& framebuffer);
@@ -96,6 +97,11 @@ private:
     void binInto(BinEntry entry, int firstX, int lastX, int firstY, int lastY);
     // Clears the tile if a clear is pending for it, draws its queued triangles, empties its bin.
     void drawTile(std::size_t tile, FragmentCounts& counts, bool paintersSort);
+    // Draws the entries of a tile, one after the other.
+    void drawInOrder(std::span<const BinEntry> entries, const PixelRect& rect, FragmentCounts& counts);
+    // Draws a run of triangles that defer their colour with deferred shading (DeferredPass) where
+    // it covers the tile many times over, else in order.
+    void drawDeferred(std::span<const BinEntry> run, const PixelRect& rect, FragmentCounts& counts);
     // Before tiles are drawn: which tiles hold the pending clear's values already.
     void startDrawingTiles();
     // Clears the tile's part of the buffers being cleared that do not hold the values already;
