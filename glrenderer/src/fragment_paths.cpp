@@ -25,9 +25,9 @@ FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key, cons
 }
 
 FragmentChoice::FragmentChoice(const FragmentPaths& paths, FragmentKey key) {
-    varyingW = {key, &paths.routine(key)};
+    varyingW = {key, &paths.routine(routineKey(key))};
     if (key.shading == Shading::Perspective) key.shading = Shading::Linear;
-    constantW = {key, &paths.routine(key)};
+    constantW = {key, &paths.routine(routineKey(key))};
 }
 
 const FragmentPaths& bestFragmentPaths() {

@@ -45,12 +45,23 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
                 TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
                 TextureWrap::Repeat, TextureWrap::Repeat),
+    // The same textures on orthographic primitives or in one colour (a flat key that textures
+    // takes its linear key's routine: FragmentChoice).
+    withTexture(makeFragmentKey(Shading::Linear, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgb, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
+                TextureWrap::Repeat, TextureWrap::Repeat),
+    withTexture(makeFragmentKey(Shading::Linear, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgba, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
+                TextureWrap::Repeat, TextureWrap::Repeat),
+    withTexture(makeFragmentKey(Shading::Linear, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
+                TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
+                TextureWrap::Repeat, TextureWrap::Repeat),
     // A fogged landscape with a mipmapped ground texture (bench-fog-textured-terrain).
     withTexture(withFog(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), FogMode::Linear),
                 TextureEnv::Modulate, false, TextureBase::Rgb, TextureFilter::Linear, TextureFilter::Linear,
                 MipmapFilter::Linear, TextureWrap::Repeat, TextureWrap::Repeat),
-    // glDrawPixels' quad without fragment operations (bench-draw-pixels).
-    withTexture(makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false), TextureEnv::Replace, false,
+    // glDrawPixels' quad without fragment operations (bench-draw-pixels; flat, by routineKey).
+    withTexture(makeFragmentKey(Shading::Linear, false, CompareFunc::Always, false), TextureEnv::Replace, false,
                 TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
                 TextureWrap::ClampToEdge, TextureWrap::ClampToEdge),
 };
@@ -92,7 +103,7 @@ const FragmentPaths& scalarFragmentPaths();
 // 8 lanes of AVX2 with FMA; only after cpuHasAvx2Fma().
 const FragmentPaths& avx2FragmentPaths();
 // The AVX2 paths compiled for AVX-512VL (32 registers); only after cpuHasAvx512().
-const FragmentPaths& avx2EvexFragmentPaths();
+const FragmentPaths& avx2EvexFragmentPaths();  // fast paths for keys with a level of detail only
 // 16 lanes of AVX-512F; only after cpuHasAvx512(). Keys that sample a texture with a level of
 // detail take the 8-lane avx2EvexFragmentPaths: with 14 gathers a block, 16-lane blocks on
 // short spans made bench-textured-cubes take 1.3-1.9 times as long (AMD EPYC, 150 frames,
@@ -103,9 +114,19 @@ const FragmentPaths& bestFragmentPaths();
 // The general path: the scalar routine for any key.
 inline const FragmentRoutine& generalFragmentRoutine() { return scalarFragmentPaths().anyKey(); }
 
-// A draw's fragment paths, chosen once per draw from its key. A primitive whose 1 / w is the
-// constant 1 (w = 1 at every vertex, as in orthographic scenes) takes `constantW`: the key with
-// linear shading, as dividing by one would change no bit.
+// The key whose routine draws a key's primitives: a flat key that reads its colour planes anyway
+// (fog, texturing, the colour sum: constant planes, FragmentInputs::setFlatColor) does the work
+// of its linear key, bit for bit.
+constexpr FragmentKey routineKey(FragmentKey key) {
+    if (key.shading == Shading::Flat && (key.fog != FogMode::Off || key.texturesColor() || key.colorSum)) {
+        key.shading = Shading::Linear;
+    }
+    return key;
+}
+
+// A draw's fragment paths, chosen once per draw from its key (the routine of its routineKey). A
+// primitive whose 1 / w is the constant 1 (w = 1 at every vertex, as in orthographic scenes)
+// takes `constantW`: the key with linear shading, as dividing by one would change no bit.
 struct FragmentChoice {
     // With the draw's state when the key reads its constants (fog, polygon offset).
     FragmentChoice(const FragmentPaths& paths, FragmentKey key);

@@ -7,6 +7,8 @@
 
 namespace glrenderer {
 
-const FragmentPaths& avx2EvexFragmentPaths() { return fragmentPathsOf<Avx2LanesOf<true>>(); }
+const FragmentPaths& avx2EvexFragmentPaths() {
+    return fragmentPathsOf<Avx2LanesOf<true>, nullptr, FastKeys::WithLod>();
+}
 
 }  // namespace glrenderer

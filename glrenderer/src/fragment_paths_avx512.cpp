@@ -5,6 +5,8 @@
 
 namespace glrenderer {
 
-const FragmentPaths& avx512FragmentPaths() { return fragmentPathsOf<Avx512Lanes, &avx2EvexFragmentPaths>(); }
+const FragmentPaths& avx512FragmentPaths() {
+    return fragmentPathsOf<Avx512Lanes, &avx2EvexFragmentPaths, FastKeys::WithoutLod>();
+}
 
 }  // namespace glrenderer

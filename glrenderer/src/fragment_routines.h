@@ -271,6 +271,27 @@ template <class L>
     return true;
 }
 
+// Which keys of kFastFragmentKeys a width compiles fast paths for: all, or only those with (or
+// without) a level of detail where other paths serve the rest (FragmentPaths' lodPaths).
+enum class FastKeys { All, WithLod, WithoutLod };
+
+constexpr bool compilesFastPath(FastKeys keys, const FragmentKey& key) {
+    return keys == FastKeys::All || (keys == FastKeys::WithLod) == key.samplesLod();
+}
+
+// The indices in kFastFragmentKeys of the keys of `Keys`.
+template <FastKeys Keys>
+constexpr auto fastKeyIndices() {
+    constexpr auto count = static_cast<std::size_t>(
+        std::ranges::count_if(kFastFragmentKeys, [](const FragmentKey& key) { return compilesFastPath(Keys, key); }));
+    std::array<std::size_t, count> indices{};
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < std::size(kFastFragmentKeys); ++i) {
+        if (compilesFastPath(Keys, kFastFragmentKeys[i])) indices[next++] = i;
+    }
+    return indices;
+}
+
 // The routines of lane type L: per key of kFastFragmentKeys, the key a constant (a fast path),
 // and for any key, read from the primitive at run time.
 template <class L>
@@ -316,10 +337,11 @@ struct RoutinesOf {
         static constexpr FragmentRoutine visibility = fastRoutine<visibilityKey(Key)>();
         static constexpr FragmentRoutine shade = fastRoutine<shadeKey(Key)>();
     };
-    template <std::size_t... I>
+    template <FastKeys Keys, std::size_t... I>
     static constexpr auto fastPaths(std::index_sequence<I...>) {
+        constexpr auto indices = fastKeyIndices<Keys>();
         return std::array<FragmentPaths::FastPath, sizeof...(I)>{
-            {{kFastFragmentKeys[I], fastRoutine<kFastFragmentKeys[I]>()}...}};
+            {{kFastFragmentKeys[indices[I]], fastRoutine<kFastFragmentKeys[indices[I]]>()}...}};
     }
     static constexpr FragmentRoutine anyKey() {
         if constexpr (L::kNarrowBlocks)
@@ -330,10 +352,11 @@ struct RoutinesOf {
 };
 
 // The paths of lane type L, in constants: nothing runs at static initialization, where the CPU
-// may not have L's instructions. `LodPaths`: FragmentPaths' lodPaths.
-template <class L, FragmentPaths::PathsOf LodPaths = nullptr>
+// may not have L's instructions. `LodPaths`: FragmentPaths' lodPaths; `Keys`: the fast keys compiled.
+template <class L, FragmentPaths::PathsOf LodPaths = nullptr, FastKeys Keys = FastKeys::All>
 const FragmentPaths& fragmentPathsOf() {
-    static constexpr auto fast = RoutinesOf<L>::fastPaths(std::make_index_sequence<std::size(kFastFragmentKeys)>());
+    static constexpr auto fast =
+        RoutinesOf<L>::template fastPaths<Keys>(std::make_index_sequence<fastKeyIndices<Keys>().size()>());
     static constexpr FragmentPaths paths(L::kName, fast, RoutinesOf<L>::anyKey(), LodPaths);
     return paths;
 }

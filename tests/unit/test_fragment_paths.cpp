@@ -248,6 +248,14 @@ TEST(FragmentPaths, FastKeysFindTheirPathsAndOtherKeysTheRoutineForAnyKey) {
     // Keys are normalized: without the depth test, the function and writes do not matter.
     EXPECT_EQ(makeFragmentKey(Shading::Flat, false, CompareFunc::Less, true),
               makeFragmentKey(Shading::Flat, false, CompareFunc::Greater, false));
+    // A flat key that textures takes its linear key's routine (routineKey), keeping its own key.
+    const FragmentKey textured = kFastFragmentKeys[std::size(kFastFragmentKeys) - 3];
+    ASSERT_TRUE(textured.texturesColor() && textured.shading == Shading::Linear);
+    FragmentKey flatTextured = textured;
+    flatTextured.shading = Shading::Flat;
+    const FragmentChoice flat(bestFragmentPaths(), flatTextured);
+    EXPECT_EQ(flat.varyingW.routine, &bestFragmentPaths().routine(textured));
+    EXPECT_EQ(flat.varyingW.key, flatTextured);
     // A primitive with 1 / w constant 1 takes the key without the division.
     const FragmentChoice choice(scalarFragmentPaths(), makeFragmentKey(Shading::Perspective, false, {}, false));
     EXPECT_EQ(choice.path({1.0f, 0.0f, 0.0f}).key.shading, Shading::Linear);
