@@ -80,10 +80,11 @@ public:
 private:
     // Where lane 0 would be for the lanes of `row` to land on their pixels of `buffer`. Formed
     // as an integer: it may lie before the buffer, where only masked-off lanes point.
-    std::uint32_t* laneZero(std::uint32_t* buffer, int row) const {
-        const std::uint32_t* rowStart = buffer + firstPixel_ - static_cast<std::size_t>(row) * width_;
-        return reinterpret_cast<std::uint32_t*>(reinterpret_cast<std::uintptr_t>(rowStart) -
-                                                sizeof(std::uint32_t) * static_cast<unsigned>(row) * columns_);
+    template <class T>
+    T* laneZero(T* buffer, int row) const {
+        T* rowStart = buffer + firstPixel_ - static_cast<std::size_t>(row) * width_;
+        return reinterpret_cast<T*>(reinterpret_cast<std::uintptr_t>(rowStart) -
+                                    sizeof(T) * static_cast<unsigned>(row) * columns_);
     }
 
     std::size_t firstPixel_;
@@ -207,9 +208,11 @@ template <class L>
 // Areas up to L::kCount pixels wide, in blocks of L::kCount lanes (kCount x 1 up to 1 x kCount
 // pixels, as narrow as the area), with no span search: most of a dense mesh's triangles are a
 // few pixels across.
+// (`key` by reference: for a fast path, the template's constant object, whose fields the compiler
+// folds however long the routine; a copy's it folded only while the routine stayed small.)
 template <class L>
-[[gnu::always_inline]] inline bool shadeNarrowTriangle(FragmentKey key, const RasterTriangle& t, const PixelRect& area,
-                                                       Framebuffer& fb, FragmentCounts& counts) {
+[[gnu::always_inline]] inline bool shadeNarrowTriangle(const FragmentKey& key, const RasterTriangle& t,
+                                                       const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
     using Int = typename L::Int;
     using Mask = typename L::Mask;
     const int width = area.maxX - area.minX + 1;
@@ -217,19 +220,7 @@ template <class L>
     const unsigned columns = std::bit_ceil(static_cast<unsigned>(width));
     const int columnBits = std::countr_zero(columns);
     const int blockRows = L::kCount >> columnBits;
-    // Edge values in 32-bit lanes: they hold every value of every block when the steps and the
-    // values at the area's corners (the extremes of a linear function) are this small, as for
-    // any triangle this narrow that is not also huge.
-    constexpr std::int64_t kStepLimit = std::int64_t{1} << 25, kValueLimit = std::int64_t{1} << 29;
-    const int height = area.maxY - area.minY + 1;  // at most a tile's
-    for (const EdgeFunction& edge : t.edges) {
-        if (std::abs(edge.stepX) >= kStepLimit || std::abs(edge.stepY) >= kStepLimit) return false;
-        const std::int64_t corner = edge.at(area.minX, area.minY);
-        const std::int64_t acrossX = edge.stepX * (width - 1), acrossY = edge.stepY * (height - 1);
-        for (const std::int64_t value : {corner, corner + acrossX, corner + acrossY, corner + acrossX + acrossY}) {
-            if (std::abs(value) >= kValueLimit) return false;
-        }
-    }
+    if (!smallEdgeSteps(t) && !edgeValuesFit32(t, area)) return false;
     const Int dx = L::bitAnd(L::laneIndex(), L::ints(static_cast<int>(columns - 1)));
     const Int dy = L::shiftRight(L::laneIndex(), columnBits);
     const typename L::Float x = L::toFloat(L::add(L::ints(area.minX), dx));
@@ -241,7 +232,7 @@ template <class L>
         stepY[k] = L::mul(dy, L::ints(static_cast<int>(t.edges[k].stepY)));
     }
     Mask rowLanes[L::kCount];  // the lanes of each row of a block, for the rows the area has
-    for (int row = 0; row < std::min(blockRows, height); ++row) {
+    for (int row = 0; row < std::min(blockRows, area.maxY - area.minY + 1); ++row) {
         const int firstLane = row * static_cast<int>(columns);
         rowLanes[row] = L::lanesBetween(firstLane, firstLane + static_cast<int>(columns) - 1);
     }
