@@ -64,10 +64,13 @@ public:
           laneOffsets_(laneOffsets),
           rowLanes_(rowLanes) {}
 
-    // One gather: it measured faster than a masked load per row, which stalls behind the
-    // previous triangle's stores.
+    // A block of one or two rows: a masked load per row. More: one gather, which measured faster
+    // than a masked load per row, which stalls behind the previous triangle's stores.
     Int load(const std::uint32_t* buffer, Mask lanes) const {
-        return L::gather(buffer + firstPixel_, laneOffsets_, lanes);
+        if (rows_ > 2) return L::gather(buffer + firstPixel_, laneOffsets_, lanes);
+        const Int first = L::load(buffer + firstPixel_, L::both(lanes, rowLanes_[0]));
+        if (rows_ == 1) return first;
+        return L::bitOr(first, L::load(laneZero(buffer, 1), L::both(lanes, rowLanes_[1])));
     }
     // A masked store per row (a scatter measured slower).
     void store(std::uint32_t* buffer, Mask lanes, Int values) const {
