@@ -53,34 +53,34 @@ public:
 
     static constexpr QuadLanes kQuadLanes = QuadLanes::PerLane;  // a level of detail per lane
 
-    // `laneOffsets` holds each lane's dx - dy * (framebuffer width), `rowLanes` the lanes of each
-    // row of the block.
-    NarrowBlock(std::size_t firstPixel, int rows, unsigned columns, std::size_t width, Int laneOffsets,
-                const Mask* rowLanes)
+    // `laneOffsets` holds each lane's dx - dy * (framebuffer width).
+    NarrowBlock(std::size_t firstPixel, int rows, unsigned columns, std::size_t width, Int laneOffsets)
         : firstPixel_(firstPixel),
           rows_(rows),
           columns_(columns),
           width_(width),
           laneOffsets_(laneOffsets),
-          rowLanes_(rowLanes) {}
+          firstRow_(L::lanesBetween(0, static_cast<int>(columns) - 1)) {}
 
     // A block of one or two rows: a masked load per row. More: one gather, which measured faster
     // than a masked load per row, which stalls behind the previous triangle's stores.
     Int load(const std::uint32_t* buffer, Mask lanes) const {
         if (rows_ > 2) return L::gather(buffer + firstPixel_, laneOffsets_, lanes);
-        const Int first = L::load(buffer + firstPixel_, L::both(lanes, rowLanes_[0]));
+        const Int first = L::load(buffer + firstPixel_, L::both(lanes, rowLanes(0)));
         if (rows_ == 1) return first;
-        return L::bitOr(first, L::load(laneZero(buffer, 1), L::both(lanes, rowLanes_[1])));
+        return L::bitOr(first, L::load(laneZero(buffer, 1), L::both(lanes, rowLanes(1))));
     }
     // A masked store per row (a scatter measured slower).
     void store(std::uint32_t* buffer, Mask lanes, Int values) const {
         for (int row = 0; row < rows_; ++row) {
-            const Mask inRow = L::both(lanes, rowLanes_[row]);
+            const Mask inRow = L::both(lanes, rowLanes(row));
             if (!L::none(inRow)) L::store(laneZero(buffer, row), inRow, values);
         }
     }
 
 private:
+    Mask rowLanes(int row) const { return L::moveLanesUp(firstRow_, row * static_cast<int>(columns_)); }
+
     // Where lane 0 would be for the lanes of `row` to land on their pixels of `buffer`. Formed
     // as an integer: it may lie before the buffer, where only masked-off lanes point.
     template <class T>
@@ -95,7 +95,7 @@ private:
     unsigned columns_;
     std::size_t width_;
     Int laneOffsets_;
-    const Mask* rowLanes_;
+    Mask firstRow_;  // the lanes of the block's first row
 };
 
 // Lanes on two rows of a span walk (shadeRowPairs): the first half of the lanes on a row from
@@ -234,11 +234,6 @@ template <class L>
         stepX[k] = L::mul(dx, L::ints(static_cast<int>(t.edges[k].stepX)));
         stepY[k] = L::mul(dy, L::ints(static_cast<int>(t.edges[k].stepY)));
     }
-    Mask rowLanes[L::kCount];  // the lanes of each row of a block, for the rows the area has
-    for (int row = 0; row < std::min(blockRows, area.maxY - area.minY + 1); ++row) {
-        const int firstLane = row * static_cast<int>(columns);
-        rowLanes[row] = L::lanesBetween(firstLane, firstLane + static_cast<int>(columns) - 1);
-    }
     const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
     const FragmentLanes<L> lanes(t.fragment, fb.height());
@@ -256,7 +251,7 @@ template <class L>
         fragments += L::count(covered);
         const std::size_t firstPixel =
             static_cast<std::size_t>(fb.height() - 1 - top) * fbWidth + static_cast<std::size_t>(area.minX);
-        const NarrowBlock<L> block(firstPixel, rows, columns, fbWidth, laneOffsets, rowLanes);
+        const NarrowBlock<L> block(firstPixel, rows, columns, fbWidth, laneOffsets);
         const typename L::Float y = L::toFloat(L::add(L::ints(top), dy));
         passed += L::count(shadeBlock<L>(key, lanes, x, y, covered, block, buffers));
     }
