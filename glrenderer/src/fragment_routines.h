@@ -53,37 +53,41 @@ public:
 
     static constexpr QuadLanes kQuadLanes = QuadLanes::PerLane;  // a level of detail per lane
 
-    // `laneOffsets` holds each lane's dx - dy * (framebuffer width), `rowLanes` the lanes of each
-    // row of the block.
-    NarrowBlock(std::size_t firstPixel, int rows, unsigned columns, std::size_t width, Int laneOffsets,
-                const Mask* rowLanes)
+    // `laneOffsets` holds each lane's dx - dy * (framebuffer width).
+    NarrowBlock(std::size_t firstPixel, int rows, unsigned columns, std::size_t width, Int laneOffsets)
         : firstPixel_(firstPixel),
           rows_(rows),
           columns_(columns),
           width_(width),
           laneOffsets_(laneOffsets),
-          rowLanes_(rowLanes) {}
+          firstRow_(L::lanesBetween(0, static_cast<int>(columns) - 1)) {}
 
-    // One gather: it measured faster than a masked load per row, which stalls behind the
-    // previous triangle's stores.
+    // A block of one or two rows: a masked load per row. More: one gather, which measured faster
+    // than a masked load per row, which stalls behind the previous triangle's stores.
     Int load(const std::uint32_t* buffer, Mask lanes) const {
-        return L::gather(buffer + firstPixel_, laneOffsets_, lanes);
+        if (rows_ > 2) return L::gather(buffer + firstPixel_, laneOffsets_, lanes);
+        const Int first = L::load(buffer + firstPixel_, L::both(lanes, rowLanes(0)));
+        if (rows_ == 1) return first;
+        return L::bitOr(first, L::load(laneZero(buffer, 1), L::both(lanes, rowLanes(1))));
     }
     // A masked store per row (a scatter measured slower).
     void store(std::uint32_t* buffer, Mask lanes, Int values) const {
         for (int row = 0; row < rows_; ++row) {
-            const Mask inRow = L::both(lanes, rowLanes_[row]);
+            const Mask inRow = L::both(lanes, rowLanes(row));
             if (!L::none(inRow)) L::store(laneZero(buffer, row), inRow, values);
         }
     }
 
 private:
+    Mask rowLanes(int row) const { return L::moveLanesUp(firstRow_, row * static_cast<int>(columns_)); }
+
     // Where lane 0 would be for the lanes of `row` to land on their pixels of `buffer`. Formed
     // as an integer: it may lie before the buffer, where only masked-off lanes point.
-    std::uint32_t* laneZero(std::uint32_t* buffer, int row) const {
-        const std::uint32_t* rowStart = buffer + firstPixel_ - static_cast<std::size_t>(row) * width_;
-        return reinterpret_cast<std::uint32_t*>(reinterpret_cast<std::uintptr_t>(rowStart) -
-                                                sizeof(std::uint32_t) * static_cast<unsigned>(row) * columns_);
+    template <class T>
+    T* laneZero(T* buffer, int row) const {
+        T* rowStart = buffer + firstPixel_ - static_cast<std::size_t>(row) * width_;
+        return reinterpret_cast<T*>(reinterpret_cast<std::uintptr_t>(rowStart) -
+                                    sizeof(T) * static_cast<unsigned>(row) * columns_);
     }
 
     std::size_t firstPixel_;
@@ -91,7 +95,7 @@ private:
     unsigned columns_;
     std::size_t width_;
     Int laneOffsets_;
-    const Mask* rowLanes_;
+    Mask firstRow_;  // the lanes of the block's first row
 };
 
 // Lanes on two rows of a span walk (shadeRowPairs): the first half of the lanes on a row from
@@ -207,9 +211,11 @@ template <class L>
 // Areas up to L::kCount pixels wide, in blocks of L::kCount lanes (kCount x 1 up to 1 x kCount
 // pixels, as narrow as the area), with no span search: most of a dense mesh's triangles are a
 // few pixels across.
+// (`key` by reference: for a fast path, the template's constant object, whose fields the compiler
+// folds however long the routine; a copy's it folded only while the routine stayed small.)
 template <class L>
-[[gnu::always_inline]] inline bool shadeNarrowTriangle(FragmentKey key, const RasterTriangle& t, const PixelRect& area,
-                                                       Framebuffer& fb, FragmentCounts& counts) {
+[[gnu::always_inline]] inline bool shadeNarrowTriangle(const FragmentKey& key, const RasterTriangle& t,
+                                                       const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
     using Int = typename L::Int;
     using Mask = typename L::Mask;
     const int width = area.maxX - area.minX + 1;
@@ -217,19 +223,7 @@ template <class L>
     const unsigned columns = std::bit_ceil(static_cast<unsigned>(width));
     const int columnBits = std::countr_zero(columns);
     const int blockRows = L::kCount >> columnBits;
-    // Edge values in 32-bit lanes: they hold every value of every block when the steps and the
-    // values at the area's corners (the extremes of a linear function) are this small, as for
-    // any triangle this narrow that is not also huge.
-    constexpr std::int64_t kStepLimit = std::int64_t{1} << 25, kValueLimit = std::int64_t{1} << 29;
-    const int height = area.maxY - area.minY + 1;  // at most a tile's
-    for (const EdgeFunction& edge : t.edges) {
-        if (std::abs(edge.stepX) >= kStepLimit || std::abs(edge.stepY) >= kStepLimit) return false;
-        const std::int64_t corner = edge.at(area.minX, area.minY);
-        const std::int64_t acrossX = edge.stepX * (width - 1), acrossY = edge.stepY * (height - 1);
-        for (const std::int64_t value : {corner, corner + acrossX, corner + acrossY, corner + acrossX + acrossY}) {
-            if (std::abs(value) >= kValueLimit) return false;
-        }
-    }
+    if (!smallEdgeSteps(t) && !edgeValuesFit32(t, area)) return false;
     const Int dx = L::bitAnd(L::laneIndex(), L::ints(static_cast<int>(columns - 1)));
     const Int dy = L::shiftRight(L::laneIndex(), columnBits);
     const typename L::Float x = L::toFloat(L::add(L::ints(area.minX), dx));
@@ -239,11 +233,6 @@ template <class L>
     for (int k = 0; k < 3; ++k) {
         stepX[k] = L::mul(dx, L::ints(static_cast<int>(t.edges[k].stepX)));
         stepY[k] = L::mul(dy, L::ints(static_cast<int>(t.edges[k].stepY)));
-    }
-    Mask rowLanes[L::kCount];  // the lanes of each row of a block, for the rows the area has
-    for (int row = 0; row < std::min(blockRows, height); ++row) {
-        const int firstLane = row * static_cast<int>(columns);
-        rowLanes[row] = L::lanesBetween(firstLane, firstLane + static_cast<int>(columns) - 1);
     }
     const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
@@ -262,7 +251,7 @@ template <class L>
         fragments += L::count(covered);
         const std::size_t firstPixel =
             static_cast<std::size_t>(fb.height() - 1 - top) * fbWidth + static_cast<std::size_t>(area.minX);
-        const NarrowBlock<L> block(firstPixel, rows, columns, fbWidth, laneOffsets, rowLanes);
+        const NarrowBlock<L> block(firstPixel, rows, columns, fbWidth, laneOffsets);
         const typename L::Float y = L::toFloat(L::add(L::ints(top), dy));
         passed += L::count(shadeBlock<L>(key, lanes, x, y, covered, block, buffers));
     }

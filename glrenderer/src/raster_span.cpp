@@ -1,6 +1,7 @@
 #include "raster_span.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "glrenderer/invariant.h"
 
@@ -56,6 +57,20 @@ Span coveredSpan(const RasterTriangle& t, int row, int minX, int maxX) {
     // The fragment routines write the span's pixels through raw pointers: it never leaves the area.
     MYGL_INVARIANT(span.begin > span.end || (minX <= span.begin && span.end <= maxX));
     return span;
+}
+
+bool edgeValuesFit32(const RasterTriangle& t, const PixelRect& area) {
+    constexpr std::int64_t kStepLimit = std::int64_t{1} << 25, kValueLimit = std::int64_t{1} << 29;
+    const int width = area.maxX - area.minX + 1, height = area.maxY - area.minY + 1;
+    for (const EdgeFunction& edge : t.edges) {
+        if (std::abs(edge.stepX) >= kStepLimit || std::abs(edge.stepY) >= kStepLimit) return false;
+        const std::int64_t corner = edge.at(area.minX, area.minY);
+        const std::int64_t acrossX = edge.stepX * (width - 1), acrossY = edge.stepY * (height - 1);
+        for (const std::int64_t value : {corner, corner + acrossX, corner + acrossY, corner + acrossX + acrossY}) {
+            if (std::abs(value) >= kValueLimit) return false;
+        }
+    }
+    return true;
 }
 
 void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts,

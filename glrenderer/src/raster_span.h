@@ -60,6 +60,29 @@ private:
     __m128i first_[3], second_[3], down_[3];
 };
 
+// Whether a triangle's edge values fit 32-bit lanes over `area` (the narrow blocks of
+// fragment_routines.h): they hold every value of every block when the steps are below 2^25 and
+// the values at the area's corners (the extremes of a linear function) below 2^29. Out of line:
+// smallEdgeSteps decides for all but large triangles, and this code inlined in the narrow
+// routines cost them their key's constants (the compiler stopped folding the key).
+bool edgeValuesFit32(const RasterTriangle& triangle, const PixelRect& area);
+
+// A sufficient test for edgeValuesFit32 on any area within the triangle's bounds, true for any
+// triangle under 32 pixels across: the steps are the vertices' differences (dx, dy) times 256,
+// so |dx|, |dy| <= 2^13 in 1/256 pixel; the area's corners are pixel centers P at most a pixel
+// outside the vertices' span, so |E(P)| = |dx (P.x - a.x) + dy (P.y - a.y) + bias|
+// <= 2 * 2^13 * (2^13 + 2^8) + 1 < 2^28. (An OR of the steps offset by the limit: below twice
+// it, a power of two, iff each is.)
+inline bool smallEdgeSteps(const RasterTriangle& t) {
+    constexpr std::int64_t kLimit = std::int64_t{1} << 21;
+    std::uint64_t offsetSteps = 0;
+    for (const EdgeFunction& edge : t.edges) {
+        offsetSteps |=
+            static_cast<std::uint64_t>(edge.stepX + kLimit) | static_cast<std::uint64_t>(edge.stepY + kLimit);
+    }
+    return offsetSteps < static_cast<std::uint64_t>(2 * kLimit);
+}
+
 // The fast exact method: spans from the edge functions, or the narrow blocks of `routine` where
 // it has them, shaded by `routine` (the triangle's own, or another width's for the same key).
 // Bit-for-bit the same pixels, depths and counts as rasterizeTriangleExact.

@@ -80,6 +80,15 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     out.minY = static_cast<int>(std::max<std::int64_t>(minY, drawable.minY));
     out.maxY = static_cast<int>(std::min<std::int64_t>(maxY, drawable.maxY));
     if (out.minX > out.maxX || out.minY > out.maxY) return false;
+    // The reference sets up planes only for triangles counter-clockwise in its y-down view; one
+    // clockwise in GL's window (area > 0 here) is set up as (v1, v0, v2), keeping the provoking
+    // vertex last. The planes' last bits follow that order.
+    const bool clockwise = t.area > 0;
+    const WindowVertex& v0 = clockwise ? *t.v[1] : *t.v[0];
+    const WindowVertex& v1 = clockwise ? *t.v[0] : *t.v[1];
+    const WindowVertex& v2 = *t.v[2];
+    // (Before the edges: its division's wait then overlaps their set-up.)
+    const PlaneBuilder planes(v0, v1, v2);
     out.edges[0] = EdgeFunction(a, b);
     out.edges[1] = EdgeFunction(b, c);
     out.edges[2] = EdgeFunction(c, a);
@@ -94,14 +103,6 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         in.setFlatColor(*t.flatColor, t.v[2]->secondaryColor);  // every vertex has the flat secondary colour
         if (!key.depthTest && key.fog == FogMode::Off && key.textureEnv == TextureEnv::Off) return true;
     }
-    // The reference sets up planes only for triangles counter-clockwise in its y-down view; one
-    // clockwise in GL's window (area > 0 here) is set up as (v1, v0, v2), keeping the provoking
-    // vertex last. The planes' last bits follow that order.
-    const bool clockwise = t.area > 0;
-    const WindowVertex& v0 = clockwise ? *t.v[1] : *t.v[0];
-    const WindowVertex& v1 = clockwise ? *t.v[0] : *t.v[1];
-    const WindowVertex& v2 = *t.v[2];
-    const PlaneBuilder planes(v0, v1, v2);
     const bool perspective = key.shading == Shading::Perspective;
     // The planes in lanes of four, each vertex's values loaded as they lie in WindowVertex.
     const auto lanes = [&](auto valuesOf) { return planes.planes(valuesOf(v0), valuesOf(v1), valuesOf(v2)); };

@@ -100,6 +100,8 @@ struct Avx512Lanes {
         return static_cast<Mask>(upTo & from);
     }
     static Mask both(Mask a, Mask b) { return a & b; }
+    // Lane i of `m` in lane i + count (0 <= count < 16), the lanes below count clear.
+    static Mask moveLanesUp(Mask m, int count) { return static_cast<Mask>(m << count); }
     static Mask butNot(Mask a, Mask b) { return static_cast<Mask>(a & ~b); }
     static bool none(Mask m) { return m == 0; }
     static bool all(Mask m) { return m == 0xFFFF; }
