@@ -18,7 +18,7 @@
 namespace glrenderer {
 
 template <class L>
-[[gnu::always_inline]] inline void shadeSpan(FragmentKey key, const FragmentLanes<L>& lanes, int row, int begin,
+[[gnu::always_inline]] inline void shadeSpan(const FragmentKey& key, const FragmentLanes<L>& lanes, int row, int begin,
                                              int end, Framebuffer& fb, FragmentCounts& counts) {
     const std::ptrdiff_t rowStart = static_cast<std::ptrdiff_t>(fb.height() - 1 - row) * fb.width();
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
@@ -136,7 +136,7 @@ private:
 // holds its 2 x 2 quads whole and takes their level of detail from its own lanes
 // (QuadLanes::TwoRows), where a block of one row evaluates the quads' other row.
 template <class L>
-[[gnu::always_inline]] inline void shadeRowPairs(FragmentKey key, const FragmentLanes<L>& lanes,
+[[gnu::always_inline]] inline void shadeRowPairs(const FragmentKey& key, const FragmentLanes<L>& lanes,
                                                  const RasterTriangle& t, const PixelRect& area, bool coveredWhole,
                                                  Framebuffer& fb, FragmentCounts& counts) {
     using Int = typename L::Int;
@@ -185,7 +185,7 @@ template <class L>
 
 // The rows of a triangle's part in `area` (FragmentRoutine::Rows).
 template <class L>
-[[gnu::always_inline]] inline void shadeRows(FragmentKey key, const RasterTriangle& t, const PixelRect& area,
+[[gnu::always_inline]] inline void shadeRows(const FragmentKey& key, const RasterTriangle& t, const PixelRect& area,
                                              bool coveredWhole, Framebuffer& fb, FragmentCounts& counts) {
     const FragmentLanes<L> lanes(t.fragment, fb.height());
     if constexpr (L::kTwoRowBlocks) {
