@@ -77,8 +77,8 @@ Options parse(int argc, char** argv) {
 // The course's table: what the pipeline did with each scene, culling forced off and then on.
 void printStats(const std::vector<const scenes::Scene*>& selected, const Options& o) {
     // tris + created = clipped + back + front + zero + rasterized
-    std::printf("%-28s %-9s %5s %8s %8s %7s %7s %5s %10s %10s %10s\n", "scene", "culling", "tris", "created",
-                "clipped", "back", "front", "zero", "rasterized", "fragments", "passed");
+    std::printf("%-28s %-9s %5s %8s %8s %7s %7s %5s %10s %10s %10s\n", "scene", "culling", "tris", "created", "clipped",
+                "back", "front", "zero", "rasterized", "fragments", "passed");
     for (const scenes::Scene* scene : selected) {
         for (bool culling : {false, true}) {
             const mygl::Stats s = scenes::render(scenes::Backend::MyGL, *scene, o.width, o.height, o.frame,
