@@ -179,10 +179,11 @@ template <class L>
     counts.passed += passed;
 }
 
-// Under a key that samples a level of detail, a narrow triangle's part in `area` (up to two
-// blocks across from its even x) in shadeRowPairs' 4 x 2 blocks from an even x and an even row,
-// each lane's coverage from the edge functions instead of a span search per row. Returns false,
-// drawing nothing, for a wider area or edge values beyond 32 bits.
+// Under a key that samples a level of detail, a small triangle's part in `area` (up to two
+// blocks across from its even x, fewer than 8 rows) in shadeRowPairs' 4 x 2 blocks from an even
+// x and an even row, each lane's coverage from the edge functions instead of a span search per
+// row. Returns false, drawing nothing, for a larger area (a tall one's row pairs have whole
+// half-rows: measured faster there) or edge values beyond 32 bits.
 template <class L>
 [[gnu::always_inline]] inline bool shadeNarrowQuads(FragmentKey key, const FragmentLanes<L>& lanes,
                                                     const RasterTriangle& t, const PixelRect& area, Framebuffer& fb,
@@ -191,7 +192,7 @@ template <class L>
     using Mask = typename L::Mask;
     constexpr int kColumns = L::kCount / 2;
     const int left = area.minX & ~1;
-    if (area.maxX - left >= 2 * kColumns) return false;
+    if (area.maxX - left >= 2 * kColumns || area.maxY - area.minY >= 7) return false;
     // A lane's edge value is formed in 32-bit wrapping arithmetic from a block's first value and
     // its steps, all taken modulo 2^32: exact where the true value fits in 32 bits, as it does
     // at every pixel of the area when it does at the area's corners (a linear function's
