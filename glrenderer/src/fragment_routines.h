@@ -183,13 +183,77 @@ template <class L>
     counts.passed += passed;
 }
 
+// Under a key that samples a level of detail, a small triangle's part in `area` (up to two
+// blocks across from its even x, fewer than 8 rows) in shadeRowPairs' 4 x 2 blocks from an even
+// x and an even row, each lane's coverage from the edge functions instead of a span search per
+// row. Returns false, drawing nothing, for a larger area (a tall one's row pairs have whole
+// half-rows: measured faster there) or edge values beyond 32 bits.
+template <class L>
+[[gnu::always_inline]] inline bool shadeNarrowQuads(FragmentKey key, const FragmentLanes<L>& lanes,
+                                                    const RasterTriangle& t, const PixelRect& area, Framebuffer& fb,
+                                                    FragmentCounts& counts) {
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+    constexpr int kColumns = L::kCount / 2;
+    const int left = area.minX & ~1;
+    if (area.maxX - left >= 2 * kColumns || area.maxY - area.minY >= 7) return false;
+    // A lane's edge value is formed in 32-bit wrapping arithmetic from a block's first value and
+    // its steps, all taken modulo 2^32: exact where the true value fits in 32 bits, as it does
+    // at every pixel of the area when it does at the area's corners (a linear function's
+    // extremes). Lanes outside the area are masked off whatever their value.
+    for (const EdgeFunction& edge : t.edges) {
+        for (const int x : {area.minX, area.maxX}) {
+            for (const int y : {area.minY, area.maxY}) {
+                const std::int64_t value = edge.at(x, y);
+                if (value < INT32_MIN || value > INT32_MAX) return false;
+            }
+        }
+    }
+    const Int dx = L::bitAnd(L::laneIndex(), L::ints(kColumns - 1));
+    const Int dy = L::template shiftRightUnsigned<std::countr_zero(static_cast<unsigned>(kColumns))>(L::laneIndex());
+    Int steps[3];  // each lane's edge value less its block's first lane's
+    for (int k = 0; k < 3; ++k) {
+        steps[k] = L::add(L::mul(dx, L::ints(static_cast<int>(t.edges[k].stepX))),
+                          L::mul(dy, L::ints(static_cast<int>(t.edges[k].stepY))));
+    }
+    // Lane i lies in the area's columns at the block from x = px where columnBegin_i <= px <= columnEnd_i.
+    const Int columnBegin = L::sub(L::ints(area.minX), dx), columnEnd = L::sub(L::ints(area.maxX), dx);
+    const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
+    std::uint64_t fragments = 0, passed = 0;
+    for (int top = area.minY & ~1; top <= area.maxY; top += 2) {
+        const Mask inRows = L::lanesBetween((area.minY - top) * kColumns, (area.maxY - top + 1) * kColumns - 1);
+        const std::size_t rowStart = static_cast<std::size_t>(fb.height() - 1 - top) * fbWidth;
+        const typename L::Float y = L::toFloat(L::add(L::ints(top), dy));
+        for (int px = left; px <= area.maxX; px += kColumns) {
+            const Int at = L::ints(px);
+            Int outside = L::ints(0);  // sign bit set where any edge is negative
+            for (int k = 0; k < 3; ++k) {
+                outside = L::bitOr(outside, L::add(L::ints(static_cast<int>(t.edges[k].at(px, top))), steps[k]));
+            }
+            const Mask inArea = L::butNot(L::butNot(inRows, L::lessThan(at, columnBegin)), L::lessThan(columnEnd, at));
+            const Mask covered = L::both(inArea, L::notNegative(outside));
+            if (L::none(covered)) continue;
+            fragments += L::count(covered);
+            const TwoRowBlock<L> block(rowStart + static_cast<std::size_t>(px), fbWidth, 0);
+            passed += L::count(shadeBlock<L>(key, lanes, L::toFloat(L::add(at, dx)), y, covered, block, buffers));
+        }
+    }
+    counts.fragments += fragments;
+    counts.passed += passed;
+    return true;
+}
+
 // The rows of a triangle's part in `area` (FragmentRoutine::Rows).
 template <class L>
 [[gnu::always_inline]] inline void shadeRows(const FragmentKey& key, const RasterTriangle& t, const PixelRect& area,
                                              bool coveredWhole, Framebuffer& fb, FragmentCounts& counts) {
     const FragmentLanes<L> lanes(t.fragment, fb.height());
     if constexpr (L::kTwoRowBlocks) {
-        if (key.samplesLod()) return shadeRowPairs<L>(key, lanes, t, area, coveredWhole, fb, counts);
+        if (key.samplesLod()) {
+            if (!coveredWhole && shadeNarrowQuads<L>(key, lanes, t, area, fb, counts)) return;
+            return shadeRowPairs<L>(key, lanes, t, area, coveredWhole, fb, counts);
+        }
     }
     // (Widths with narrow blocks draw such areas in them: measured slower with this walk too.)
     if constexpr (!L::kNarrowBlocks) {

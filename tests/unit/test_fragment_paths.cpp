@@ -401,9 +401,9 @@ TEST(FragmentPaths, TrianglesWithALevelOfDetailOnLargerTexturesMatchThePerPixelR
     checkTrianglesAgainstThePerPixelReference(9, true, 1, 32);
 }
 
-// Areas up to 16 columns wide (the narrow blocks of AVX2 and AVX-512, and the spans of the
-// others) cut from huge triangles (edge values past 32 bits: the blocks step aside), slivers,
-// one-pixel and mesh-sized triangles, from odd and even rows and at the framebuffer's borders:
+// Areas up to 16 columns wide (the narrow blocks of AVX2 and AVX-512, the narrow quads of keys
+// with a level of detail, and the spans of the others) cut from huge triangles (edge values past 32 bits: the blocks
+// step aside), slivers, one-pixel and mesh-sized triangles, from odd and even rows and at the framebuffer's borders:
 // every path against per-pixel coverage.
 TEST(FragmentPaths, NarrowAreasMatchThePerPixelReferenceInEveryPath) {
     std::mt19937 random(8);
@@ -412,6 +412,7 @@ TEST(FragmentPaths, NarrowAreasMatchThePerPixelReferenceInEveryPath) {
     const std::vector<const FragmentPaths*> allPaths = pathsOfThisCpu();
     const std::vector<std::uint32_t> color(kWidth * kHeight, 0);
     const glm::vec4 flatColor{0.3f, 0.6f, 0.9f, 1.0f};
+    const auto texture = std::make_shared<const Texture>(randomTexture(random, 16, 16));
     std::uint64_t fragments = 0;
     for (int i = 0; i < 4000; ++i) {
         WindowVertex v[3] = {randomVertex(random, 30.0f), randomVertex(random, 30.0f), randomVertex(random, 30.0f)};
@@ -442,6 +443,13 @@ TEST(FragmentPaths, NarrowAreasMatchThePerPixelReferenceInEveryPath) {
         state.depthTest = coin(random);
         state.depthWrite = coin(random);
         state.shadeModel = coin(random) ? ShadeModel::Smooth : ShadeModel::Flat;
+        if (i % 3 == 0) {  // a level of detail: the 2 x 2 quads' blocks (shadeNarrowQuads)
+            state.texture.env = TextureEnv::Modulate;
+            state.texture.base = TextureBase::Rgb;
+            state.texture.minFilter = state.texture.magFilter = TextureFilter::Linear;
+            state.texture.mipFilter = MipmapFilter::Linear;
+            state.texture.texture = texture;
+        }
         // A narrow area anywhere, the framebuffer's first or last columns now and then.
         int minX = column(random);
         if (i % 8 == 5) minX = 0;
