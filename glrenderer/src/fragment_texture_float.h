@@ -22,7 +22,7 @@ public:
     using Int = typename L::Int;
     using Mask = typename L::Mask;
 
-    FloatTextureSampler(const Texture* texture, const glm::vec4& border)
+    [[gnu::always_inline]] FloatTextureSampler(const Texture* texture, const glm::vec4& border)
         : texture_(texture),
           border_{L::floats(border[0]), L::floats(border[1]), L::floats(border[2]), L::floats(border[3])} {}
 

@@ -74,15 +74,8 @@ void forEachFetchingAhead(std::span<const Entry> entries, Draw&& draw) {
     }
 }
 
-// Whether the entry is a triangle that defers its colour (FragmentKey::defersColor).
-template <class Entry>
-bool defersColor(const Entry& entry) {
-    const RasterTriangle* t = entry.triangle();
-    return t && t->method == RasterMethod::Exact && t->fragment.routine->shade;
-}
-
-// Deferred shading pays where a run of triangles covers a tile this many times over, counting
-// their bounds (about twice their area).
+// Deferred shading pays where the triangles that defer their colour cover a tile this many
+// times over, counting their bounds (about twice their area).
 constexpr std::int64_t kDeferredMinCover = 4;
 
 }  // namespace
@@ -105,6 +98,7 @@ void TileRasterizer::refitTiles() {
     bins_.resize(tiles);
     for (auto& bin : bins_) bin.clear();
     binnedSinceFlush_.assign(tiles, 0);
+    deferringCover_.assign(tiles, 0);
     clearPending_.assign(tiles, clear_.color || clear_.depth);
     holdsClear_.assign(tiles, 0);
 }
@@ -139,8 +133,21 @@ void TileRasterizer::queue(const TiledPrimitive& primitive) {
 void TileRasterizer::bin(const RasterTriangle& triangle) {
     ++queued_;
     const int shift = tileShift_;
-    binInto(BinEntry(&triangle), triangle.minX >> shift, triangle.maxX >> shift, triangle.minY >> shift,
-            triangle.maxY >> shift);
+    const bool defersColor = triangle.method == RasterMethod::Exact && triangle.fragment.routine->shade;
+    const int firstX = triangle.minX >> shift, lastX = triangle.maxX >> shift;
+    const int firstY = triangle.minY >> shift, lastY = triangle.maxY >> shift;
+    binInto(BinEntry(&triangle, defersColor), firstX, lastX, firstY, lastY);
+    if (!defersColor) return;
+    // The triangle's bounds in each tile, for drawTile's choice (here, where they are in cache).
+    const int size = tileSize();
+    for (int ty = firstY; ty <= lastY; ++ty) {
+        const int rows = std::min(triangle.maxY, (ty + 1) * size - 1) - std::max(triangle.minY, ty * size) + 1;
+        for (int tx = firstX; tx <= lastX; ++tx) {
+            const int columns = std::min(triangle.maxX, (tx + 1) * size - 1) - std::max(triangle.minX, tx * size) + 1;
+            deferringCover_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX_) +
+                            static_cast<std::size_t>(tx)] += std::int64_t{rows} * columns;
+        }
+    }
 }
 
 void TileRasterizer::binInto(BinEntry entry, int firstX, int lastX, int firstY, int lastY) {
@@ -203,15 +210,6 @@ void TileRasterizer::drawInOrder(std::span<const BinEntry> entries, const PixelR
 }
 
 void TileRasterizer::drawDeferred(std::span<const BinEntry> run, const PixelRect& rect, FragmentCounts& counts) {
-    std::int64_t boundsArea = 0;  // of the run's triangles in the tile
-    for (const BinEntry& entry : run) {
-        const RasterTriangle& t = *entry.triangle();
-        const int width = std::min(t.maxX, rect.maxX) - std::max(t.minX, rect.minX) + 1;
-        const int height = std::min(t.maxY, rect.maxY) - std::max(t.minY, rect.minY) + 1;
-        if (width > 0 && height > 0) boundsArea += std::int64_t{width} * height;
-    }
-    const std::int64_t tileArea = std::int64_t{rect.maxX - rect.minX + 1} * (rect.maxY - rect.minY + 1);
-    if (boundsArea < kDeferredMinCover * tileArea) return drawInOrder(run, rect, counts);
     forEachFetchingAhead(run, [&](const BinEntry& entry) {
         const RasterTriangle& t = *entry.triangle();
         rasterizeTriangleSpans(t, rect, framebuffer_, counts, *t.fragment.routine->visibility);
@@ -241,13 +239,17 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
         clearPending_[tile] = 0;
     }
     if (!bin.empty()) holdsClear_[tile] = 0;
-    // Runs of entries: triangles that defer their colour, or others.
+    // Runs of entries: triangles that defer their colour, or others. Deferred shading pays where
+    // such triangles cover the tile many times over.
+    const std::int64_t tileArea = std::int64_t{rect.maxX - rect.minX + 1} * (rect.maxY - rect.minY + 1);
+    const bool deferring = deferringCover_[tile] >= kDeferredMinCover * tileArea;
+    deferringCover_[tile] = 0;
     for (std::size_t first = 0; first < bin.size();) {
-        const bool deferring = defersColor(bin[first]);
+        const bool defers = bin[first].defersColor();
         std::size_t end = first + 1;
-        while (end < bin.size() && defersColor(bin[end]) == deferring) ++end;
+        while (end < bin.size() && bin[end].defersColor() == defers) ++end;
         const std::span<const BinEntry> run = std::span(bin).subspan(first, end - first);
-        if (deferring)
+        if (defers && deferring)
             drawDeferred(run, rect, counts);
         else
             drawInOrder(run, rect, counts);

@@ -66,20 +66,23 @@ public:
     std::size_t queued() const { return queued_; }
 
 private:
-    // A tile's queued primitive: a triangle, or with the low bit set (records are aligned) another.
+    // A tile's queued primitive: a triangle, or another (bit 0 set: records are aligned).
     class BinEntry {
     public:
-        explicit BinEntry(const RasterTriangle* triangle) : bits_(reinterpret_cast<std::uintptr_t>(triangle)) {}
-        explicit BinEntry(const TiledPrimitive* other) : bits_(reinterpret_cast<std::uintptr_t>(other) | 1) {}
+        // `defersColor`: the triangle's routine has deferred shading's passes, kept here so that
+        // finding a tile's runs reads no record (a pass over them stalled a mesh's tiles).
+        BinEntry(const RasterTriangle* triangle, bool defersColor)
+            : bits_(reinterpret_cast<std::uintptr_t>(triangle) | (defersColor ? kDefers : 0)) {}
+        explicit BinEntry(const TiledPrimitive* other) : bits_(reinterpret_cast<std::uintptr_t>(other) | kOther) {}
         const RasterTriangle* triangle() const {
-            return bits_ & 1 ? nullptr : reinterpret_cast<const RasterTriangle*>(bits_);
+            return bits_ & kOther ? nullptr : reinterpret_cast<const RasterTriangle*>(bits_ & ~kDefers);
         }
-        const TiledPrimitive& other() const {
-            return *reinterpret_cast<const TiledPrimitive*>(bits_ & ~std::uintptr_t{1});
-        }
+        const TiledPrimitive& other() const { return *reinterpret_cast<const TiledPrimitive*>(bits_ & ~kOther); }
+        bool defersColor() const { return (bits_ & kDefers) != 0; }
         float meanDepth() const { return triangle() ? triangle()->meanDepth() : other().meanDepth; }
 
     private:
+        static constexpr std::uintptr_t kOther = 1, kDefers = 2;
         std::uintptr_t bits_;
     };
 
@@ -99,8 +102,7 @@ private:
     void drawTile(std::size_t tile, FragmentCounts& counts, bool paintersSort);
     // Draws the entries of a tile, one after the other.
     void drawInOrder(std::span<const BinEntry> entries, const PixelRect& rect, FragmentCounts& counts);
-    // Draws a run of triangles that defer their colour with deferred shading (DeferredPass) where
-    // it covers the tile many times over, else in order.
+    // Draws a run of triangles that defer their colour with deferred shading (DeferredPass).
     void drawDeferred(std::span<const BinEntry> run, const PixelRect& rect, FragmentCounts& counts);
     // Before tiles are drawn: which tiles hold the pending clear's values already.
     void startDrawingTiles();
@@ -138,6 +140,8 @@ private:
     // Per tile, triangles binned since the last flush: what its bin may have to hold next time,
     // however much of it is drawn early (which depends on timing).
     std::vector<std::uint32_t> binnedSinceFlush_;
+    // Per tile, the pixels of the bounds of the triangles queued there that defer their colour.
+    std::vector<std::int64_t> deferringCover_;
     int tileShift_ = 7;
     int tilesX_ = 0, tilesY_ = 0;
     int binnedWidth_ = 0, binnedHeight_ = 0;
