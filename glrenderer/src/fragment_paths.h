@@ -7,6 +7,16 @@
 
 namespace glrenderer {
 
+// A depth-tested key (GL_LESS, depth writes) of `shading` and `fog` whose colour a REPEAT texture
+// of `base` modulates, filtered LINEAR with LINEAR mipmaps or else NEAREST without.
+constexpr FragmentKey modulatedTexture(Shading shading, TextureBase base, bool mipmappedLinear,
+                                       FogMode fog = FogMode::Off) {
+    const TextureFilter filter = mipmappedLinear ? TextureFilter::Linear : TextureFilter::Nearest;
+    return withTexture(withFog(makeFragmentKey(shading, true, CompareFunc::Less, true), fog), TextureEnv::Modulate,
+                       false, base, filter, filter, mipmappedLinear ? MipmapFilter::Linear : MipmapFilter::None,
+                       TextureWrap::Repeat, TextureWrap::Repeat);
+}
+
 // The keys with fast paths of their own at every vector width: what scenes draw with nearly
 // always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), smooth
 // depth-tested LINEAR fog, the usual alpha blending and the common textures. Each is
@@ -35,31 +45,16 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
     withBlend(makeFragmentKey(Shading::Perspective, false, CompareFunc::Always, false), BlendFactor::SrcAlpha,
               BlendFactor::OneMinusSrcAlpha),
     // Textured, depth-tested: RGB(A) bricks, LINEAR_MIPMAP_LINEAR, MODULATE (bench-textured-cubes),
-    // and a NEAREST checkerboard.
-    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
-                TextureBase::Rgb, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
-                TextureWrap::Repeat, TextureWrap::Repeat),
-    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
-                TextureBase::Rgba, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
-                TextureWrap::Repeat, TextureWrap::Repeat),
-    withTexture(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
-                TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
-                TextureWrap::Repeat, TextureWrap::Repeat),
-    // The same textures on orthographic primitives or in one colour (a flat key that textures
-    // takes its linear key's routine: FragmentChoice).
-    withTexture(makeFragmentKey(Shading::Linear, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
-                TextureBase::Rgb, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
-                TextureWrap::Repeat, TextureWrap::Repeat),
-    withTexture(makeFragmentKey(Shading::Linear, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
-                TextureBase::Rgba, TextureFilter::Linear, TextureFilter::Linear, MipmapFilter::Linear,
-                TextureWrap::Repeat, TextureWrap::Repeat),
-    withTexture(makeFragmentKey(Shading::Linear, true, CompareFunc::Less, true), TextureEnv::Modulate, false,
-                TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
-                TextureWrap::Repeat, TextureWrap::Repeat),
+    // and a NEAREST checkerboard; the same on orthographic primitives or in one colour (a flat key
+    // that textures takes its linear key's routine: routineKey).
+    modulatedTexture(Shading::Perspective, TextureBase::Rgb, true),
+    modulatedTexture(Shading::Perspective, TextureBase::Rgba, true),
+    modulatedTexture(Shading::Perspective, TextureBase::Rgba, false),
+    modulatedTexture(Shading::Linear, TextureBase::Rgb, true),
+    modulatedTexture(Shading::Linear, TextureBase::Rgba, true),
+    modulatedTexture(Shading::Linear, TextureBase::Rgba, false),
     // A fogged landscape with a mipmapped ground texture (bench-fog-textured-terrain).
-    withTexture(withFog(makeFragmentKey(Shading::Perspective, true, CompareFunc::Less, true), FogMode::Linear),
-                TextureEnv::Modulate, false, TextureBase::Rgb, TextureFilter::Linear, TextureFilter::Linear,
-                MipmapFilter::Linear, TextureWrap::Repeat, TextureWrap::Repeat),
+    modulatedTexture(Shading::Perspective, TextureBase::Rgb, true, FogMode::Linear),
     // glDrawPixels' quad without fragment operations (bench-draw-pixels; flat, by routineKey).
     withTexture(makeFragmentKey(Shading::Linear, false, CompareFunc::Always, false), TextureEnv::Replace, false,
                 TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,

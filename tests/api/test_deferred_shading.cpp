@@ -13,6 +13,7 @@
 
 #include "backends.h"
 
+using testing_support::clearedPerspectiveView;
 using testing_support::Frame;
 using testing_support::onBothBackends;
 using testing_support::readFrame;
@@ -59,20 +60,6 @@ void quad(float z, float tilt, const std::array<float, 3>& color, float repeat) 
     glEnd();
 }
 
-void perspective() {
-    glClearColor(0.1f, 0.1f, 0.2f, 1.0f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glFrustum(-0.8, 0.8, -0.6, 0.6, 1.0, 30.0);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glTranslatef(0.0f, 0.0f, -3.0f);
-}
-
 const std::array<float, 3> kColors[] = {{1, 1, 1}, {1, 0.5f, 0.5f}, {0.5f, 1, 0.5f}, {0.5f, 0.5f, 1}, {1, 1, 0.3f}};
 
 void expectSameFrames(const std::function<void()>& draw) {
@@ -101,7 +88,7 @@ TEST(DeferredShading, EqualDepthsKeepTheFirstFragmentAsTheReference) {
     for (const GLenum filter : {GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST}) {
         SCOPED_TRACE(filter == GL_NEAREST ? "nearest" : "linear mipmap linear");
         expectSameFrames([filter] {
-            perspective();
+            clearedPerspectiveView(3.0f);
             makeTexture(filter, filter == GL_NEAREST ? GL_NEAREST : GL_LINEAR);
             crossingQuadsTwice();
         });
@@ -113,7 +100,7 @@ TEST(DeferredShading, EqualDepthsKeepTheFirstFragmentAsTheReference) {
 // deferred quad fails everywhere, though its depth is the pixels' final one.
 TEST(DeferredShading, DepthsStoredBeforeTheRunKeepTheirColourAsTheReference) {
     expectSameFrames([] {
-        perspective();
+        clearedPerspectiveView(3.0f);
         makeTexture(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
         glColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_TRUE);
         quad(0.2f, 0.3f, {0.9f, 0.2f, 0.2f}, 2.0f);
@@ -127,7 +114,7 @@ TEST(DeferredShading, DepthsStoredBeforeTheRunKeepTheirColourAsTheReference) {
 // turns the deferral off for a few quads in the middle.
 TEST(DeferredShading, RunsBrokenByOtherPrimitivesMatchTheReference) {
     expectSameFrames([] {
-        perspective();
+        clearedPerspectiveView(3.0f);
         makeTexture(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
         crossingQuadsTwice();
         glDisable(GL_TEXTURE_2D);
