@@ -189,7 +189,7 @@ template <class L>
 // row. Returns false, drawing nothing, for a larger area (a tall one's row pairs have whole
 // half-rows: measured faster there) or edge values beyond 32 bits.
 template <class L>
-[[gnu::always_inline]] inline bool shadeNarrowQuads(FragmentKey key, const FragmentLanes<L>& lanes,
+[[gnu::always_inline]] inline bool shadeNarrowQuads(const FragmentKey& key, const FragmentLanes<L>& lanes,
                                                     const RasterTriangle& t, const PixelRect& area, Framebuffer& fb,
                                                     FragmentCounts& counts) {
     using Int = typename L::Int;
