@@ -20,9 +20,10 @@ namespace glrenderer {
 class PixelCenterTest {
 public:
     // `edges` over the centers [minX, maxX] x [minY, maxY] (not empty): true if none is inside
-    // all three and there are at most four of them.
-    static bool coversNone(const EdgeFunction (&edges)[3], std::int64_t minX, std::int64_t maxX, std::int64_t minY,
-                           std::int64_t maxY) {
+    // all three and there are at most four of them. (Out of line: inlined, its registers made
+    // the rest of prepareTriangle spill, which cost every triangle what the test saves.)
+    [[gnu::noinline]] static bool coversNone(const EdgeFunction (&edges)[3], std::int64_t minX, std::int64_t maxX,
+                                             std::int64_t minY, std::int64_t maxY) {
         const auto clampedSpan = [](std::int64_t first, std::int64_t last) {
             const auto span = static_cast<std::uint64_t>(last - first);  // centers - 1
             return span < kSpans ? span : kSpans - 1;
