@@ -41,12 +41,13 @@ std::int64_t largest(std::int64_t a, std::int64_t b, std::int64_t c) {
 EdgeFunction::EdgeFunction(const FixedPoint& a, const FixedPoint& b) {
     const std::int64_t dx = a.y - b.y;  // dE per fixed-point unit of x
     const std::int64_t dy = b.x - a.x;
-    // (Bitwise, not ||: the edge's direction is a coin toss per triangle, and a branch on it
-    // mispredicted.)
-    const std::int64_t ownsCenters = static_cast<std::int64_t>((dx > 0) | ((dx == 0) & (dy < 0)));
+    // The edge owns its centers if dx > 0, or dx == 0 and dy < 0: if `leaning` is positive. The
+    // bias is then 0, else -1, without a branch (the edge's direction is a coin toss per
+    // triangle, and a branch on it mispredicted).
+    const std::int64_t leaning = dx != 0 ? dx : -dy;
     stepX = dx << kSubpixelBits;
     stepY = dy << kSubpixelBits;
-    valueAtOrigin = -(dy * a.y + dx * a.x) + ownsCenters - 1;
+    valueAtOrigin = -(dy * a.y + dx * a.x) + ((leaning - 1) >> 63);
 }
 
 FragmentKey triangleFragmentKey(const DrawState& state, const Methods& methods) {
@@ -108,7 +109,8 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
 
     FragmentInputs& in = out.fragment;
     const FragmentKey& key = fragments.varyingW.key;
-    in.setPath(fragments.varyingW);
+    const bool perspective = key.shading == Shading::Perspective;
+    if (!perspective) in.setPath(fragments.varyingW);  // (perspective shading's comes with the plane of 1 / w)
     in.ops = fragments.ops;
     in.polygonStipple = fragments.polygonStipple;
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
@@ -116,7 +118,6 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         in.setFlatColor(*t.flatColor, t.v[2]->secondaryColor);  // every vertex has the flat secondary colour
         if (!key.depthTest && key.fog == FogMode::Off && key.textureEnv == TextureEnv::Off) return true;
     }
-    const bool perspective = key.shading == Shading::Perspective;
     // The planes in lanes of four, each vertex's values loaded as they lie in WindowVertex.
     const auto lanes = [&](auto valuesOf) { return planes.planes(valuesOf(v0), valuesOf(v1), valuesOf(v2)); };
     const auto oneOverW = [](const WindowVertex& v) { return _mm_set1_ps(v.invW); };
