@@ -23,6 +23,9 @@ bool areUsable(const WindowVertex& v0, const WindowVertex& v1, const WindowVerte
     return _mm_movemask_ps(_mm_and_ps(_mm_and_ps(usableLanes(v0), usableLanes(v1)), usableLanes(v2))) == 0xF;
 }
 
+// Counts a triangle culled for its facing.
+void countCulled(Stats& stats, Facing facing) { ++(facing == Facing::Front ? stats.culledFront : stats.culledBack); }
+
 bool isCulled(const DrawState& state, Facing facing) {
     if (!state.cullEnabled) return false;
     switch (state.cullFace) {
@@ -107,19 +110,9 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
             outside == 0 && !drawModuleFills ? DecompositionPath::Direct : DecompositionPath::DrawModule;
         const bool drawModuleCulls = path == DecompositionPath::DrawModule && batch.state->cullEnabled &&
                                      batch.methods.culling == CullMethod::WindowArea;
-        const Call call{batch,
-                        batch.vertices,
-                        assembled,
-                        &target,
-                        stats,
-                        &fragments,
-                        drawModuleCulls,
-                        nullptr,
-                        nullptr,
-                        drawable,
-                        stagedSnaps && !drawModuleCulls,
-                        drawModuleOffsets,
-                        drawModuleFills};
+        const Call call{batch,       batch.vertices,    assembled,      &target, stats,
+                        &fragments,  drawModuleCulls,   nullptr,        nullptr, drawable,
+                        stagedSnaps, drawModuleOffsets, drawModuleFills};
         decomposeTriangles(batch.mode, count, path, v1v3Quads, [&](TriangleIndices t) {
             for (std::uint32_t& v : t.v) v = indexed ? batch.indices[v + first] : v + first;
             setUpTriangle(call, t, viewport);
@@ -170,8 +163,7 @@ void BatchSetup::setUpTriangle(const Call& call, const TriangleIndices& t, const
         const Facing facing =
             seedFacing(batch.methods.culling, eye[t.v[0]], eye[t.v[1]], eye[t.v[2]], batch.state->frontFaceCCW);
         if (facing != Facing::ZeroArea && isCulled(*batch.state, facing)) {  // edge-on: the seeds keep it
-            ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
-            return;
+            return countCulled(call.stats, facing);
         }
     }
     const Vertex& provoking = call.vertices[t.v[2]];
@@ -266,8 +258,7 @@ void BatchSetup::setUpTriangle(const Call& call, const WindowVertex& v0, const W
         const float determinant = drawModuleDeterminant(v0, v1, v2);
         const Facing facing = drawModuleFacing(determinant, state.frontFaceCCW);
         if (isCulled(state, facing)) {
-            ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
-            return;
+            return countCulled(call.stats, facing);
         }
         // Selection's cull stage drops a triangle of no area too (measured with OSMesa).
         if ((call.hits || call.feedback) && determinant == 0.0f) return;
@@ -300,8 +291,13 @@ void BatchSetup::setUpStaged(const Call& call, const TriangleIndices& t, const g
         return;
     }
     const std::span<const WindowVertex> window = vertexStage_.windowVertices();
-    SetupTriangle triangle{
-        {&window[t.v[0]], &window[t.v[1]], &window[t.v[2]]}, {s0.fixed, s1.fixed, s2.fixed}, 0, &flatColor};
+    const WindowVertex &w0 = window[t.v[0]], &w1 = window[t.v[1]], &w2 = window[t.v[2]];
+    if (call.drawModuleCulls) {  // as setUpTriangle's
+        const DrawState& state = *call.batch.state;
+        const Facing facing = drawModuleFacing(drawModuleDeterminant(w0, w1, w2), state.frontFaceCCW);
+        if (isCulled(state, facing)) return countCulled(call.stats, facing);
+    }
+    SetupTriangle triangle{{&w0, &w1, &w2}, {s0.fixed, s1.fixed, s2.fixed}, 0, &flatColor};
     setUpSnapped(call, triangle);
 }
 
@@ -316,8 +312,7 @@ void BatchSetup::setUpSnapped(const Call& call, SetupTriangle& triangle) {
     }
     // The seeds' culling methods have decided already, before clipping.
     if (methods.culling == CullMethod::WindowArea && isCulled(state, facing)) {
-        ++(facing == Facing::Front ? call.stats.culledFront : call.stats.culledBack);
-        return;
+        return countCulled(call.stats, facing);
     }
     ++call.stats.rasterized;
     if (prepareTriangle(triangle, *call.fragments, methods.raster, call.drawable, call.target->slot())) {

@@ -70,8 +70,9 @@ private:
         HitRange* hits = nullptr;            // GL_SELECT
         FeedbackOutput* feedback = nullptr;  // GL_FEEDBACK
         PixelRect drawable{};                // drawableRect of the draw, when drawing
-        // The triangles on the direct path take the stage's snapped vertices as they are: no
-        // draw-module culling, selection, feedback, back colours or flat secondary colours.
+        // The triangles whose vertices are the stage's take its snaps as they are: no selection,
+        // feedback, back colours, flat secondary colours or draw-module offset (draw-module
+        // culling, by their window vertices, comes first).
         bool stagedSnaps = false;
         // The draw module's offset stage offsets the triangles' vertices (fillsThroughDrawModule
         // with GL_POLYGON_OFFSET_FILL), not setup their fragments.
