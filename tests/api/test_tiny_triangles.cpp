@@ -67,10 +67,12 @@ std::vector<Triangle> tinyTriangles() {
     return triangles;
 }
 
-// Draws triangle i around the center of the middle pixel of cell i, one glBegin for all.
-void drawInCells(const std::vector<Triangle>& triangles) {
+// Draws triangle i around the center of the middle pixel of cell i, one glBegin for all, over
+// the whole window cleared, with `scissor` only a part of it.
+void drawInCells(const std::vector<Triangle>& triangles, bool scissor) {
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
+    if (scissor) glScissor(17, 23, 101, 89), glEnable(GL_SCISSOR_TEST);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glOrtho(0, kSize, 0, kSize, -1, 1);
@@ -95,8 +97,7 @@ Drawn drawWithMygl(const std::vector<Triangle>& triangles, glrenderer::RasterMet
     mygl::Context context(kSize, kSize);
     context.makeCurrent();
     context.setMethods({method});
-    if (scissor) glScissor(17, 23, 101, 89), glEnable(GL_SCISSOR_TEST);
-    drawInCells(triangles);
+    drawInCells(triangles, scissor);
     Drawn drawn;
     drawn.pixels = context.readPixels();
     drawn.stats = context.stats();
@@ -106,8 +107,7 @@ Drawn drawWithMygl(const std::vector<Triangle>& triangles, glrenderer::RasterMet
 std::vector<std::uint8_t> drawWithOsmesa(const std::vector<Triangle>& triangles, bool scissor) {
     reference::OsmesaContext context(kSize, kSize);
     context.makeCurrent();
-    if (scissor) glScissor(17, 23, 101, 89), glEnable(GL_SCISSOR_TEST);
-    drawInCells(triangles);
+    drawInCells(triangles, scissor);
     return context.readPixels();
 }
 
