@@ -98,8 +98,8 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     out.edges[1] = EdgeFunction(b, c);
     out.edges[2] = EdgeFunction(c, a);
     // The exact methods cover the centers the edge functions hold, and nothing else. Tested only
-    // below a pixel's area, where most such triangles are (in a dense mesh, 83% of those that
-    // cover no center, and 42% of those tested): on every triangle the test cost more than
+    // below a pixel's area, where most such triangles are (in a dense mesh, 77% of those that
+    // cover no center, and 39% of those tested): on every triangle the test cost more than
     // dropping saved.
     const bool exact = method == RasterMethod::Exact || method == RasterMethod::ExactPerPixel;
     const std::int64_t twiceArea = t.area > 0 ? t.area : -t.area;
