@@ -27,6 +27,7 @@ struct Avx2LanesOf {
     // Keys that sample a level of detail walk rows in pairs, in blocks of 4 x 2 pixels: two
     // whole 2 x 2 quads (QuadLanes::TwoRows).
     static constexpr bool kTwoRowBlocks = true;
+    static constexpr bool kPackedBlocks = false;
     static constexpr std::string_view kName = Evex ? "avx2-evex" : "avx2";
     using Float = __m256;
     using Int = __m256i;

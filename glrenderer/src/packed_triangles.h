@@ -1,0 +1,146 @@
+#pragma once
+// Several tiny triangles' fragments in one block of lanes: a dense mesh's triangles cover about
+// two pixels each, and a block per triangle left most of its 16 lanes idle. Each lane carries its
+// own triangle's planes (FragmentLanes::take), so every lane computes what it computes in a block
+// of its own triangle, bit for bit. Included only by fragment_routines.h, at widths with
+// L::kPackedBlocks.
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "fragment_stage.h"
+#include "raster_span.h"
+#include "raster_triangle.h"
+#include "triangle_arena.h"
+
+namespace glrenderer {
+
+// Lanes on any pixels: lane i at offsets[i] from a pixel of the buffers, read by a gather and
+// written by a scatter. No two lanes on one pixel.
+template <class L>
+class PackedBlock {
+public:
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+
+    static constexpr QuadLanes kQuadLanes = QuadLanes::PerLane;
+
+    PackedBlock(std::size_t origin, Int offsets) : origin_(origin), offsets_(offsets) {}
+
+    Int load(const std::uint32_t* buffer, Mask lanes) const { return L::gather(buffer + origin_, offsets_, lanes); }
+    void store(std::uint32_t* buffer, Mask lanes, Int values) const {
+        L::scatter(buffer + origin_, offsets_, lanes, values);
+    }
+
+private:
+    std::size_t origin_;
+    Int offsets_;
+};
+
+// The pixel centres a triangle covers in a tile, when its part there fits one block of lanes in
+// a narrow block's layout (shadeNarrowTriangle): `covered` the lanes, `at` each lane's pixel from
+// the tile's first one, x in the low 16 bits and y in the high.
+template <class L>
+struct TinyCoverage {
+    typename L::Int at;
+    typename L::Mask covered;
+    int count;
+};
+
+// The coverage of triangle `t` in tile `rect` if its part there fits one block (an empty part
+// does, covering nothing) and its edge values fit 32 bits there; false otherwise.
+template <class L>
+[[gnu::always_inline]] inline bool tinyCoverage(const RasterTriangle& t, const PixelRect& rect, TinyCoverage<L>& out) {
+    using Int = typename L::Int;
+    const PixelRect area{std::max(t.minX, rect.minX), std::min(t.maxX, rect.maxX), std::max(t.minY, rect.minY),
+                         std::min(t.maxY, rect.maxY)};
+    out.count = 0;
+    if (area.minX > area.maxX || area.minY > area.maxY) return true;
+    const int width = area.maxX - area.minX + 1, height = area.maxY - area.minY + 1;
+    if (width > L::kCount) return false;
+    const unsigned columns = std::bit_ceil(static_cast<unsigned>(width));
+    const int columnBits = std::countr_zero(columns);
+    if (height > (L::kCount >> columnBits)) return false;
+    if (!smallEdgeSteps(t) && !edgeValuesFit32(t, area)) return false;
+    const Int dx = L::bitAnd(L::laneIndex(), L::ints(static_cast<int>(columns - 1)));
+    const Int dy = L::shiftRight(L::laneIndex(), columnBits);
+    Int outside = L::ints(0);  // sign bit set where any edge is negative
+    for (const EdgeFunction& edge : t.edges) {
+        const Int first = L::ints(static_cast<int>(edge.at(area.minX, area.minY)));
+        outside = L::bitOr(outside, L::add(first, L::add(L::mul(dx, L::ints(static_cast<int>(edge.stepX))),
+                                                         L::mul(dy, L::ints(static_cast<int>(edge.stepY))))));
+    }
+    const typename L::Mask inArea = L::both(L::lessThan(dx, L::ints(width)), L::lessThan(dy, L::ints(height)));
+    out.covered = L::both(inArea, L::notNegative(outside));
+    out.count = static_cast<int>(L::count(out.covered));
+    const int first = (area.minX - rect.minX) | ((area.minY - rect.minY) << 16);
+    out.at = L::add(L::ints(first), L::add(dx, L::template shiftLeft<16>(dy)));
+    return true;
+}
+
+// Consecutive triangles in tile `rect` up to one of another routine (FragmentRoutine::Packed):
+// the covered pixels of consecutive tiny ones in the next free lanes of one block, until one
+// does not fit, has other draw constants, or covers a pixel the block holds already (its
+// fragment must follow the earlier one's: depth test, blending, counts); the others as by
+// rasterizeTriangleSpans, in order. Returns how many it drew.
+template <class L>
+[[gnu::always_inline]] inline std::size_t shadePackedRun(const FragmentKey& key,
+                                                         std::span<const RasterTriangle* const> run,
+                                                         const PixelRect& rect, Framebuffer& fb,
+                                                         FragmentCounts& counts) {
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+    const FragmentRoutine& routine = *run.front()->fragment.routine;
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
+    const std::size_t origin =
+        static_cast<std::size_t>(fb.height() - 1 - rect.minY) * static_cast<std::size_t>(fb.width()) +
+        static_cast<std::size_t>(rect.minX);
+    const Int rowStep = L::ints(fb.width());
+    std::uint64_t fragments = 0, passed = 0;
+    TinyCoverage<L> c;
+    const auto fetchAhead = [&](std::size_t i) {
+        if (i + kPackedFetchAhead < run.size()) prefetchCommonLines(*run[i + kPackedFetchAhead]);
+    };
+    std::size_t i = 0;
+    while (i < run.size() && run[i]->fragment.routine == &routine) {
+        fetchAhead(i);
+        const RasterTriangle& first = *run[i++];
+        if (!tinyCoverage<L>(first, rect, c)) {
+            rasterizeTriangleSpans(first, rect, fb, counts, routine);
+            continue;
+        }
+        if (c.count == 0) continue;
+        FragmentLanes<L> lanes(first.fragment, fb.height());
+        Mask group = L::lanesBetween(0, c.count - 1);
+        Int at = L::appendLanes(L::ints(0), group, c.at, c.covered);
+        int used = c.count;
+        fragments += static_cast<std::uint64_t>(c.count);
+        for (; i < run.size(); ++i) {
+            fetchAhead(i);
+            const RasterTriangle& t = *run[i];
+            if (t.fragment.routine != &routine || !sameDrawConstants(key, first.fragment, t.fragment) ||
+                !tinyCoverage<L>(t, rect, c))
+                break;
+            if (c.count == 0) continue;
+            if (used + c.count > L::kCount) break;
+            const Mask added = L::lanesBetween(used, used + c.count - 1);
+            const Int merged = L::appendLanes(at, added, c.at, c.covered);
+            if (L::repeatsAny(merged, group, added)) break;
+            lanes.take(t.fragment, added);
+            at = merged, group = L::either(group, added), used += c.count;
+            fragments += static_cast<std::uint64_t>(c.count);
+        }
+        const Int dx = L::bitAnd(at, L::ints(0xFFFF)), dy = L::template shiftRightUnsigned<16>(at);
+        const typename L::Float x = L::toFloat(L::add(dx, L::ints(rect.minX)));
+        const typename L::Float y = L::toFloat(L::add(dy, L::ints(rect.minY)));
+        const PackedBlock<L> block(origin, L::sub(dx, L::mul(dy, rowStep)));
+        passed += L::count(shadeBlock<L>(key, lanes, x, y, group, block, buffers));
+    }
+    counts.fragments += fragments;
+    counts.passed += passed;
+    return i;
+}
+
+}  // namespace glrenderer
