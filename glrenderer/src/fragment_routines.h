@@ -325,11 +325,10 @@ template <class L>
     return true;
 }
 
-// Whether a key's fast path packs tiny triangles (shadePackedRun): not with texturing, whose
-// planes FragmentLanes::take leaves out.
+// Whether a key's fast path packs tiny triangles (shadePackedRun): not with texels as depths or
+// stencil values (glDrawPixels' rectangles), nor in deferred shading's passes (drawDeferred).
 constexpr bool packsTinyTriangles(const FragmentKey& key) {
-    return key.textureEnv == TextureEnv::Off && key.texelUse == TexelUse::Color &&
-           key.deferredPass == DeferredPass::None;
+    return key.texelUse == TexelUse::Color && key.deferredPass == DeferredPass::None;
 }
 
 // Which keys of kFastFragmentKeys a width compiles fast paths for: all, or only those with (or

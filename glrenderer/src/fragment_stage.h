@@ -59,7 +59,7 @@ public:
 
     // The values of primitive `in` of the same draw constants (sameDrawConstants) in the lanes
     // `lanes` only: its planes, flat colour and depth offset, for a block that holds fragments of
-    // several primitives (shadePackedRun). Not the texture's planes: untextured keys only.
+    // several primitives (shadePackedRun).
     [[gnu::always_inline]] void take(const FragmentInputs& in, typename L::Mask lanes) {
         depth_.take(in.depth, lanes), invW_.take(in.invW, lanes);
         red_.take(in.color[0], lanes), green_.take(in.color[1], lanes);
@@ -68,6 +68,7 @@ public:
         secondaryBlue_.take(in.secondaryColor[2], lanes), fogCoord_.take(in.fogCoord, lanes);
         flat_ = L::select(lanes, L::ints(static_cast<int>(in.flatColor)), flat_);
         depthOffset_ = L::select(lanes, L::floats(in.depthOffset), depthOffset_);
+        texture_.take(in, lanes);
     }
 
     // The per-fragment operations' constants (issue 16).

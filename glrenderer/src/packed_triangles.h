@@ -4,6 +4,8 @@
 // own triangle's planes (FragmentLanes::take), so every lane computes what it computes in a block
 // of its own triangle, bit for bit. Included only by fragment_routines.h, at widths with
 // L::kPackedBlocks.
+// (A level of detail: every lane evaluates its own quad's corners from its own planes,
+// QuadLanes::PerLane, as the reference's quads from even x and y do, covered or not.)
 #include <algorithm>
 #include <bit>
 #include <cstddef>
@@ -16,6 +18,13 @@
 #include "triangle_arena.h"
 
 namespace glrenderer {
+
+// The lanes a tiny triangle's coverage is found in (TinyCoverage): L's own, or wider ones
+// (fragment_paths_avx2_evex.cpp), compressed from there into L's.
+template <class L>
+struct CoverageLanesOf {
+    using type = L;
+};
 
 // Lanes on any pixels: lane i at offsets[i] from a pixel of the buffers, read by a gather and
 // written by a scatter. No two lanes on one pixel.
@@ -92,6 +101,7 @@ template <class L>
                                                          FragmentCounts& counts) {
     using Int = typename L::Int;
     using Mask = typename L::Mask;
+    using C = typename CoverageLanesOf<L>::type;
     const FragmentRoutine& routine = *run.front()->fragment.routine;
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
     const std::size_t origin =
@@ -99,7 +109,7 @@ template <class L>
         static_cast<std::size_t>(rect.minX);
     const Int rowStep = L::ints(fb.width());
     std::uint64_t fragments = 0, passed = 0;
-    TinyCoverage<L> c;
+    TinyCoverage<C> c;
     const auto fetchAhead = [&](std::size_t i) {
         if (i + kPackedFetchAhead < run.size()) prefetchCommonLines(*run[i + kPackedFetchAhead]);
     };
@@ -107,26 +117,26 @@ template <class L>
     while (i < run.size() && run[i]->fragment.routine == &routine) {
         fetchAhead(i);
         const RasterTriangle& first = *run[i++];
-        if (!tinyCoverage<L>(first, rect, c)) {
+        if (!tinyCoverage<C>(first, rect, c) || c.count > L::kCount) {
             rasterizeTriangleSpans(first, rect, fb, counts, routine);
             continue;
         }
         if (c.count == 0) continue;
         FragmentLanes<L> lanes(first.fragment, fb.height());
         Mask group = L::lanesBetween(0, c.count - 1);
-        Int at = L::appendLanes(L::ints(0), group, c.at, c.covered);
+        Int at = L::placeLanes(L::ints(0), group, C::compress(c.at, c.covered));
         int used = c.count;
         fragments += static_cast<std::uint64_t>(c.count);
         for (; i < run.size(); ++i) {
             fetchAhead(i);
             const RasterTriangle& t = *run[i];
             if (t.fragment.routine != &routine || !sameDrawConstants(key, first.fragment, t.fragment) ||
-                !tinyCoverage<L>(t, rect, c))
+                !tinyCoverage<C>(t, rect, c))
                 break;
             if (c.count == 0) continue;
             if (used + c.count > L::kCount) break;
             const Mask added = L::lanesBetween(used, used + c.count - 1);
-            const Int merged = L::appendLanes(at, added, c.at, c.covered);
+            const Int merged = L::placeLanes(at, added, C::compress(c.at, c.covered));
             if (L::repeatsAny(merged, group, added)) break;
             lanes.take(t.fragment, added);
             at = merged, group = L::either(group, added), used += c.count;

@@ -136,11 +136,10 @@ struct Avx512Lanes {
     static void scatter(std::uint32_t* base, Int offsets, Mask m, Int v) {
         _mm512_mask_i32scatter_epi32(base, m, offsets, v, 4);
     }
-    // `into` with the lanes `from` of `values`, in order, in its lanes `at` (as many): a
-    // compress and an expand in registers (their memory forms are slow on Zen 4).
-    static Int appendLanes(Int into, Mask at, Int values, Mask from) {
-        return _mm512_mask_expand_epi32(into, at, _mm512_maskz_compress_epi32(from, values));
-    }
+    // The lanes `from` of `values`, in order, from lane 0; and `into` with such lanes in its
+    // lanes `at` (as many). In registers: their memory forms are slow on Zen 4.
+    static Int compress(Int values, Mask from) { return _mm512_maskz_compress_epi32(from, values); }
+    static Int placeLanes(Int into, Mask at, Int compressed) { return _mm512_mask_expand_epi32(into, at, compressed); }
     // Whether a lane of `later` holds the value of a lane of `earlier`, all of whose lanes lie
     // below those of `later` (AVX-512CD's conflict detection: lane i's bits are the lanes below
     // it of equal value).

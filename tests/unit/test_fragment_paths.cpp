@@ -475,8 +475,10 @@ namespace {
 
 // The draw states of the keys whose fast paths pack tiny triangles (FragmentRoutine::packed) and
 // of some that do not: the depth test under GL_LESS and GL_LEQUAL (ties between a triangle and
-// its copy), none, smooth and flat, linear fog, blending without depth writes, polygon offset.
-std::vector<DrawState> tinyTriangleStates(std::mt19937& random) {
+// its copy), none, smooth and flat, linear fog, blending without depth writes, polygon offset,
+// textures of `texture` with a level of detail (with fog: bench-fog-textured-terrain's) or
+// without.
+std::vector<DrawState> tinyTriangleStates(std::mt19937& random, const std::shared_ptr<const Texture>& texture) {
     std::vector<DrawState> states;
     for (const CompareFunc func : {CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Always}) {
         for (const ShadeModel shading : {ShadeModel::Smooth, ShadeModel::Flat}) {
@@ -499,6 +501,18 @@ std::vector<DrawState> tinyTriangleStates(std::mt19937& random) {
     DrawState offset = states.front();
     offset.polygonOffset = {1.5f, -3.0f, true, false, false};
     states.push_back(offset);
+    DrawState textured = fogged;
+    textured.texture.env = TextureEnv::Modulate;
+    textured.texture.base = TextureBase::Rgb;
+    textured.texture.minFilter = textured.texture.magFilter = TextureFilter::Linear;
+    textured.texture.mipFilter = MipmapFilter::Linear;
+    textured.texture.texture = texture;
+    states.insert(states.end(), {textured, textured});  // twice, as the fog
+    textured.fog = {};
+    textured.texture.base = TextureBase::Rgba;
+    textured.texture.minFilter = textured.texture.magFilter = TextureFilter::Nearest;
+    textured.texture.mipFilter = MipmapFilter::None;
+    states.push_back(textured);
     std::shuffle(states.begin(), states.end(), random);
     return states;
 }
@@ -516,9 +530,10 @@ TEST(FragmentPaths, PackedRunsOfTinyTrianglesMatchThePerPixelReference) {
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f), region(-6.0f, 6.0f);
     std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1), fifth(0, 4);
     const std::vector<std::uint32_t> color(kWidth * kHeight, 0x80808080u);
-    const std::vector<DrawState> states = tinyTriangleStates(random);
+    const auto texture = std::make_shared<const Texture>(randomTexture(random, 16, 16));
+    const std::vector<DrawState> states = tinyTriangleStates(random, texture);
     int packedRuns = 0;
-    for (int i = 0; i < 600; ++i) {
+    for (int i = 0; i < 900; ++i) {
         constexpr int kTriangles = 40;
         std::vector<WindowVertex> vertices;
         std::vector<glm::vec4> flatColors;
@@ -578,6 +593,6 @@ TEST(FragmentPaths, PackedRunsOfTinyTrianglesMatchThePerPixelReference) {
     }
     // Runs of every state but polygon offset's (no fast path), where the CPU has AVX-512.
     if (cpuHasAvx512()) {
-        EXPECT_GT(packedRuns, 300);
+        EXPECT_GT(packedRuns, 800);
     }
 }
