@@ -111,7 +111,7 @@ template <class L>
     std::uint64_t fragments = 0, passed = 0;
     TinyCoverage<C> c;
     const auto fetchAhead = [&](std::size_t i) {
-        if (i + kPackedFetchAhead < run.size()) prefetchCommonLines(*run[i + kPackedFetchAhead]);
+        if (i + kPackedFetchAhead < run.size()) prefetchTriangle(*run[i + kPackedFetchAhead], triangleBytesRead(key));
     };
     std::size_t i = 0;
     while (i < run.size() && run[i]->fragment.routine == &routine) {
