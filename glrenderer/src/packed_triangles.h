@@ -48,45 +48,69 @@ private:
     Int offsets_;
 };
 
-// The pixel centres a triangle covers in a tile, when its part there fits one block of lanes in
-// a narrow block's layout (shadeNarrowTriangle): `covered` the lanes, `at` each lane's pixel from
-// the tile's first one, x in the low 16 bits and y in the high.
+// The pixel centres a triangle covers in a tile, when its part there fits two blocks of lanes in
+// a narrow block's layout (shadeNarrowTriangle), one above the other: per block, `covered` the
+// lanes, `at` each lane's pixel from the tile's first one, x in the low 16 bits and y in the high.
 template <class L>
 struct TinyCoverage {
-    typename L::Int at;
-    typename L::Mask covered;
-    int count;
+    typename L::Int at[2];
+    typename L::Mask covered[2];
+    int counts[2];
+    int blocks;
+    int count;  // of both
 };
 
-// The coverage of triangle `t` in tile `rect` if its part there fits one block (an empty part
+// The coverage of triangle `t` in tile `rect` if its part there fits two blocks (an empty part
 // does, covering nothing) and its edge values fit 32 bits there; false otherwise.
 template <class L>
 [[gnu::always_inline]] inline bool tinyCoverage(const RasterTriangle& t, const PixelRect& rect, TinyCoverage<L>& out) {
     using Int = typename L::Int;
     const PixelRect area{std::max(t.minX, rect.minX), std::min(t.maxX, rect.maxX), std::max(t.minY, rect.minY),
                          std::min(t.maxY, rect.maxY)};
-    out.count = 0;
+    out.count = 0, out.blocks = 0;
     if (area.minX > area.maxX || area.minY > area.maxY) return true;
     const int width = area.maxX - area.minX + 1, height = area.maxY - area.minY + 1;
     if (width > L::kCount) return false;
     const unsigned columns = std::bit_ceil(static_cast<unsigned>(width));
     const int columnBits = std::countr_zero(columns);
-    if (height > (L::kCount >> columnBits)) return false;
+    const int blockRows = L::kCount >> columnBits;
+    if (height > 2 * blockRows) return false;
     if (!smallEdgeSteps(t) && !edgeValuesFit32(t, area)) return false;
     const Int dx = L::bitAnd(L::laneIndex(), L::ints(static_cast<int>(columns - 1)));
     const Int dy = L::shiftRight(L::laneIndex(), columnBits);
-    Int outside = L::ints(0);  // sign bit set where any edge is negative
-    for (const EdgeFunction& edge : t.edges) {
-        const Int first = L::ints(static_cast<int>(edge.at(area.minX, area.minY)));
-        outside = L::bitOr(outside, L::add(first, L::add(L::mul(dx, L::ints(static_cast<int>(edge.stepX))),
-                                                         L::mul(dy, L::ints(static_cast<int>(edge.stepY))))));
+    Int steps[3];  // each lane's edge value less its block's first lane's
+    for (int k = 0; k < 3; ++k) {
+        steps[k] = L::add(L::mul(dx, L::ints(static_cast<int>(t.edges[k].stepX))),
+                          L::mul(dy, L::ints(static_cast<int>(t.edges[k].stepY))));
     }
-    const typename L::Mask inArea = L::both(L::lessThan(dx, L::ints(width)), L::lessThan(dy, L::ints(height)));
-    out.covered = L::both(inArea, L::notNegative(outside));
-    out.count = static_cast<int>(L::count(out.covered));
-    const int first = (area.minX - rect.minX) | ((area.minY - rect.minY) << 16);
-    out.at = L::add(L::ints(first), L::add(dx, L::template shiftLeft<16>(dy)));
+    const typename L::Mask inColumns = L::lessThan(dx, L::ints(width));
+    const Int lanePixel = L::add(dx, L::template shiftLeft<16>(dy));
+    out.blocks = height > blockRows ? 2 : 1;
+    for (int block = 0; block < out.blocks; ++block) {
+        const int top = area.minY + block * blockRows;
+        Int outside = L::ints(0);  // sign bit set where any edge is negative
+        for (int k = 0; k < 3; ++k) {
+            outside = L::bitOr(outside, L::add(L::ints(static_cast<int>(t.edges[k].at(area.minX, top))), steps[k]));
+        }
+        const typename L::Mask inArea = L::both(inColumns, L::lessThan(dy, L::ints(area.maxY - top + 1)));
+        out.covered[block] = L::both(inArea, L::notNegative(outside));
+        out.counts[block] = static_cast<int>(L::count(out.covered[block]));
+        out.count += out.counts[block];
+        out.at[block] = L::add(L::ints((area.minX - rect.minX) | ((top - rect.minY) << 16)), lanePixel);
+    }
     return true;
+}
+
+// `into` with the pixels `c` covers in its lanes from `used` on, in order.
+template <class L, class C>
+[[gnu::always_inline]] inline typename L::Int placeCoverage(typename L::Int into, int used, const TinyCoverage<C>& c) {
+    for (int block = 0; block < c.blocks; ++block) {
+        if (c.counts[block] == 0) continue;
+        const typename L::Mask lanes = L::lanesBetween(used, used + c.counts[block] - 1);
+        into = L::placeLanes(into, lanes, C::compress(c.at[block], c.covered[block]));
+        used += c.counts[block];
+    }
+    return into;
 }
 
 // Consecutive triangles in tile `rect` up to one of another routine (FragmentRoutine::Packed):
@@ -110,6 +134,9 @@ template <class L>
     const Int rowStep = L::ints(fb.width());
     std::uint64_t fragments = 0, passed = 0;
     TinyCoverage<C> c;
+    // Whether `c` holds the coverage of run[i], found by the block before it: 1 (tiny), 0 (not)
+    // or -1 (nothing).
+    int carried = -1;
     const auto fetchAhead = [&](std::size_t i) {
         if (i + kPackedFetchAhead < run.size()) prefetchTriangle(*run[i + kPackedFetchAhead], triangleBytesRead(key));
     };
@@ -117,26 +144,28 @@ template <class L>
     while (i < run.size() && run[i]->fragment.routine == &routine) {
         fetchAhead(i);
         const RasterTriangle& first = *run[i++];
-        if (!tinyCoverage<C>(first, rect, c) || c.count > L::kCount) {
+        const bool tiny = carried >= 0 ? carried == 1 : tinyCoverage<C>(first, rect, c);
+        carried = -1;
+        if (!tiny || c.count > L::kCount) {
             rasterizeTriangleSpans(first, rect, fb, counts, routine);
             continue;
         }
         if (c.count == 0) continue;
         FragmentLanes<L> lanes(first.fragment, fb.height());
+        Int at = placeCoverage<L>(L::ints(0), 0, c);
         Mask group = L::lanesBetween(0, c.count - 1);
-        Int at = L::placeLanes(L::ints(0), group, C::compress(c.at, c.covered));
         int used = c.count;
         fragments += static_cast<std::uint64_t>(c.count);
         for (; i < run.size(); ++i) {
             fetchAhead(i);
+            carried = -1;
             const RasterTriangle& t = *run[i];
-            if (t.fragment.routine != &routine || !sameDrawConstants(key, first.fragment, t.fragment) ||
-                !tinyCoverage<C>(t, rect, c))
-                break;
+            if (t.fragment.routine != &routine || !sameDrawConstants(key, first.fragment, t.fragment)) break;
+            carried = tinyCoverage<C>(t, rect, c) ? 1 : 0;
+            if (carried == 0 || used + c.count > L::kCount) break;
             if (c.count == 0) continue;
-            if (used + c.count > L::kCount) break;
             const Mask added = L::lanesBetween(used, used + c.count - 1);
-            const Int merged = L::placeLanes(at, added, C::compress(c.at, c.covered));
+            const Int merged = placeCoverage<L>(at, used, c);
             if (L::repeatsAny(merged, group, added)) break;
             lanes.take(t.fragment, added);
             at = merged, group = L::either(group, added), used += c.count;
