@@ -18,7 +18,8 @@ bool cpuHasAvx2Fma() {
 
 bool cpuHasAvx512() {
     static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                            __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("fma");
+                            __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512cd") &&
+                            __builtin_cpu_supports("fma");
     return has;
 }
 #else

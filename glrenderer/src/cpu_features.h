@@ -6,7 +6,7 @@ namespace glrenderer {
 // are called only after these say yes. Each answer is computed once.
 bool cpuHasFma();      // FMA3 (and SSE4.1, which every FMA CPU has)
 bool cpuHasAvx2Fma();  // AVX2 and FMA3
-bool cpuHasAvx512();   // AVX-512F, AVX-512BW, AVX-512VL and FMA3
+bool cpuHasAvx512();   // AVX-512F, AVX-512BW, AVX-512VL, AVX-512CD and FMA3
 
 // The widest lanes (simd_*.h) the stages run on this CPU, chosen once. MYGL_KERNELS=avx2 or
 // scalar caps the choice, to see how a CPU without AVX-512 (or AVX2) would run: the results

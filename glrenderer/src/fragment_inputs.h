@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <span>
 
 #include "fragment_key.h"
 #include "glrenderer/fog.h"
@@ -22,6 +23,7 @@ struct FragmentOpsConstants {
     static FragmentOpsConstants of(const FragmentOps& ops) {
         return {ops.alphaRef, ops.stencil.ref, ops.stencil.valueMask, ops.stencil.writeMask, ops.colorMask};
     }
+    bool operator==(const FragmentOpsConstants&) const = default;
 };
 
 struct FragmentCounts {
@@ -50,9 +52,16 @@ struct FragmentRoutine {
     using Rows = void (*)(const RasterTriangle& triangle, const PixelRect& area, bool coveredWhole,
                           Framebuffer& framebuffer, FragmentCounts& counts);
 
+    // Consecutive triangles of one tile (`area` its rectangle), in order, from the first up to
+    // one of another routine: the fragments of several tiny ones packed into one block of lanes,
+    // the others as by rasterizeTriangleSpans. Returns how many it drew (at least one).
+    using Packed = std::size_t (*)(std::span<const RasterTriangle* const> triangles, const PixelRect& area,
+                                   Framebuffer& framebuffer, FragmentCounts& counts);
+
     Span span = nullptr;
     Rows rows = nullptr;
     Narrow narrow = nullptr;  // optional
+    Packed packed = nullptr;  // optional: for fast keys without texturing, at widths that pack
     // The passes of deferred shading (DeferredPass), for a fast key that defersColor().
     const FragmentRoutine* visibility = nullptr;
     const FragmentRoutine* shade = nullptr;
@@ -117,6 +126,17 @@ struct FragmentInputs {
         routine->span(*this, row, begin, end, framebuffer, counts);
     }
 };
+
+// Whether two primitives of `key` share the draw's constants the key reads: all it reads but
+// their planes, flat colour and depth offset (FragmentLanes::take), for a key whose texels
+// colour the fragments if any (TexelUse::Color).
+inline bool sameDrawConstants(const FragmentKey& key, const FragmentInputs& a, const FragmentInputs& b) {
+    const bool readsOps = key.alphaFunc != CompareFunc::Always || key.stencilTest || key.colorMask;
+    return (!readsOps || a.ops == b.ops) && (!key.polygonStipple || a.polygonStipple == b.polygonStipple) &&
+           (key.fog == FogMode::Off || a.fog == b.fog) &&
+           (!key.texturesColor() || (a.texture == b.texture && a.textureEnvColor == b.textureEnvColor &&
+                                     a.textureBorderColor == b.textureBorderColor));
+}
 
 }  // namespace glrenderer
 

@@ -12,6 +12,7 @@
 
 #include "fragment_paths.h"
 #include "fragment_stage.h"
+#include "packed_triangles.h"
 #include "raster_span.h"
 #include "raster_triangle.h"
 
@@ -324,6 +325,12 @@ template <class L>
     return true;
 }
 
+// Whether a key's fast path packs tiny triangles (shadePackedRun): not with texels as depths or
+// stencil values (glDrawPixels' rectangles), nor in deferred shading's passes (drawDeferred).
+constexpr bool packsTinyTriangles(const FragmentKey& key) {
+    return key.texelUse == TexelUse::Color && key.deferredPass == DeferredPass::None;
+}
+
 // Which keys of kFastFragmentKeys a width compiles fast paths for: all, or only those with (or
 // without) a level of detail where other paths serve the rest (FragmentPaths' lodPaths).
 enum class FastKeys { All, WithLod, WithoutLod };
@@ -370,6 +377,11 @@ struct RoutinesOf {
     static bool narrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
         return shadeNarrowTriangle<L>(Key, t, area, fb, counts);
     }
+    template <FragmentKey Key>
+    static std::size_t packed(std::span<const RasterTriangle* const> run, const PixelRect& area, Framebuffer& fb,
+                              FragmentCounts& counts) {
+        return shadePackedRun<L>(Key, run, area, fb, counts);
+    }
     static bool anyKeyNarrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
         return shadeNarrowTriangle<L>(t.fragment.key, t, area, fb, counts);
     }
@@ -379,6 +391,7 @@ struct RoutinesOf {
     static constexpr FragmentRoutine fastRoutine() {
         FragmentRoutine routine{&span<Key>, &rows<Key>, nullptr};
         if constexpr (L::kNarrowBlocks) routine.narrow = &narrow<Key>;
+        if constexpr (L::kPackedBlocks && packsTinyTriangles(Key)) routine.packed = &packed<Key>;
         if constexpr (Key.defersColor()) {
             routine.visibility = &DeferredPassesOf<Key>::visibility;
             routine.shade = &DeferredPassesOf<Key>::shade;

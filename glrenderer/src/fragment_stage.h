@@ -57,6 +57,20 @@ public:
           polygonStipple_(in.polygonStipple),
           lastRow_(framebufferHeight - 1) {}
 
+    // The values of primitive `in` of the same draw constants (sameDrawConstants) in the lanes
+    // `lanes` only: its planes, flat colour and depth offset, for a block that holds fragments of
+    // several primitives (shadePackedRun).
+    [[gnu::always_inline]] void take(const FragmentInputs& in, typename L::Mask lanes) {
+        depth_.take(in.depth, lanes), invW_.take(in.invW, lanes);
+        red_.take(in.color[0], lanes), green_.take(in.color[1], lanes);
+        blue_.take(in.color[2], lanes), alpha_.take(in.color[3], lanes);
+        secondaryRed_.take(in.secondaryColor[0], lanes), secondaryGreen_.take(in.secondaryColor[1], lanes);
+        secondaryBlue_.take(in.secondaryColor[2], lanes), fogCoord_.take(in.fogCoord, lanes);
+        flat_ = L::select(lanes, L::ints(static_cast<int>(in.flatColor)), flat_);
+        depthOffset_ = L::select(lanes, L::floats(in.depthOffset), depthOffset_);
+        texture_.take(in, lanes);
+    }
+
     // The per-fragment operations' constants (issue 16).
     Int alphaRef() const { return alphaRef_; }
     Int stencilValueMask() const { return stencilValueMask_; }

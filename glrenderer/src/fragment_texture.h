@@ -87,6 +87,12 @@ public:
           lastLevel_(L::ints(texture_ ? texture_->levelCount - 1 : 0)),
           floatSampler_(texture_, in.textureBorderColor) {}
 
+    // The planes of `in` in the lanes `lanes` only (FragmentLanes::take).
+    [[gnu::always_inline]] void take(const FragmentInputs& in, Mask lanes) {
+        s_.take(in.texCoord[0], lanes), t_.take(in.texCoord[1], lanes), q_.take(in.texCoord[2], lanes);
+        invW_.take(in.invW, lanes);
+    }
+
     // The texel colour of the fragments at (x, y) (w their interpolated w), each channel in
     // [0, 1], read for the lanes of `live`, lying on the quads as `Quads` says: with RowPairs or
     // TwoRows, lanes share the level of detail's coordinates.

@@ -14,6 +14,12 @@ struct PlaneLanes {
     typename L::Float at(typename L::Float x, typename L::Float y) const {
         return L::fma(dady, y, L::fma(dadx, x, a0));
     }
+    // The plane p in the lanes `lanes` only (a block of several primitives' fragments).
+    void take(const AttributePlane& p, typename L::Mask lanes) {
+        a0 = L::select(lanes, L::floats(p.a0), a0);
+        dadx = L::select(lanes, L::floats(p.dadx), dadx);
+        dady = L::select(lanes, L::floats(p.dady), dady);
+    }
 };
 
 }  // namespace glrenderer

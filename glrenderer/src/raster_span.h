@@ -2,7 +2,9 @@
 #include <immintrin.h>
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "fragment_inputs.h"
 #include "raster_triangle.h"
@@ -88,5 +90,15 @@ inline bool smallEdgeSteps(const RasterTriangle& t) {
 // Bit-for-bit the same pixels, depths and counts as rasterizeTriangleExact.
 void rasterizeTriangleSpans(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
                             FragmentCounts& counts, const FragmentRoutine& routine);
+
+// Consecutive triangles of routines that pack tiny triangles (FragmentRoutine::packed), in
+// order, their parts in tile `rect`: each routine draws its own from the front.
+inline void rasterizePackedRun(std::span<const RasterTriangle* const> run, const PixelRect& rect,
+                               Framebuffer& framebuffer, FragmentCounts& counts) {
+    for (std::size_t drawn = 0; drawn < run.size();) {
+        const std::span<const RasterTriangle* const> rest = run.subspan(drawn);
+        drawn += rest.front()->fragment.routine->packed(rest, rect, framebuffer, counts);
+    }
+}
 
 }  // namespace glrenderer

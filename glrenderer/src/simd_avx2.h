@@ -27,6 +27,9 @@ struct Avx2LanesOf {
     // Keys that sample a level of detail walk rows in pairs, in blocks of 4 x 2 pixels: two
     // whole 2 x 2 quads (QuadLanes::TwoRows).
     static constexpr bool kTwoRowBlocks = true;
+    // Tiny triangles packed into one block (packed_triangles.h): with AVX-512VL and CD, their
+    // coverage found in 16 lanes of AVX-512 (__m512i below, only where Evex).
+    static constexpr bool kPackedBlocks = Evex;
     static constexpr std::string_view kName = Evex ? "avx2-evex" : "avx2";
     using Float = __m256;
     using Int = __m256i;
@@ -185,7 +188,21 @@ struct Avx2LanesOf {
         return _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base), offsets, m, 4);
     }
 
+    // As Avx512Lanes' (with Evex only): lanes 0-7 of `compressed` (Avx512Lanes::compress) in
+    // `into`'s lanes `at`; a scatter; whether a lane of `later` repeats one of `earlier`.
+    static Int placeLanes(Int into, Mask at, __m512i compressed) {
+        return _mm256_mask_expand_epi32(into, bits(at), _mm512_castsi512_si256(compressed));
+    }
+    static void scatter(std::uint32_t* base, Int offsets, Mask m, Int v) {
+        _mm256_mask_i32scatter_epi32(base, bits(m), offsets, v, 4);
+    }
+    static bool repeatsAny(Int values, Mask earlier, Mask later) {
+        const Int conflicts = _mm256_maskz_conflict_epi32(bits(later), values);
+        return _mm256_mask_test_epi32_mask(bits(later), conflicts, _mm256_set1_epi32(bits(earlier))) != 0;
+    }
+
 private:
+    static __mmask8 bits(Mask m) { return static_cast<__mmask8>(_mm256_movemask_ps(_mm256_castsi256_ps(m))); }
     static __m128i loadHalf(const std::uint32_t* pixels, __m128i m, bool whole) {
         if (whole) return _mm_loadu_si128(reinterpret_cast<const __m128i*>(pixels));
         return _mm_maskload_epi32(reinterpret_cast<const int*>(pixels), m);

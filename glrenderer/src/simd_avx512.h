@@ -1,5 +1,5 @@
 #pragma once
-// Only for files compiled with -mavx512f -mavx512bw -mfma, called after cpuHasAvx512().
+// Only for files compiled with -mavx512f -mavx512bw -mavx512cd -mfma, called after cpuHasAvx512().
 #include <immintrin.h>
 
 #include <bit>
@@ -10,13 +10,14 @@
 
 namespace glrenderer {
 
-// 16 lanes of AVX-512F and BW: the lane operations of the fragment stage (fragment_stage.h). Masks are
+// 16 lanes of AVX-512F, BW and CD: the lane operations of the fragment stage (fragment_stage.h). Masks are
 // mask registers, which make partial blocks as cheap as whole ones (kCheapMasks).
 struct Avx512Lanes {
     static constexpr int kCount = 16;
     static constexpr bool kCheapMasks = true;
     static constexpr bool kNarrowBlocks = true;   // narrow triangles in 2D blocks of lanes
     static constexpr bool kTwoRowBlocks = false;  // keys with a level of detail take the AVX2 paths
+    static constexpr bool kPackedBlocks = true;   // tiny triangles' fragments packed into one block
     static constexpr std::string_view kName = "avx512";
     using Float = __m512;
     using Int = __m512i;
@@ -130,6 +131,21 @@ struct Avx512Lanes {
     // The lanes of `m` read at base[offsets[i]], the others zero.
     static Int gather(const std::uint32_t* base, Int offsets, Mask m) {
         return _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), m, offsets, base, 4);
+    }
+    // v's lanes of `m` written at base[offsets[i]].
+    static void scatter(std::uint32_t* base, Int offsets, Mask m, Int v) {
+        _mm512_mask_i32scatter_epi32(base, m, offsets, v, 4);
+    }
+    // The lanes `from` of `values`, in order, from lane 0; and `into` with such lanes in its
+    // lanes `at` (as many). In registers: their memory forms are slow on Zen 4.
+    static Int compress(Int values, Mask from) { return _mm512_maskz_compress_epi32(from, values); }
+    static Int placeLanes(Int into, Mask at, Int compressed) { return _mm512_mask_expand_epi32(into, at, compressed); }
+    // Whether a lane of `later` holds the value of a lane of `earlier`, all of whose lanes lie
+    // below those of `later` (AVX-512CD's conflict detection: lane i's bits are the lanes below
+    // it of equal value).
+    static bool repeatsAny(Int values, Mask earlier, Mask later) {
+        const Int conflicts = _mm512_maskz_conflict_epi32(later, values);
+        return _mm512_mask_test_epi32_mask(later, conflicts, _mm512_set1_epi32(earlier)) != 0;
     }
 };
 

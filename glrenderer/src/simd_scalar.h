@@ -18,6 +18,7 @@ struct ScalarLanes {
     static constexpr bool kCheapMasks = true;
     static constexpr bool kNarrowBlocks = false;  // a block of one lane is a span
     static constexpr bool kTwoRowBlocks = false;
+    static constexpr bool kPackedBlocks = false;
     static constexpr std::string_view kName = "scalar";
     using Float = float;
     using Int = std::uint32_t;

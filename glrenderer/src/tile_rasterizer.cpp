@@ -6,6 +6,7 @@
 #include "thread_count.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #if defined(__x86_64__)
@@ -54,25 +55,19 @@ void finishStreaming() {
 #endif
 }
 
-// The lines every triangle uses (RasterTriangle's first fields): fetching the rest too read
-// lines that most keys never touch, a third of a dense mesh's triangle records.
-void prefetch(const RasterTriangle& triangle) {
-    const char* bytes = reinterpret_cast<const char*>(&triangle);
-    for (std::size_t line = 0; line < kCommonTriangleBytes; line += 64) __builtin_prefetch(bytes + line);
-}
-
-// The tile's entries in order, each triangle's record fetched a few ahead: a tile's triangles
-// lie scattered over the queue, usually far out of cache.
+// The tile's entries in order, each triangle's record fetched a few ahead.
 template <class Entry, class Draw>
 void forEachFetchingAhead(std::span<const Entry> entries, Draw&& draw) {
-    constexpr std::size_t kAhead = 4;
     for (std::size_t i = 0; i < entries.size(); ++i) {
-        if (i + kAhead < entries.size()) {
-            if (const RasterTriangle* ahead = entries[i + kAhead].triangle()) prefetch(*ahead);
+        if (i + kFetchAhead < entries.size()) {
+            if (const RasterTriangle* ahead = entries[i + kFetchAhead].triangle()) prefetchCommonLines(*ahead);
         }
         draw(entries[i]);
     }
 }
+
+// The longest run of triangles drawInOrder passes to a routine that packs them.
+constexpr std::size_t kPackedRun = 32;
 
 // Deferred shading pays where the triangles that defer their colour cover a tile this many
 // times over, counting their bounds (about twice their area).
@@ -136,7 +131,8 @@ void TileRasterizer::bin(const RasterTriangle& triangle) {
     const bool defersColor = triangle.method == RasterMethod::Exact && triangle.fragment.routine->shade;
     const int firstX = triangle.minX >> shift, lastX = triangle.maxX >> shift;
     const int firstY = triangle.minY >> shift, lastY = triangle.maxY >> shift;
-    binInto(BinEntry(&triangle, defersColor), firstX, lastX, firstY, lastY);
+    const bool packs = triangle.method == RasterMethod::Exact && triangle.fragment.routine->packed;
+    binInto(BinEntry(&triangle, defersColor, packs), firstX, lastX, firstY, lastY);
     if (!defersColor) return;
     // The triangle's bounds in each tile, for drawTile's choice (here, where they are in cache).
     const int size = tileSize();
@@ -201,12 +197,30 @@ void TileRasterizer::clearTile(std::size_t tile, const PixelRect& rect, bool dra
 }
 
 void TileRasterizer::drawInOrder(std::span<const BinEntry> entries, const PixelRect& rect, FragmentCounts& counts) {
-    forEachFetchingAhead(entries, [&](const BinEntry& entry) {
-        if (const RasterTriangle* triangle = entry.triangle())
-            rasterizeWithMethod(*triangle, rect, framebuffer_, counts);
-        else
-            entry.other().draw(rect, framebuffer_, counts);
-    });
+    std::array<const RasterTriangle*, kPackedRun> run;
+    for (std::size_t i = 0; i < entries.size();) {
+        if (!entries[i].packs()) {
+            if (i + kFetchAhead < entries.size()) {
+                if (const RasterTriangle* ahead = entries[i + kFetchAhead].triangle()) prefetchCommonLines(*ahead);
+            }
+            if (const RasterTriangle* triangle = entries[i].triangle())
+                rasterizeWithMethod(*triangle, rect, framebuffer_, counts);
+            else
+                entries[i].other().draw(rect, framebuffer_, counts);
+            ++i;
+            continue;
+        }
+        // Consecutive triangles whose routines pack tiny ones go to them together, up to a run's
+        // length. The routines fetch the records
+        // ahead as they draw (fetched here, all at once, they stalled on the cache's misses).
+        std::size_t length = 0;
+        for (; i < entries.size() && entries[i].packs() && length < kPackedRun; ++i) {
+            run[length] = entries[i].triangle();
+            if (length < kPackedFetchAhead) prefetchCommonLines(*run[length]);
+            ++length;
+        }
+        rasterizePackedRun(std::span(run.data(), length), rect, framebuffer_, counts);
+    }
 }
 
 void TileRasterizer::drawDeferred(std::span<const BinEntry> run, const PixelRect& rect, FragmentCounts& counts) {

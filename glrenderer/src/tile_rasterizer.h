@@ -71,18 +71,20 @@ private:
     public:
         // `defersColor`: the triangle's routine has deferred shading's passes, kept here so that
         // finding a tile's runs reads no record (a pass over them stalled a mesh's tiles).
-        BinEntry(const RasterTriangle* triangle, bool defersColor)
-            : bits_(reinterpret_cast<std::uintptr_t>(triangle) | (defersColor ? kDefers : 0)) {}
+        // `packs`: its routine packs tiny triangles (FragmentRoutine::packed), likewise.
+        BinEntry(const RasterTriangle* triangle, bool defersColor, bool packs)
+            : bits_(reinterpret_cast<std::uintptr_t>(triangle) | (defersColor ? kDefers : 0) | (packs ? kPacks : 0)) {}
         explicit BinEntry(const TiledPrimitive* other) : bits_(reinterpret_cast<std::uintptr_t>(other) | kOther) {}
         const RasterTriangle* triangle() const {
-            return bits_ & kOther ? nullptr : reinterpret_cast<const RasterTriangle*>(bits_ & ~kDefers);
+            return bits_ & kOther ? nullptr : reinterpret_cast<const RasterTriangle*>(bits_ & ~(kDefers | kPacks));
         }
         const TiledPrimitive& other() const { return *reinterpret_cast<const TiledPrimitive*>(bits_ & ~kOther); }
         bool defersColor() const { return (bits_ & kDefers) != 0; }
+        bool packs() const { return (bits_ & kPacks) != 0; }
         float meanDepth() const { return triangle() ? triangle()->meanDepth() : other().meanDepth; }
 
     private:
-        static constexpr std::uintptr_t kOther = 1, kDefers = 2;
+        static constexpr std::uintptr_t kOther = 1, kDefers = 2, kPacks = 4;
         std::uintptr_t bits_;
     };
 

@@ -13,6 +13,32 @@ namespace glrenderer {
 inline constexpr std::size_t kCommonTriangleBytes =
     offsetof(RasterTriangle, fragment) + offsetof(FragmentInputs, secondaryColor);
 
+// The bytes of a triangle record that the routine of `key` reads: the common ones, and those of
+// the secondary colour, the fog and the texture after them where the key has them.
+constexpr std::size_t triangleBytesRead(const FragmentKey& key) {
+    constexpr std::size_t inputs = offsetof(RasterTriangle, fragment);
+    if (key.texturesColor()) return inputs + offsetof(FragmentInputs, textureBorderColor) + sizeof(glm::vec4);
+    if (key.fog != FogMode::Off) return inputs + offsetof(FragmentInputs, fog) + sizeof(FogState);
+    if (key.colorSum) return inputs + offsetof(FragmentInputs, fog);
+    return kCommonTriangleBytes;
+}
+
+// Fetches a record's first `count` bytes into the cache, ahead of drawing it.
+inline void prefetchTriangle(const RasterTriangle& triangle, std::size_t count) {
+    const char* bytes = reinterpret_cast<const char*>(&triangle);
+    for (std::size_t line = 0; line < count; line += 64) __builtin_prefetch(bytes + line);
+}
+// The lines every triangle uses: fetching the rest too read lines that most keys never touch,
+// a third of a dense mesh's triangle records.
+inline void prefetchCommonLines(const RasterTriangle& triangle) { prefetchTriangle(triangle, kCommonTriangleBytes); }
+
+// How many triangles ahead of drawing a tile's records are fetched: a tile's triangles lie
+// scattered over the queue, usually far out of cache.
+inline constexpr std::size_t kFetchAhead = 4;
+// The same where tiny triangles are packed (FragmentRoutine::packed): further, as packing one
+// takes less time than its block took.
+inline constexpr std::size_t kPackedFetchAhead = 24;
+
 // Where set-up triangles go: a slot to prepare the next one in place, and keep() if it is to be
 // drawn (an unkept slot is offered again).
 class TriangleTarget {

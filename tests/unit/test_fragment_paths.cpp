@@ -470,3 +470,129 @@ TEST(FragmentPaths, NarrowAreasMatchThePerPixelReferenceInEveryPath) {
     }
     EXPECT_GT(fragments, 20000u);  // the areas reach covered pixels
 }
+
+namespace {
+
+// The draw states of the keys whose fast paths pack tiny triangles (FragmentRoutine::packed) and
+// of some that do not: the depth test under GL_LESS and GL_LEQUAL (ties between a triangle and
+// its copy), none, smooth and flat, linear fog, blending without depth writes, polygon offset,
+// textures of `texture` with a level of detail (with fog: bench-fog-textured-terrain's) or
+// without.
+std::vector<DrawState> tinyTriangleStates(std::mt19937& random, const std::shared_ptr<const Texture>& texture) {
+    std::vector<DrawState> states;
+    for (const CompareFunc func : {CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Always}) {
+        for (const ShadeModel shading : {ShadeModel::Smooth, ShadeModel::Flat}) {
+            DrawState state;
+            state.depthTest = func != CompareFunc::Always;
+            state.depthFunc = func;
+            state.shadeModel = shading;
+            states.push_back(state);
+        }
+    }
+    DrawState fogged = states.front();
+    fogged.fog = makeFogState(FogMode::Linear, FogDistance::OwnDotProduct, 1.0f, 2.0f, 25.0f, {0.5f, 0.6f, 0.7f, 1.0f});
+    states.push_back(fogged);
+    states.push_back(fogged);  // twice: a third of the runs alternate its fog colour
+    DrawState blended = states.front();
+    blended.depthWrite = false;
+    blended.fragmentOps.blend = true;
+    blended.fragmentOps.blendSrc = BlendFactor::SrcAlpha, blended.fragmentOps.blendDst = BlendFactor::OneMinusSrcAlpha;
+    states.push_back(blended);
+    DrawState offset = states.front();
+    offset.polygonOffset = {1.5f, -3.0f, true, false, false};
+    states.push_back(offset);
+    DrawState textured = fogged;
+    textured.texture.env = TextureEnv::Modulate;
+    textured.texture.base = TextureBase::Rgb;
+    textured.texture.minFilter = textured.texture.magFilter = TextureFilter::Linear;
+    textured.texture.mipFilter = MipmapFilter::Linear;
+    textured.texture.texture = texture;
+    states.insert(states.end(), {textured, textured});  // twice, as the fog
+    textured.fog = {};
+    textured.texture.base = TextureBase::Rgba;
+    textured.texture.minFilter = textured.texture.magFilter = TextureFilter::Nearest;
+    textured.texture.mipFilter = MipmapFilter::None;
+    states.push_back(textured);
+    std::shuffle(states.begin(), states.end(), random);
+    return states;
+}
+
+}  // namespace
+
+// Runs of tiny triangles as a dense mesh's, folded over one another (the same pixel many times
+// in a run, triangles repeated exactly: depth ties), each with its own colours, depths and flat
+// colour, a few larger ones among them, in one state or alternating between two fog colours
+// (other draw constants of one key: the packing stops there), cut to a tile:
+// the runs of the paths that pack them into shared blocks against per-pixel coverage, triangle
+// after triangle.
+TEST(FragmentPaths, PackedRunsOfTinyTrianglesMatchThePerPixelReference) {
+    std::mt19937 random(12);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f), region(-6.0f, 6.0f);
+    std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1), fifth(0, 4);
+    const std::vector<std::uint32_t> color(kWidth * kHeight, 0x80808080u);
+    const auto texture = std::make_shared<const Texture>(randomTexture(random, 16, 16));
+    const std::vector<DrawState> states = tinyTriangleStates(random, texture);
+    int packedRuns = 0;
+    for (int i = 0; i < 900; ++i) {
+        constexpr int kTriangles = 40;
+        std::vector<WindowVertex> vertices;
+        std::vector<glm::vec4> flatColors;
+        for (int k = 0; k < kTriangles; ++k) {
+            const WindowVertex center = randomVertex(random, 1.0f);
+            const float size = fifth(random) == 0 ? 8.0f : 1.6f;
+            const float x = center.x + region(random), y = center.y + region(random);
+            for (int corner = 0; corner < 3; ++corner) {
+                WindowVertex v = randomVertex(random, 1.0f);
+                v.x = x + size * unit(random), v.y = y + size * unit(random);
+                vertices.push_back(v);
+            }
+            flatColors.push_back(vertices.back().color);
+            if (fifth(random) == 0 && k + 1 < kTriangles) {  // the same triangle again
+                for (int corner = 0; corner < 3; ++corner) vertices.push_back(vertices[vertices.size() - 3]);
+                flatColors.push_back(flatColors.back());
+                ++k;
+            }
+        }
+        const DrawState& first = states[static_cast<std::size_t>(i) % states.size()];
+        DrawState second = first;
+        second.fog.color = {0.1f, 0.2f, 0.3f, 1.0f};
+        const bool alternate = i % 3 == 0;
+        const int x0 = column(random), y0 = row(random);
+        const PixelRect rect = i % 2 ? PixelRect{0, kWidth - 1, 0, kHeight - 1}
+                                     : PixelRect{std::max(0, x0 - 32), std::min(kWidth - 1, x0 + 31),
+                                                 std::max(0, y0 - 32), std::min(kHeight - 1, y0 + 31)};
+        const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
+        for (const FragmentPaths* paths : pathsOfThisCpu()) {
+            const FragmentChoice choices[2] = {{*paths, triangleFragmentKey(first, Methods{}), first},
+                                               {*paths, triangleFragmentKey(second, Methods{}), second}};
+            std::vector<RasterTriangle> triangles(kTriangles);
+            std::vector<const RasterTriangle*> run;
+            for (int k = 0; k < kTriangles; ++k) {
+                const WindowVertex* v = &vertices[static_cast<std::size_t>(3 * k)];
+                SetupTriangle setup{{&v[0], &v[1], &v[2]}, {snap(v[0]), snap(v[1]), snap(v[2])}, 0, &flatColors[k]};
+                setup.area = fixedArea(setup.fixed[0], setup.fixed[1], setup.fixed[2]);
+                if (setup.area == 0) continue;
+                const FragmentChoice& choice = choices[alternate ? k % 2 : 0];
+                if (prepareTriangle(setup, choice, RasterMethod::Exact, {0, kWidth - 1, 0, kHeight - 1},
+                                    triangles[static_cast<std::size_t>(k)])) {
+                    run.push_back(&triangles[static_cast<std::size_t>(k)]);
+                }
+            }
+            if (run.empty() || !std::all_of(run.begin(), run.end(), [](const RasterTriangle* t) {
+                    return t->fragment.routine->packed != nullptr;
+                })) {
+                continue;
+            }
+            Target expected(color, depth), actual(color, depth);
+            for (const RasterTriangle* t : run) rasterizeTriangleExact(*t, rect, expected.framebuffer, expected.counts);
+            rasterizePackedRun(run, rect, actual.framebuffer, actual.counts);
+            ASSERT_TRUE(same(expected, actual))
+                << paths->name() << " key " << describe(run.front()->fragment.key) << " run " << i;
+            ++packedRuns;
+        }
+    }
+    // Runs of every state but polygon offset's (no fast path), where the CPU has AVX-512.
+    if (cpuHasAvx512()) {
+        EXPECT_GT(packedRuns, 800);
+    }
+}
