@@ -1,5 +1,6 @@
 #pragma once
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <memory>
@@ -57,7 +58,12 @@ private:
     // free ones reused last in, first out.
     std::vector<std::unique_ptr<BatchChunk>> posted_, free_;
     bool drawing_ = false;  // the drawer is in use, by the thread or by wait()'s caller
-    bool waiting_ = false;  // someone is in wait()
+    // What a thread about to wait spins on first (spinUntil): copies of the state above, and a
+    // count of posts.
+    static constexpr std::chrono::microseconds kSpinBudget{100};
+    std::atomic<bool> busy_{false};  // drawPosted() runs
+    std::atomic<std::size_t> freeChunks_{0}, posts_{0};
+    std::atomic<bool> waiting_{false};  // someone is in wait()
     bool stopping_ = false;
     const BatchChunk* settingUp_ = nullptr;  // queued, being set up by wait()'s caller
     std::atomic<bool> needed_{false};        // a chunk was posted or someone waits: stop drawing tiles

@@ -134,16 +134,15 @@ public:
 
     // The vertex emit() would push for element i, the current attributes left as they are.
     void fill(const Context::State& s, std::size_t i, glrenderer::Vertex& out) const {
-        out.position = vertex_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
-        out.texCoord = texCoord_.size ? texCoord_.read(i, {0.0f, 0.0f, 0.0f, 1.0f}) : s.texCoord;
-        out.normal = normal_.size ? glm::vec3(normal_.read(i, {})) : s.normal;
-        out.edgeFlag = s.edgeFlag;
-        if (!color_.size) {
-            out.color = s.lightingEnabled ? s.color : s.vertexColor;
-            return;
+        const glm::vec4 texCoord = texCoord_.size ? texCoord_.read(i, {0.0f, 0.0f, 0.0f, 1.0f}) : s.texCoord;
+        const glm::vec3 normal = normal_.size ? glm::vec3(normal_.read(i, {})) : s.normal;
+        glm::vec4 color = s.lightingEnabled ? s.color : s.vertexColor;
+        if (color_.size) {
+            const glm::vec4 c = colorBytes_ ? colorFromBytes(i) : color_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
+            color = s.lightingEnabled ? c : saturate(c);  // lit unclamped by the pipeline (pushVertex)
         }
-        const glm::vec4 c = colorBytes_ ? colorFromBytes(i) : color_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
-        out.color = s.lightingEnabled ? c : saturate(c);  // lit unclamped by the pipeline (pushVertex)
+        glrenderer::writeVertex(out, vertex_.read(i, {0.0f, 0.0f, 0.0f, 1.0f}), color, normal, texCoord, s.edgeFlag,
+                                s.pipeline.streamsVertices());
     }
     bool hasColors() const { return color_.size > 0; }
 

@@ -38,14 +38,10 @@ void lightVertex(Context::State& s, glrenderer::Vertex& v, glrenderer::LightingO
     // Lit colours come from the current colour unclamped: lit by the pipeline's vertex stage, or
     // here after glMaterial inside glBegin/glEnd. Unlit, a colour the vertex format does not hold
     // is the reference's constant (a NaN component 0).
-    // (Field by field: a whole Vertex built on the stack first was copied with store-forwarding stalls.)
-    v.position = object;
-    v.color = s.lightingEnabled            ? s.color
-              : s.pipeline.colorInFormat() ? s.vertexColor
-                                           : glrenderer::saturateConstant(s.color);
-    v.normal = s.normal;
-    v.texCoord = s.texCoord;
-    v.edgeFlag = s.edgeFlag;
+    const glm::vec4 color = s.lightingEnabled            ? s.color
+                            : s.pipeline.colorInFormat() ? s.vertexColor
+                                                         : glrenderer::saturateConstant(s.color);
+    glrenderer::writeVertex(v, object, color, s.normal, s.texCoord, s.edgeFlag, s.pipeline.streamsVertices());
     if (s.lightingEnabled && s.lightingOnProgramThread) lightVertex(s, v, &s.pipeline.outputsOfLastVertex());
 }
 [[gnu::always_inline]] inline void addVertex(const glm::vec4& object, int size) {

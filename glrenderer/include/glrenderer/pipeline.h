@@ -61,6 +61,8 @@ public:
     // `state` as the pipeline draws with it, as an interned object for beginPrimitive (see
     // StateInterner): a caller keeps it until its state changes.
     StateRef intern(const DrawState& state);
+    // Whether vertices are to be written with streaming stores (writeVertex): a batch thread reads them.
+    bool streamsVertices() const { return thread_ != nullptr; }
     // A new vertex of the open primitive, to be filled in place, whole (it is not initialized).
     [[gnu::always_inline]] Vertex& addVertex() {
         if (cuttable_ && openCount() == kPartVertices) [[unlikely]]
