@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "backends.h"
+#include "samples_passed.h"
 
 using testing_support::clearedPerspectiveView;
 using testing_support::Frame;
@@ -149,18 +150,6 @@ TEST(PackedTriangles, TexturedMeshesWithALevelOfDetailMatchTheReference) {
     }
 }
 
-namespace {
-
-// Occlusion queries are GL 1.5 (as in test_stats.cpp): fetched from OSMesa by name.
-constexpr GLenum kSamplesPassed = 0x8914;
-constexpr GLenum kQueryResult = 0x8866;
-using GenQueries = void(GLAD_API_PTR*)(GLsizei, GLuint*);
-using BeginQuery = void(GLAD_API_PTR*)(GLenum, GLuint);
-using EndQuery = void(GLAD_API_PTR*)(GLenum);
-using GetQueryObjectuiv = void(GLAD_API_PTR*)(GLuint, GLenum, GLuint*);
-
-}  // namespace
-
 // The fragments that pass the depth test in each of the two draws (the second's ties fail under
 // GL_LESS): MyGL's count against OSMesa's samples passed.
 TEST(PackedTriangles, FragmentsPassedMatchOcclusionQueries) {
@@ -168,23 +157,10 @@ TEST(PackedTriangles, FragmentsPassedMatchOcclusionQueries) {
     {
         reference::OsmesaContext context(kWidth, kHeight);
         context.makeCurrent();
-        const auto genQueries = reinterpret_cast<GenQueries>(reference::OsmesaContext::getProcAddress("glGenQueries"));
-        const auto beginQuery = reinterpret_cast<BeginQuery>(reference::OsmesaContext::getProcAddress("glBeginQuery"));
-        const auto endQuery = reinterpret_cast<EndQuery>(reference::OsmesaContext::getProcAddress("glEndQuery"));
-        const auto queryResult =
-            reinterpret_cast<GetQueryObjectuiv>(reference::OsmesaContext::getProcAddress("glGetQueryObjectuiv"));
-        ASSERT_TRUE(genQueries && beginQuery && endQuery && queryResult);
-        GLuint query = 0;
-        genQueries(1, &query);
+        testing_support::SamplesPassedQuery query;
+        ASSERT_TRUE(query.available());
         clearedPerspectiveView(3.0f);
-        for (const float shade : {1.0f, 0.5f}) {
-            beginQuery(kSamplesPassed, query);
-            foldedMesh(shade);
-            endQuery(kSamplesPassed);
-            GLuint samples = 0;
-            queryResult(query, kQueryResult, &samples);
-            theirs.push_back(samples);
-        }
+        for (const float shade : {1.0f, 0.5f}) theirs.push_back(query.samplesPassed([&] { foldedMesh(shade); }));
     }
     std::vector<GLuint> ours;
     {

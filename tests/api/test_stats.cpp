@@ -7,17 +7,9 @@
 #include <vector>
 
 #include "backends.h"
+#include "samples_passed.h"
 
 namespace {
-
-// Occlusion queries are GL 1.5; the project's loader is generated for 1.1, so the test fetches
-// them from OSMesa by name with their spec signatures.
-constexpr GLenum kSamplesPassed = 0x8914;
-constexpr GLenum kQueryResult = 0x8866;
-using GenQueries = void(GLAD_API_PTR*)(GLsizei, GLuint*);
-using BeginQuery = void(GLAD_API_PTR*)(GLenum, GLuint);
-using EndQuery = void(GLAD_API_PTR*)(GLenum);
-using GetQueryObjectuiv = void(GLAD_API_PTR*)(GLuint, GLenum, GLuint*);
 
 struct Triangle {
     float v[3][4];
@@ -67,25 +59,10 @@ TEST(StatsCrossCheck, TrianglesThatProduceFragmentsMatchOcclusionQueries) {
         {
             reference::OsmesaContext context(64, 64);
             context.makeCurrent();
-            const auto genQueries =
-                reinterpret_cast<GenQueries>(reference::OsmesaContext::getProcAddress("glGenQueries"));
-            const auto beginQuery =
-                reinterpret_cast<BeginQuery>(reference::OsmesaContext::getProcAddress("glBeginQuery"));
-            const auto endQuery = reinterpret_cast<EndQuery>(reference::OsmesaContext::getProcAddress("glEndQuery"));
-            const auto queryResult =
-                reinterpret_cast<GetQueryObjectuiv>(reference::OsmesaContext::getProcAddress("glGetQueryObjectuiv"));
-            ASSERT_TRUE(genQueries && beginQuery && endQuery && queryResult);
-            GLuint query = 0;
-            genQueries(1, &query);
+            testing_support::SamplesPassedQuery query;
+            ASSERT_TRUE(query.available());
             setCulling(cull);
-            for (const Triangle& t : triangles) {
-                beginQuery(kSamplesPassed, query);
-                drawTriangle(t);
-                endQuery(kSamplesPassed);
-                GLuint samples = 0;
-                queryResult(query, kQueryResult, &samples);
-                theirs.push_back(samples > 0);
-            }
+            for (const Triangle& t : triangles) theirs.push_back(query.samplesPassed([&] { drawTriangle(t); }) > 0);
         }
         {
             mygl::Context context(64, 64);
