@@ -15,6 +15,7 @@
 #include "packed_triangles.h"
 #include "raster_span.h"
 #include "raster_triangle.h"
+#include "tile_columns.h"
 
 namespace glrenderer {
 
@@ -37,7 +38,8 @@ template <class L>
     for (int px = first; px <= end; px += L::kCount) {
         const typename L::Mask covered = L::lanesBetween(begin - px, end - px);
         const typename L::Float x = L::toFloat(L::add(L::ints(px), L::laneIndex()));
-        const RowBlock<L> block(rowStart + px, px >= begin && px + L::kCount - 1 <= end);
+        const bool whole = (px >= begin && px + L::kCount - 1 <= end) || blockInOneTile(px, L::kCount, fb.width());
+        const RowBlock<L> block(rowStart + px, whole);
         passed += L::count(shadeBlock<L>(key, lanes, x, y, covered, block, buffers));
     }
     counts.fragments += static_cast<std::uint64_t>(end - begin + 1);

@@ -158,7 +158,8 @@ private:
 };
 
 // Lanes on consecutive pixels of a row: lane i is pixel first + i of the buffers. A whole
-// block (every lane inside the span) uses plain loads and stores where masked ones are slow.
+// block (every lane inside the span, or the block inside the tile: blockInOneTile) uses plain
+// loads and stores where masked ones are slow.
 template <class L>
 class RowBlock {
 public:
