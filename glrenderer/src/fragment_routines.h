@@ -247,6 +247,17 @@ template <class L>
     return true;
 }
 
+// The rows of an area up to NarrowRows' columns wide.
+template <class L, int Columns>
+[[gnu::always_inline]] inline void shadeNarrowRows(const FragmentKey& key, const FragmentLanes<L>& lanes,
+                                                   NarrowRows<Columns> rows, const PixelRect& area, Framebuffer& fb,
+                                                   FragmentCounts& counts) {
+    for (int row = area.minY; row <= area.maxY; ++row) {
+        const Span span = rows.next();
+        if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
+    }
+}
+
 // The rows of a triangle's part in `area` (FragmentRoutine::Rows).
 template <class L>
 [[gnu::always_inline]] inline void shadeRows(const FragmentKey& key, const RasterTriangle& t, const PixelRect& area,
@@ -260,13 +271,11 @@ template <class L>
     }
     // (Widths with narrow blocks draw such areas in them: measured slower with this walk too.)
     if constexpr (!L::kNarrowBlocks) {
-        if (!coveredWhole && area.maxX - area.minX < NarrowRows::kMaxColumns) {
-            NarrowRows rows(t, area.minX, area.maxX, area.minY);
-            for (int row = area.minY; row <= area.maxY; ++row) {
-                const Span span = rows.next();
-                if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
-            }
-            return;
+        if (!coveredWhole && area.maxX - area.minX < NarrowRows<8>::kMaxColumns) {
+            if (area.maxX - area.minX < NarrowRows<4>::kMaxColumns)
+                return shadeNarrowRows<L>(key, lanes, NarrowRows<4>(t, area.minX, area.maxX, area.minY), area, fb,
+                                          counts);
+            return shadeNarrowRows<L>(key, lanes, NarrowRows<8>(t, area.minX, area.maxX, area.minY), area, fb, counts);
         }
     }
     for (int row = area.minY; row <= area.maxY; ++row) {

@@ -19,13 +19,17 @@ struct Span {
 };
 Span coveredSpan(const RasterTriangle& triangle, int row, int minX, int maxX);
 
-// The covered span of each row of an area up to kMaxColumns wide, row after row: the edge
-// functions at the area's columns in 64-bit SSE lanes, stepped down a row at a time, and the
-// columns' signs taken at once (a row of a dense mesh's triangle cost a call, three evaluations
-// of the edge functions and a branch per pixel in coveredSpan).
+// The covered span of each row of an area up to `Columns` wide (4 or 8), row after row: the
+// edge functions at the area's columns in 64-bit SSE lanes, stepped down a row at a time, and
+// the columns' signs taken at once (a row of a dense mesh's triangle cost a call, three
+// evaluations of the edge functions and a branch per pixel in coveredSpan, and a row of 5-8
+// columns three 64-bit divisions there). Eight columns cost twice four's steps: an area four
+// wide takes NarrowRows<4>.
+template <int Columns>
 class NarrowRows {
 public:
-    static constexpr int kMaxColumns = 4;
+    static_assert(Columns == 4 || Columns == 8);
+    static constexpr int kMaxColumns = Columns;
 
     // The area's columns [minX, maxX] (at most kMaxColumns), from `row` on.
     NarrowRows(const RasterTriangle& t, int minX, int maxX, int row)
@@ -33,22 +37,21 @@ public:
         for (int k = 0; k < 3; ++k) {
             const EdgeFunction& edge = t.edges[k];
             const std::int64_t value = edge.at(minX, row);
-            first_[k] = _mm_set_epi64x(value + edge.stepX, value);  // columns 0 and 1
-            second_[k] = _mm_set_epi64x(value + 3 * edge.stepX, value + 2 * edge.stepX);
+            for (int pair = 0; pair < kPairs; ++pair) {  // columns 2 * pair and 2 * pair + 1
+                pairs_[k][pair] = _mm_set_epi64x(value + (2 * pair + 1) * edge.stepX, value + 2 * pair * edge.stepX);
+            }
             down_[k] = _mm_set1_epi64x(edge.stepY);
         }
     }
 
     // The current row's span (coveredSpan's), then the next row.
     Span next() {
-        const __m128i first = _mm_or_si128(_mm_or_si128(first_[0], first_[1]), first_[2]);
-        const __m128i second = _mm_or_si128(_mm_or_si128(second_[0], second_[1]), second_[2]);
         // Bit c set where column minX + c is outside an edge (a negative value).
-        const auto outside = static_cast<unsigned>(_mm_movemask_pd(_mm_castsi128_pd(first)) |
-                                                   _mm_movemask_pd(_mm_castsi128_pd(second)) << 2);
-        for (int k = 0; k < 3; ++k) {
-            first_[k] = _mm_add_epi64(first_[k], down_[k]);
-            second_[k] = _mm_add_epi64(second_[k], down_[k]);
+        unsigned outside = 0;
+        for (int pair = 0; pair < kPairs; ++pair) {
+            const __m128i either = _mm_or_si128(_mm_or_si128(pairs_[0][pair], pairs_[1][pair]), pairs_[2][pair]);
+            outside |= static_cast<unsigned>(_mm_movemask_pd(_mm_castsi128_pd(either))) << (2 * pair);
+            for (int k = 0; k < 3; ++k) pairs_[k][pair] = _mm_add_epi64(pairs_[k][pair], down_[k]);
         }
         const unsigned covered = ~outside & columnBits_;
         // A row's covered pixels are contiguous.
@@ -57,9 +60,10 @@ public:
     }
 
 private:
+    static constexpr int kPairs = Columns / 2;
     int minX_;
     unsigned columnBits_;
-    __m128i first_[3], second_[3], down_[3];
+    __m128i pairs_[3][kPairs], down_[3];
 };
 
 // Whether a triangle's edge values fit 32-bit lanes over `area` (the narrow blocks of

@@ -28,6 +28,20 @@ Span pixelSpan(const RasterTriangle& t, int row, int minX, int maxX) {
     return span;
 }
 
+// NarrowRows<Columns> down 10 rows of the area [minX, maxX] from `top`. Returns the rows walked.
+template <int Columns>
+int expectRowsMatchPixelTests(const RasterTriangle& t, int minX, int maxX, int top) {
+    NarrowRows<Columns> rows(t, minX, maxX, top);
+    for (int row = top; row < top + 10; ++row) {
+        const Span expected = pixelSpan(t, row, minX, maxX), span = rows.next();
+        EXPECT_TRUE(expected.begin > expected.end ? span.begin > span.end
+                                                  : span.begin == expected.begin && span.end == expected.end)
+            << "NarrowRows<" << Columns << "> row " << row << " [" << minX << ", " << maxX << "] gives [" << span.begin
+            << ", " << span.end << "], pixels [" << expected.begin << ", " << expected.end << "]";
+    }
+    return 10;
+}
+
 // Triangles with vertices up to `reach` fixed-point units (1/256 pixel) from a center up to
 // `reach` from the origin, in either winding; rows and areas around them.
 void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
@@ -51,15 +65,10 @@ void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
         for (int j = 0; j < 4; ++j) {
             const FixedPoint& corner = p[static_cast<std::size_t>(j % 3)];
             const int minX = pixelNear(corner.x) - pick(random) / 2, top = pixelNear(corner.y) - 3;
-            const int maxX = minX + pick(random) % NarrowRows::kMaxColumns;
-            NarrowRows rows(t, minX, maxX, top);
-            for (int row = top; row < top + 10; ++row) {
-                const Span expected = pixelSpan(t, row, minX, maxX), span = rows.next();
-                ++walked;
-                EXPECT_TRUE(expected.begin > expected.end ? span.begin > span.end
-                                                          : span.begin == expected.begin && span.end == expected.end)
-                    << "NarrowRows row " << row << " [" << minX << ", " << maxX << "] gives [" << span.begin << ", "
-                    << span.end << "], pixels [" << expected.begin << ", " << expected.end << "]";
+            if (j % 2 == 0) {
+                walked += expectRowsMatchPixelTests<4>(t, minX, minX + pick(random) % 4, top);
+            } else {
+                walked += expectRowsMatchPixelTests<8>(t, minX, minX + pick(random) % 8, top);
             }
         }
         for (int j = 0; j < 24; ++j) {
