@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -151,9 +152,13 @@ template <class L>
     const Mask rowLanes[2] = {L::lanesBetween(0, kColumns - 1), L::lanesBetween(kColumns, L::kCount - 1)};
     const Mask allLanes = L::lanesBetween(0, L::kCount - 1);
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
+    std::optional<SteppedRows> rows;  // called for each row of the area in order
+    if (!coveredWhole && area.maxY - area.minY + 1 >= SteppedRows::kMinRows)
+        rows.emplace(t, area.minX, area.maxX, area.minY);
     const auto spanOf = [&](int row) {
         if (row < area.minY || row > area.maxY) return Span{1, 0};
-        return coveredWhole ? Span{area.minX, area.maxX} : coveredSpan(t, row, area.minX, area.maxX);
+        if (coveredWhole) return Span{area.minX, area.maxX};
+        return rows ? rows->next() : coveredSpan(t, row, area.minX, area.maxX);
     };
     std::uint64_t fragments = 0, passed = 0;
     for (int top = area.minY & ~1; top <= area.maxY; top += 2) {
@@ -247,11 +252,10 @@ template <class L>
     return true;
 }
 
-// The rows of an area up to NarrowRows' columns wide.
-template <class L, int Columns>
-[[gnu::always_inline]] inline void shadeNarrowRows(const FragmentKey& key, const FragmentLanes<L>& lanes,
-                                                   NarrowRows<Columns> rows, const PixelRect& area, Framebuffer& fb,
-                                                   FragmentCounts& counts) {
+// The rows of an area, their spans from `rows` (NarrowRows, SteppedRows).
+template <class L, class Rows>
+[[gnu::always_inline]] inline void shadeWalkedRows(const FragmentKey& key, const FragmentLanes<L>& lanes, Rows rows,
+                                                   const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
     for (int row = area.minY; row <= area.maxY; ++row) {
         const Span span = rows.next();
         if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
@@ -273,13 +277,20 @@ template <class L>
     if constexpr (!L::kNarrowBlocks) {
         if (!coveredWhole && area.maxX - area.minX < NarrowRows<8>::kMaxColumns) {
             if (area.maxX - area.minX < NarrowRows<4>::kMaxColumns)
-                return shadeNarrowRows<L>(key, lanes, NarrowRows<4>(t, area.minX, area.maxX, area.minY), area, fb,
+                return shadeWalkedRows<L>(key, lanes, NarrowRows<4>(t, area.minX, area.maxX, area.minY), area, fb,
                                           counts);
-            return shadeNarrowRows<L>(key, lanes, NarrowRows<8>(t, area.minX, area.maxX, area.minY), area, fb, counts);
+            return shadeWalkedRows<L>(key, lanes, NarrowRows<8>(t, area.minX, area.maxX, area.minY), area, fb, counts);
         }
     }
+    if (coveredWhole) {
+        for (int row = area.minY; row <= area.maxY; ++row)
+            shadeSpan<L>(key, lanes, row, area.minX, area.maxX, fb, counts);
+        return;
+    }
+    if (area.maxY - area.minY + 1 >= SteppedRows::kMinRows)
+        return shadeWalkedRows<L>(key, lanes, SteppedRows(t, area.minX, area.maxX, area.minY), area, fb, counts);
     for (int row = area.minY; row <= area.maxY; ++row) {
-        const Span span = coveredWhole ? Span{area.minX, area.maxX} : coveredSpan(t, row, area.minX, area.maxX);
+        const Span span = coveredSpan(t, row, area.minX, area.maxX);
         if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
     }
 }

@@ -52,6 +52,18 @@ Span dividedSpan(const RasterTriangle& t, int row, int minX, int maxX) {
 
 }  // namespace
 
+SteppedRows::SteppedRows(const RasterTriangle& t, int minX, int maxX, int row) : minX_(minX), maxX_(maxX) {
+    for (int k = 0; k < 3; ++k) {
+        const EdgeFunction& edge = t.edges[k];
+        const std::int64_t value = edge.valueAtOrigin + edge.stepY * row;
+        const std::int64_t divisor = edge.stepX == 0 ? 1 : std::abs(edge.stepX);
+        const Bound::Kind kind = edge.stepX > 0 ? Bound::Begin : edge.stepX < 0 ? Bound::End : Bound::Row;
+        const std::int64_t quotient = floorDiv(value, divisor), stepQuotient = floorDiv(edge.stepY, divisor);
+        bounds_[k] = {kind,   quotient, value - quotient * divisor, stepQuotient, edge.stepY - stepQuotient * divisor,
+                      divisor};
+    }
+}
+
 Span coveredSpan(const RasterTriangle& t, int row, int minX, int maxX) {
     const Span span = maxX - minX < kScannedColumns ? scannedSpan(t, row, minX, maxX) : dividedSpan(t, row, minX, maxX);
     // The fragment routines write the span's pixels through raw pointers: it never leaves the area.

@@ -28,6 +28,18 @@ Span pixelSpan(const RasterTriangle& t, int row, int minX, int maxX) {
     return span;
 }
 
+// SteppedRows down 40 rows of the area [minX, maxX] from `top`, against the pixel tests.
+void expectSteppedRowsMatchPixelTests(const RasterTriangle& t, int minX, int maxX, int top) {
+    SteppedRows rows(t, minX, maxX, top);
+    for (int row = top; row < top + 40; ++row) {
+        const Span expected = pixelSpan(t, row, minX, maxX), span = rows.next();
+        EXPECT_TRUE(expected.begin > expected.end ? span.begin > span.end
+                                                  : span.begin == expected.begin && span.end == expected.end)
+            << "SteppedRows row " << row << " [" << minX << ", " << maxX << "] gives [" << span.begin << ", "
+            << span.end << "], pixels [" << expected.begin << ", " << expected.end << "]";
+    }
+}
+
 // NarrowRows<Columns> down 10 rows of the area [minX, maxX] from `top`. Returns the rows walked.
 template <int Columns>
 int expectRowsMatchPixelTests(const RasterTriangle& t, int minX, int maxX, int top) {
@@ -70,6 +82,8 @@ void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
             } else {
                 walked += expectRowsMatchPixelTests<8>(t, minX, minX + pick(random) % 8, top);
             }
+            if (j == 0)
+                expectSteppedRowsMatchPixelTests(t, minX - pick(random) * 5, minX + 40 + pick(random) * 9, top - 8);
         }
         for (int j = 0; j < 24; ++j) {
             const FixedPoint& corner = p[static_cast<std::size_t>(j % 3)];
