@@ -7,7 +7,6 @@
 #include <bit>
 #include <cstdint>
 #include <cstdlib>
-#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -152,14 +151,8 @@ template <class L>
     const Mask rowLanes[2] = {L::lanesBetween(0, kColumns - 1), L::lanesBetween(kColumns, L::kCount - 1)};
     const Mask allLanes = L::lanesBetween(0, L::kCount - 1);
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
-    std::optional<SteppedRows> rows;  // called for each row of the area in order
-    if (!coveredWhole && area.maxY - area.minY + 1 >= SteppedRows::kMinRows)
-        rows.emplace(t, area.minX, area.maxX, area.minY);
-    const auto spanOf = [&](int row) {
-        if (row < area.minY || row > area.maxY) return Span{1, 0};
-        if (coveredWhole) return Span{area.minX, area.maxX};
-        return rows ? rows->next() : coveredSpan(t, row, area.minX, area.maxX);
-    };
+    AreaRows rows(t, area, coveredWhole);  // called for each row of the area in order
+    const auto spanOf = [&](int row) { return row < area.minY || row > area.maxY ? Span{1, 0} : rows.next(); };
     std::uint64_t fragments = 0, passed = 0;
     for (int top = area.minY & ~1; top <= area.maxY; top += 2) {
         const Span first = spanOf(top), second = spanOf(top + 1);
@@ -252,7 +245,7 @@ template <class L>
     return true;
 }
 
-// The rows of an area, their spans from `rows` (NarrowRows, SteppedRows).
+// The rows of an area, their spans from `rows` (NarrowRows, AreaRows).
 template <class L, class Rows>
 [[gnu::always_inline]] inline void shadeWalkedRows(const FragmentKey& key, const FragmentLanes<L>& lanes, Rows rows,
                                                    const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
@@ -282,17 +275,7 @@ template <class L>
             return shadeWalkedRows<L>(key, lanes, NarrowRows<8>(t, area.minX, area.maxX, area.minY), area, fb, counts);
         }
     }
-    if (coveredWhole) {
-        for (int row = area.minY; row <= area.maxY; ++row)
-            shadeSpan<L>(key, lanes, row, area.minX, area.maxX, fb, counts);
-        return;
-    }
-    if (area.maxY - area.minY + 1 >= SteppedRows::kMinRows)
-        return shadeWalkedRows<L>(key, lanes, SteppedRows(t, area.minX, area.maxX, area.minY), area, fb, counts);
-    for (int row = area.minY; row <= area.maxY; ++row) {
-        const Span span = coveredSpan(t, row, area.minX, area.maxX);
-        if (span.begin <= span.end) shadeSpan<L>(key, lanes, row, span.begin, span.end, fb, counts);
-    }
+    shadeWalkedRows<L>(key, lanes, AreaRows(t, area, coveredWhole), area, fb, counts);
 }
 
 // Areas up to L::kCount pixels wide, in blocks of L::kCount lanes (kCount x 1 up to 1 x kCount

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "fragment_inputs.h"
@@ -61,6 +62,33 @@ private:
     };
     std::int64_t minX_, maxX_;
     Bound bounds_[3];
+};
+
+// The covered span of each row of an area, row after row, the cheapest way: the whole row where
+// the triangle covers the area whole, SteppedRows for SteppedRows::kMinRows rows or more, else a
+// search per row (coveredSpan).
+class AreaRows {
+public:
+    AreaRows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole)
+        : triangle_(t), area_(area), row_(area.minY), coveredWhole_(coveredWhole) {
+        if (!coveredWhole && area.maxY - area.minY + 1 >= SteppedRows::kMinRows)
+            stepped_.emplace(t, area.minX, area.maxX, area.minY);
+    }
+
+    // The current row's span, then the next row.
+    Span next() {
+        const int row = row_++;
+        if (coveredWhole_) return {area_.minX, area_.maxX};
+        if (stepped_) return stepped_->next();
+        return coveredSpan(triangle_, row, area_.minX, area_.maxX);
+    }
+
+private:
+    const RasterTriangle& triangle_;
+    PixelRect area_;
+    int row_;
+    bool coveredWhole_;
+    std::optional<SteppedRows> stepped_;
 };
 
 // The covered span of each row of an area up to `Columns` wide (4 or 8), row after row: the

@@ -28,30 +28,19 @@ Span pixelSpan(const RasterTriangle& t, int row, int minX, int maxX) {
     return span;
 }
 
-// SteppedRows down 40 rows of the area [minX, maxX] from `top`, against the pixel tests.
-void expectSteppedRowsMatchPixelTests(const RasterTriangle& t, int minX, int maxX, int top) {
-    SteppedRows rows(t, minX, maxX, top);
-    for (int row = top; row < top + 40; ++row) {
+// A walk of `rows` (NarrowRows, SteppedRows) down `count` rows of the area [minX, maxX] from
+// `top`, against the pixel tests. Returns the rows walked.
+template <class Rows>
+int expectWalkMatchesPixelTests(const char* name, Rows rows, const RasterTriangle& t, int minX, int maxX, int top,
+                                int count) {
+    for (int row = top; row < top + count; ++row) {
         const Span expected = pixelSpan(t, row, minX, maxX), span = rows.next();
         EXPECT_TRUE(expected.begin > expected.end ? span.begin > span.end
                                                   : span.begin == expected.begin && span.end == expected.end)
-            << "SteppedRows row " << row << " [" << minX << ", " << maxX << "] gives [" << span.begin << ", "
-            << span.end << "], pixels [" << expected.begin << ", " << expected.end << "]";
+            << name << " row " << row << " [" << minX << ", " << maxX << "] gives [" << span.begin << ", " << span.end
+            << "], pixels [" << expected.begin << ", " << expected.end << "]";
     }
-}
-
-// NarrowRows<Columns> down 10 rows of the area [minX, maxX] from `top`. Returns the rows walked.
-template <int Columns>
-int expectRowsMatchPixelTests(const RasterTriangle& t, int minX, int maxX, int top) {
-    NarrowRows<Columns> rows(t, minX, maxX, top);
-    for (int row = top; row < top + 10; ++row) {
-        const Span expected = pixelSpan(t, row, minX, maxX), span = rows.next();
-        EXPECT_TRUE(expected.begin > expected.end ? span.begin > span.end
-                                                  : span.begin == expected.begin && span.end == expected.end)
-            << "NarrowRows<" << Columns << "> row " << row << " [" << minX << ", " << maxX << "] gives [" << span.begin
-            << ", " << span.end << "], pixels [" << expected.begin << ", " << expected.end << "]";
-    }
-    return 10;
+    return count;
 }
 
 // Triangles with vertices up to `reach` fixed-point units (1/256 pixel) from a center up to
@@ -78,12 +67,19 @@ void expectSpansMatchPixelTests(std::int64_t reach, unsigned seed) {
             const FixedPoint& corner = p[static_cast<std::size_t>(j % 3)];
             const int minX = pixelNear(corner.x) - pick(random) / 2, top = pixelNear(corner.y) - 3;
             if (j % 2 == 0) {
-                walked += expectRowsMatchPixelTests<4>(t, minX, minX + pick(random) % 4, top);
+                const int maxX = minX + pick(random) % 4;
+                walked += expectWalkMatchesPixelTests("NarrowRows<4>", NarrowRows<4>(t, minX, maxX, top), t, minX, maxX,
+                                                      top, 10);
             } else {
-                walked += expectRowsMatchPixelTests<8>(t, minX, minX + pick(random) % 8, top);
+                const int maxX = minX + pick(random) % 8;
+                walked += expectWalkMatchesPixelTests("NarrowRows<8>", NarrowRows<8>(t, minX, maxX, top), t, minX, maxX,
+                                                      top, 10);
             }
-            if (j == 0)
-                expectSteppedRowsMatchPixelTests(t, minX - pick(random) * 5, minX + 40 + pick(random) * 9, top - 8);
+            if (j == 0) {
+                const int left = minX - pick(random) * 5, right = minX + 40 + pick(random) * 9;
+                expectWalkMatchesPixelTests("SteppedRows", SteppedRows(t, left, right, top - 8), t, left, right,
+                                            top - 8, 40);
+            }
         }
         for (int j = 0; j < 24; ++j) {
             const FixedPoint& corner = p[static_cast<std::size_t>(j % 3)];
