@@ -86,7 +86,7 @@ struct FragmentKey {
     constexpr bool texturesColor() const { return textureEnv != TextureEnv::Off && texelUse == TexelUse::Color; }
 
     // Whether texturing needs a level of detail: mipmaps, or two filters to choose between.
-    constexpr bool samplesLod() const {
+    [[gnu::always_inline]] constexpr bool samplesLod() const {
         return textureEnv != TextureEnv::Off && (mipFilter != MipmapFilter::None || minFilter != magFilter);
     }
 

@@ -11,7 +11,7 @@
 namespace glrenderer {
 
 // Whether the key's texture goes through the float sampler (a 1D texture's T wrap is Repeat).
-constexpr bool samplesInFloat(const FragmentKey& key) {
+[[gnu::always_inline]] constexpr bool samplesInFloat(const FragmentKey& key) {
     return key.wrapS == TextureWrap::Clamp || key.wrapT == TextureWrap::Clamp;
 }
 

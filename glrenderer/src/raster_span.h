@@ -11,6 +11,10 @@
 #include "fragment_inputs.h"
 #include "raster_triangle.h"
 
+// The row walkers below are inlined into the fragment routines of every instruction set: each
+// member is forced inline, as every function those routines share with the scalar code must be
+// (tests/isa: an out-of-line copy compiled for AVX2 may be the one the linker keeps for all).
+
 namespace glrenderer {
 
 // The columns [begin, end] of one pixel row that a triangle covers, found exactly from its
@@ -35,7 +39,7 @@ public:
     SteppedRows(const RasterTriangle& t, int minX, int maxX, int row);
 
     // The current row's span, then the next row.
-    Span next() {
+    [[gnu::always_inline]] Span next() {
         std::int64_t begin = minX_, end = maxX_;
         bool outside = false;
         for (Bound& bound : bounds_) {
@@ -69,14 +73,14 @@ private:
 // search per row (coveredSpan).
 class AreaRows {
 public:
-    AreaRows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole)
+    [[gnu::always_inline]] AreaRows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole)
         : triangle_(t), area_(area), row_(area.minY), coveredWhole_(coveredWhole) {
         if (!coveredWhole && area.maxY - area.minY + 1 >= SteppedRows::kMinRows)
             stepped_.emplace(t, area.minX, area.maxX, area.minY);
     }
 
     // The current row's span, then the next row.
-    Span next() {
+    [[gnu::always_inline]] Span next() {
         const int row = row_++;
         if (coveredWhole_) return {area_.minX, area_.maxX};
         if (stepped_) return stepped_->next();
@@ -104,7 +108,7 @@ public:
     static constexpr int kMaxColumns = Columns;
 
     // The area's columns [minX, maxX] (at most kMaxColumns), from `row` on.
-    NarrowRows(const RasterTriangle& t, int minX, int maxX, int row)
+    [[gnu::always_inline]] NarrowRows(const RasterTriangle& t, int minX, int maxX, int row)
         : minX_(minX), columnBits_((1u << (maxX - minX + 1)) - 1) {
         for (int k = 0; k < 3; ++k) {
             const EdgeFunction& edge = t.edges[k];
@@ -117,7 +121,7 @@ public:
     }
 
     // The current row's span (coveredSpan's), then the next row.
-    Span next() {
+    [[gnu::always_inline]] Span next() {
         // Bit c set where column minX + c is outside an edge (a negative value).
         unsigned outside = 0;
         for (int pair = 0; pair < kPairs; ++pair) {
