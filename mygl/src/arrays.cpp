@@ -141,7 +141,8 @@ public:
             const glm::vec4 c = colorBytes_ ? colorFromBytes(i) : color_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
             color = s.lightingEnabled ? c : saturate(c);  // lit unclamped by the pipeline (pushVertex)
         }
-        glrenderer::writeVertex(out, vertex_.read(i, {0.0f, 0.0f, 0.0f, 1.0f}), color, normal, texCoord, s.edgeFlag,
+        const glm::vec4 position = vertex_.read(i, {0.0f, 0.0f, 0.0f, 1.0f});
+        glrenderer::writeVertex(out, _mm_loadu_ps(&position.x), color, normal, texCoord, s.edgeFlag,
                                 s.pipeline.streamsVertices());
     }
     bool hasColors() const { return color_.size > 0; }

@@ -28,11 +28,12 @@ void prepareLighting(Context::State& s);
 // glBegin/glEnd): its colour, and into `outputs` (unless null) its back and secondary colours.
 void lightVertex(Context::State& s, glrenderer::Vertex& v, glrenderer::LightingOutputs* outputs);
 
-// Inlined into each glVertex: built in registers there, the position is not stored to the stack
-// in parts and read back whole (a store-forwarding stall that was a third of this function).
+// Inlined into each glVertex, the position (x, y, z, w) in a register from the call's arguments
+// to the vertex's store: a glm::vec4 built there went to the stack in two halves and was loaded
+// whole, a store-forwarding stall that was 40% of glVertex3f's time in the torus.
 // The vertex goes to the pipeline as given; its vertex stage transforms it. `size`: glVertex2, 3 or 4.
 // `pushVertex`: the vertex with the current attributes, once the vertex format has its position.
-[[gnu::always_inline]] inline void pushVertex(Context::State& s, const glm::vec4& object) {
+[[gnu::always_inline]] inline void pushVertex(Context::State& s, __m128 object) {
     // Written whole: the pipeline's new vertex is not initialized.
     glrenderer::Vertex& v = s.pipeline.addVertex();
     // Lit colours come from the current colour unclamped: lit by the pipeline's vertex stage, or
@@ -44,18 +45,20 @@ void lightVertex(Context::State& s, glrenderer::Vertex& v, glrenderer::LightingO
     glrenderer::writeVertex(v, object, color, s.normal, s.texCoord, s.edgeFlag, s.pipeline.streamsVertices());
     if (s.lightingEnabled && s.lightingOnProgramThread) lightVertex(s, v, &s.pipeline.outputsOfLastVertex());
 }
-[[gnu::always_inline]] inline void addVertex(const glm::vec4& object, int size) {
+inline void pushVertex(Context::State& s, const glm::vec4& object) { pushVertex(s, _mm_loadu_ps(&object.x)); }
+[[gnu::always_inline]] inline void addVertex(__m128 object, int size) {
     Context::State* s = currentState();
     if (!s || !s->insideBeginEnd) return;  // outside glBegin/glEnd a vertex is undefined: ignored
     s->pipeline.attribute(glrenderer::VertexAttribute::Position, size);
     pushVertex(*s, object);
 }
+inline void addVertex(const glm::vec4& object, int size) { addVertex(_mm_loadu_ps(&object.x), size); }
 
 template <class T>
 [[gnu::always_inline]] inline void vertexv(const T* v, int n) {  // as addVertex
     if (!v) return;
-    addVertex({static_cast<float>(v[0]), static_cast<float>(v[1]), n > 2 ? static_cast<float>(v[2]) : 0.0f,
-               n > 3 ? static_cast<float>(v[3]) : 1.0f},
+    addVertex(_mm_setr_ps(static_cast<float>(v[0]), static_cast<float>(v[1]), n > 2 ? static_cast<float>(v[2]) : 0.0f,
+                          n > 3 ? static_cast<float>(v[3]) : 1.0f),
               n);
 }
 

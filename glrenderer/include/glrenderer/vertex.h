@@ -29,14 +29,16 @@ static_assert(sizeof(Vertex) == 64);
 // three quarters of the torus's program thread (frames 2.6 -> 8.5 ms; 5.2 ms streamed).
 // BatchThread::post fences them before the hand-over. (Without that thread the vertex is read
 // on this core, from its cache: streamed, it came back from memory.)
-[[gnu::always_inline]] inline void writeVertex(Vertex& out, const glm::vec4& position, const glm::vec4& color,
+// The position comes in a register (x, y, z, w): built in memory in parts and loaded whole, it
+// waited on store forwarding.
+[[gnu::always_inline]] inline void writeVertex(Vertex& out, __m128 position, const glm::vec4& color,
                                                const glm::vec3& normal, const glm::vec4& texCoord, bool edgeFlag,
                                                bool streaming) {
     const __m128 normalXY = _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&normal.x)));
     const __m128 t = _mm_loadu_ps(&texCoord.x);
     const __m128 flag = _mm_castsi128_ps(_mm_cvtsi32_si128(edgeFlag ? 1 : 0));  // the bool's byte, padding zero
     const __m128 parts[4] = {
-        _mm_loadu_ps(&position.x), _mm_loadu_ps(&color.x),
+        position, _mm_loadu_ps(&color.x),
         _mm_movelh_ps(normalXY, _mm_unpacklo_ps(_mm_load_ss(&normal.z), t)),                          // nx ny nz s
         _mm_shuffle_ps(t, _mm_shuffle_ps(t, flag, _MM_SHUFFLE(0, 0, 3, 3)), _MM_SHUFFLE(2, 0, 2, 1))  // t r q, the flag
     };
