@@ -121,6 +121,7 @@ Outcode stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewP
     const ColumnTransform toClip(modelviewProjection);
     Outcode anyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
+        if (i + kVertexFetchAhead < vertices.size()) __builtin_prefetch(&vertices[i + kVertexFetchAhead]);
         glm::vec4& clip = out.clipPositions[i];
         _mm_storeu_ps(&clip.x, toClip.apply(vertices[i].position));
         out.outcodes[i] = clipOutcode(clip);

@@ -20,10 +20,6 @@ Outcode outcodeFromLanes(int outsideMinus, int outsidePlus) {
 
 }  // namespace
 
-// The program thread streamed the vertices to memory (writeVertex): each is a cache line fetched
-// that far ahead of its transform, where the first load of each vertex waited for its line.
-constexpr std::size_t kFetchAhead = 16;
-
 Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
                          const ViewportTransform& viewport, const StagedVertices& out) {
     const ColumnTransform toClip(modelviewProjection);
@@ -32,7 +28,7 @@ Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelvi
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
     Outcode anyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
-        if (i + kFetchAhead < vertices.size()) __builtin_prefetch(&vertices[i + kFetchAhead]);
+        if (i + kVertexFetchAhead < vertices.size()) __builtin_prefetch(&vertices[i + kVertexFetchAhead]);
         const __m128 p = toClip.apply(vertices[i].position);
         _mm_storeu_ps(&out.clipPositions[i].x, p);
         const __m128 w = _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 3, 3, 3));
