@@ -155,6 +155,9 @@ public:
         VertexBlock<L> block;
         alignas(64) float lit[2][4][L::kCount], litSecondary[2][4][L::kCount];
         for (std::size_t first = 0; first < vertices.size(); first += L::kCount) {
+            const std::size_t aheadEnd = std::min(first + kVertexFetchAhead + L::kCount, vertices.size());
+            for (std::size_t ahead = first + kVertexFetchAhead; ahead < aheadEnd; ++ahead)
+                __builtin_prefetch(&vertices[ahead]);
             const std::span<Vertex> part =
                 vertices.subspan(first, std::min<std::size_t>(L::kCount, vertices.size() - first));
             block.read(part);

@@ -61,11 +61,6 @@ void lightChunk(BatchChunk& chunk);
 // ColumnTransform), clipOutcode and ViewportTransform::apply. Returns the union of the outcodes.
 // CPUs with FMA take a version that works on a vertex's four coordinates at once (without FMA,
 // apply()'s fused multiply-adds are library calls); the bits are the same.
-// The program thread streamed the vertices to memory (writeVertex): the pass fetches each one's
-// cache line this many vertices ahead of its transform (in bench-torus 42% of the pass's samples
-// waited on each vertex's first load).
-inline constexpr std::size_t kVertexFetchAhead = 16;
-
 struct StagedVertices {
     glm::vec4* clipPositions;
     Outcode* outcodes;

@@ -1,6 +1,8 @@
 #pragma once
 #include <emmintrin.h>
 
+#include <cstddef>
+
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -29,6 +31,11 @@ static_assert(sizeof(Vertex) == 64);
 // three quarters of the torus's program thread (frames 2.6 -> 8.5 ms; 5.2 ms streamed).
 // BatchThread::post fences them before the hand-over. (Without that thread the vertex is read
 // on this core, from its cache: streamed, it came back from memory.)
+// The pipeline's passes over streamed vertices (the vertex stage, lighting) fetch each one's cache
+// line this many vertices ahead: in bench-torus 42% of the vertex stage's samples, and in
+// bench-lit-torus half of lighting's reads, waited on each vertex's first load.
+inline constexpr std::size_t kVertexFetchAhead = 16;
+
 // The position comes in a register (x, y, z, w): built in memory in parts and loaded whole, it
 // waited on store forwarding.
 [[gnu::always_inline]] inline void writeVertex(Vertex& out, __m128 position, const glm::vec4& color,
