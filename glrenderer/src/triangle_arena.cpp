@@ -1,12 +1,29 @@
 #include "triangle_arena.h"
 
+#include <sys/mman.h>
+
 #include <algorithm>
+#include <cstdlib>
+#include <new>
 
 namespace glrenderer {
+TriangleArena::TriangleBlock TriangleArena::allocateBlock() {
+    void* memory = std::aligned_alloc(kBlockBytes, kBlockBytes);
+    if (!memory) throw std::bad_alloc();
+    madvise(memory, kBlockBytes, MADV_HUGEPAGE);  // a hint: without huge pages the block still works
+    auto* block = static_cast<RasterTriangle*>(memory);
+    std::uninitialized_value_construct_n(block, kBlockTriangles);
+    return TriangleBlock(block);
+}
+
+void TriangleArena::BlockDeleter::operator()(RasterTriangle* block) const {
+    std::destroy_n(block, kBlockTriangles);
+    std::free(block);
+}
 
 RasterTriangle* TriangleArena::takeBlock() {
     std::lock_guard lock(mutex_);
-    if (taken_ == blocks_.size()) blocks_.push_back(std::make_unique<RasterTriangle[]>(kBlockTriangles));
+    if (taken_ == blocks_.size()) blocks_.push_back(allocateBlock());
     return blocks_[taken_++].get();
 }
 
@@ -18,7 +35,7 @@ void TriangleArena::writerDone(std::size_t triangles) {
 void TriangleArena::reset() {
     std::lock_guard lock(mutex_);
     const std::size_t enough = std::max(taken_, (kept_ + kBlockTriangles - 1) / kBlockTriangles + 1);
-    while (blocks_.size() < enough) blocks_.push_back(std::make_unique<RasterTriangle[]>(kBlockTriangles));
+    while (blocks_.size() < enough) blocks_.push_back(allocateBlock());
     taken_ = 0;
     kept_ = 0;
 }
