@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "huge_pages.h"
+
 namespace glrenderer {
 
 Framebuffer::Framebuffer(int width, int height) { resize(width, height); }
@@ -21,8 +23,7 @@ void Framebuffer::resize(int width, int height) {
 }
 
 Framebuffer::Pixels Framebuffer::allocate(std::size_t count) {
-    Pixels pixels(
-        static_cast<std::uint32_t*>(::operator new[](count * sizeof(std::uint32_t), std::align_val_t{kAlignment})));
+    Pixels pixels(static_cast<std::uint32_t*>(allocatePages(count * sizeof(std::uint32_t), kAlignment)));
     std::fill_n(pixels.get(), count, 0u);
     return pixels;
 }

@@ -1,17 +1,14 @@
 #include "triangle_arena.h"
 
-#include <sys/mman.h>
-
 #include <algorithm>
 #include <cstdlib>
-#include <new>
+
+#include "huge_pages.h"
 
 namespace glrenderer {
+
 TriangleArena::TriangleBlock TriangleArena::allocateBlock() {
-    void* memory = std::aligned_alloc(kBlockBytes, kBlockBytes);
-    if (!memory) throw std::bad_alloc();
-    madvise(memory, kBlockBytes, MADV_HUGEPAGE);  // a hint: without huge pages the block still works
-    auto* block = static_cast<RasterTriangle*>(memory);
+    auto* block = static_cast<RasterTriangle*>(allocatePages(kBlockBytes, alignof(RasterTriangle)));
     std::uninitialized_value_construct_n(block, kBlockTriangles);
     return TriangleBlock(block);
 }

@@ -57,7 +57,7 @@ protected:
 // setup), and steady state allocates nothing.
 class TriangleArena {
 public:
-    // A block fills one 2 MiB page where the kernel grants them (allocateBlock).
+    // A block fills one huge page (huge_pages.h).
     static constexpr std::size_t kBlockBytes = std::size_t{2} << 20;
     static constexpr std::size_t kBlockTriangles = kBlockBytes / sizeof(RasterTriangle);
 
@@ -72,9 +72,7 @@ public:
 
 private:
     std::mutex mutex_;
-    // The tiles read their records in scattered order: in 4 KiB pages nearly every record's fetch
-    // missed the TLB (over half of drawInOrder's samples in bench-mesh were its prefetches). A
-    // block is allocated on a 2 MiB boundary and advised to be a huge page.
+    // Blocks from allocatePages (huge_pages.h): the tiles read their records in scattered order.
     struct BlockDeleter {
         void operator()(RasterTriangle* block) const;
     };

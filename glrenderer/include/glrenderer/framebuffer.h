@@ -1,8 +1,8 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
-#include <new>
 #include <span>
 #include <vector>
 
@@ -46,10 +46,11 @@ private:
     // Rows start on cache lines as far as the width allows, and the buffers always do: threads
     // drawing neighbouring tiles must not write the same cache line (false sharing).
     static constexpr std::size_t kAlignment = 64;
-    struct AlignedDelete {
-        void operator()(std::uint32_t* pixels) const { ::operator delete[](pixels, std::align_val_t{kAlignment}); }
+    // Each buffer in huge pages where the kernel grants them (the tiles read it a tile at a time).
+    struct FreePixels {
+        void operator()(std::uint32_t* pixels) const { std::free(pixels); }
     };
-    using Pixels = std::unique_ptr<std::uint32_t[], AlignedDelete>;
+    using Pixels = std::unique_ptr<std::uint32_t[], FreePixels>;
     static Pixels allocate(std::size_t count);
 
     int width_ = 0;
