@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "huge_pages.h"
-
 namespace glrenderer {
 
 TriangleArena::TriangleBlock TriangleArena::allocateBlock() {

@@ -4,6 +4,7 @@
 #include <mutex>
 #include <vector>
 
+#include "huge_pages.h"
 #include "raster_triangle.h"
 
 namespace glrenderer {
@@ -57,8 +58,8 @@ protected:
 // setup), and steady state allocates nothing.
 class TriangleArena {
 public:
-    // A block fills one huge page (huge_pages.h).
-    static constexpr std::size_t kBlockBytes = std::size_t{2} << 20;
+    // A block fills one huge page.
+    static constexpr std::size_t kBlockBytes = kHugePageBytes;
     static constexpr std::size_t kBlockTriangles = kBlockBytes / sizeof(RasterTriangle);
 
     // A block of kBlockTriangles slots, the taker's until reset(); any thread.

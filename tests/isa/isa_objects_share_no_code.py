@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Fails if an object of the archive compiled for an instruction-set extension (its name says
-which: _avx2, _avx512, _fma) defines a weak symbol that another object defines too.
+which: _avx2, _avx512, _fma) defines a weak function that another object defines too.
 
 Inline functions and template instances are emitted as weak symbols in every object that does not
 inline them, and the linker keeps one copy for all callers. A copy compiled with -mavx2 kept for
@@ -13,24 +13,30 @@ import subprocess
 import sys
 
 ISA_OBJECT = re.compile(r"_(avx2|avx512|fma)[^/]*\.o$")
-WEAK_TYPES = {"W", "V", "u"}  # weak function, weak object, GNU unique
+MEMBER = re.compile(r"^Symbols from .*\[(.*)\]:$")
 
 
-def weak_symbols_by_object(nm, archive):
-    listing = subprocess.run([nm, "-A", "--defined-only", archive], check=True, capture_output=True, text=True).stdout
-    symbols = {}
+def weak_functions_by_object(nm, archive):
+    """Every member of the archive, with the weak functions it defines."""
+    # Code only: weak data (constants, the personality routine's reference) runs no instruction.
+    listing = subprocess.run([nm, "--defined-only", "--format=sysv", archive], check=True, capture_output=True,
+                             text=True).stdout
+    symbols, member = {}, None
     for line in listing.splitlines():
-        fields = line.split()  # archive:member:address type name
-        if len(fields) != 3 or fields[1] not in WEAK_TYPES:
+        header = MEMBER.match(line)
+        if header:
+            member = header.group(1)
+            symbols.setdefault(member, set())
             continue
-        member = fields[0].split(":")[-2]
-        symbols.setdefault(member, set()).add(fields[2])
+        fields = [field.strip() for field in line.split("|")]  # name|value|class|type|size|line|section
+        if member and len(fields) >= 4 and fields[2] == "W" and fields[3] == "FUNC":
+            symbols[member].add(fields[0])
     return symbols
 
 
 def main():
     nm, archive = sys.argv[1:3]
-    symbols = weak_symbols_by_object(nm, archive)
+    symbols = weak_functions_by_object(nm, archive)
     isa = {member: names for member, names in symbols.items() if ISA_OBJECT.search(member)}
     if not isa:
         sys.exit(f"no object named for an instruction set in {archive}: the check checks nothing")
@@ -43,7 +49,7 @@ def main():
         demangled = subprocess.run(["c++filt", name], capture_output=True, text=True).stdout.strip() or name
         print(f"{member} and {other} both define {demangled}")
     if failures:
-        sys.exit(f"{len(failures)} weak symbols shared: force-inline them or give them internal linkage")
+        sys.exit(f"{len(failures)} weak functions shared: force-inline them or give them internal linkage")
     print(f"{len(isa)} instruction-set objects checked against {len(symbols) - len(isa)} others: nothing shared")
 
 
