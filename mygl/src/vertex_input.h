@@ -45,6 +45,7 @@ void lightVertex(Context::State& s, glrenderer::Vertex& v, glrenderer::LightingO
     glrenderer::writeVertex(v, object, color, s.normal, s.texCoord, s.edgeFlag, s.pipeline.streamsVertices());
     if (s.lightingEnabled && s.lightingOnProgramThread) lightVertex(s, v, &s.pipeline.outputsOfLastVertex());
 }
+// The same for a position that is a glm::vec4 already (vertex arrays, evaluators, glRect).
 inline void pushVertex(Context::State& s, const glm::vec4& object) { pushVertex(s, _mm_loadu_ps(&object.x)); }
 [[gnu::always_inline]] inline void addVertex(__m128 object, int size) {
     Context::State* s = currentState();
