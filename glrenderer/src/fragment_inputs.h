@@ -130,7 +130,8 @@ struct FragmentInputs {
 // Whether two primitives of `key` share the draw's constants the key reads: all it reads but
 // their planes, flat colour and depth offset (FragmentLanes::take), for a key whose texels
 // colour the fragments if any (TexelUse::Color).
-inline bool sameDrawConstants(const FragmentKey& key, const FragmentInputs& a, const FragmentInputs& b) {
+[[gnu::always_inline]] inline bool sameDrawConstants(const FragmentKey& key, const FragmentInputs& a,
+                                                     const FragmentInputs& b) {
     const bool readsOps = key.alphaFunc != CompareFunc::Always || key.stencilTest || key.colorMask;
     return (!readsOps || a.ops == b.ops) && (!key.polygonStipple || a.polygonStipple == b.polygonStipple) &&
            (key.fog == FogMode::Off || a.fog == b.fog) &&
