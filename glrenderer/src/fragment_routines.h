@@ -255,6 +255,49 @@ template <class L, class Rows>
     }
 }
 
+// An area at most L::kCount columns wide, one row at a time in one block of lanes over all its
+// columns, each lane's coverage taken from the edge functions in 32-bit lanes: no span to find
+// and turn back into lanes (NarrowRows' walk and the span's set-up were a third of the rows
+// routine's instructions in the torus). The block lies on the L::kCount-aligned group of columns
+// that holds the area where one does (in one tile: plain loads and stores, blockInOneTile, on
+// one cache line), else from the area's first column. Returns false, drawing nothing, where the
+// edge values do not fit 32 bits (shadeNarrowQuads' wrapping arithmetic).
+template <class L>
+[[gnu::always_inline]] inline bool shadeNarrowRows(const FragmentKey& key, const FragmentLanes<L>& lanes,
+                                                   const RasterTriangle& t, const PixelRect& area, Framebuffer& fb,
+                                                   FragmentCounts& counts) {
+    using Int = typename L::Int;
+    using Mask = typename L::Mask;
+    if (!smallEdgeSteps(t) && !edgeValuesFit32(t, area)) return false;
+    const int aligned = area.minX & ~(L::kCount - 1);
+    const int left = area.maxX - aligned < L::kCount ? aligned : area.minX;
+    const Mask inArea = L::lanesBetween(area.minX - left, area.maxX - left);
+    const typename L::Float x = L::toFloat(L::add(L::ints(left), L::laneIndex()));
+    Int edges[3], down[3];
+    for (int k = 0; k < 3; ++k) {
+        const EdgeFunction& edge = t.edges[k];
+        edges[k] = L::add(L::ints(static_cast<int>(edge.at(left, area.minY))),
+                          L::mul(L::laneIndex(), L::ints(static_cast<int>(edge.stepX))));
+        down[k] = L::ints(static_cast<int>(edge.stepY));
+    }
+    const bool whole = blockInOneTile(left, L::kCount, fb.width());
+    const std::ptrdiff_t fbWidth = fb.width();
+    const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
+    std::uint64_t fragments = 0, passed = 0;
+    for (int row = area.minY; row <= area.maxY; ++row) {
+        const Int outside = L::bitOr(L::bitOr(edges[0], edges[1]), edges[2]);  // sign bit: outside an edge
+        for (int k = 0; k < 3; ++k) edges[k] = L::add(edges[k], down[k]);
+        const Mask covered = L::both(inArea, L::notNegative(outside));
+        if (L::none(covered)) continue;
+        fragments += L::count(covered);
+        const RowBlock<L> block((fb.height() - 1 - row) * fbWidth + left, whole);
+        passed += L::count(shadeBlock<L>(key, lanes, x, L::floats(static_cast<float>(row)), covered, block, buffers));
+    }
+    counts.fragments += fragments;
+    counts.passed += passed;
+    return true;
+}
+
 // The rows of a triangle's part in `area` (FragmentRoutine::Rows).
 template <class L>
 [[gnu::always_inline]] inline void shadeRows(const FragmentKey& key, const RasterTriangle& t, const PixelRect& area,
@@ -268,6 +311,12 @@ template <class L>
     }
     // (Widths with narrow blocks draw such areas in them: measured slower with this walk too.)
     if constexpr (!L::kNarrowBlocks) {
+        if constexpr (L::kCount > 1) {
+            if (!coveredWhole && area.maxX - area.minX < L::kCount &&
+                shadeNarrowRows<L>(key, lanes, t, area, fb, counts)) {
+                return;
+            }
+        }
         if (!coveredWhole && area.maxX - area.minX < NarrowRows<8>::kMaxColumns) {
             if (area.maxX - area.minX < NarrowRows<4>::kMaxColumns)
                 return shadeWalkedRows<L>(key, lanes, NarrowRows<4>(t, area.minX, area.maxX, area.minY), area, fb,
