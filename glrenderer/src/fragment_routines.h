@@ -260,12 +260,12 @@ template <class L, class Rows>
 // and turn back into lanes (NarrowRows' walk and the span's set-up were a third of the rows
 // routine's instructions in the torus). The block lies on the L::kCount-aligned group of columns
 // that holds the area where one does (in one tile: plain loads and stores, blockInOneTile, on
-// one cache line), else from the area's first column. Returns false, drawing nothing, where the
-// edge values do not fit 32 bits (shadeNarrowQuads' wrapping arithmetic).
+// one cache line), else from the area's first column; its planes' terms in x are formed once
+// (FragmentLanes' ColumnsFixed). Returns false, drawing nothing, where the edge values do not fit
+// 32 bits (shadeNarrowQuads' wrapping arithmetic).
 template <class L>
-[[gnu::always_inline]] inline bool shadeNarrowRows(const FragmentKey& key, const FragmentLanes<L>& lanes,
-                                                   const RasterTriangle& t, const PixelRect& area, Framebuffer& fb,
-                                                   FragmentCounts& counts) {
+[[gnu::always_inline]] inline bool shadeNarrowRows(const FragmentKey& key, const RasterTriangle& t,
+                                                   const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
     using Int = typename L::Int;
     using Mask = typename L::Mask;
     if (!smallEdgeSteps(t) && !edgeValuesFit32(t, area)) return false;
@@ -273,6 +273,8 @@ template <class L>
     const int left = area.maxX - aligned < L::kCount ? aligned : area.minX;
     const Mask inArea = L::lanesBetween(area.minX - left, area.maxX - left);
     const typename L::Float x = L::toFloat(L::add(L::ints(left), L::laneIndex()));
+    FragmentLanes<L, true> lanes(t.fragment, fb.height());
+    lanes.fixColumns(x);
     Int edges[3], down[3];
     for (int k = 0; k < 3; ++k) {
         const EdgeFunction& edge = t.edges[k];
@@ -302,22 +304,21 @@ template <class L>
 template <class L>
 [[gnu::always_inline]] inline void shadeRows(const FragmentKey& key, const RasterTriangle& t, const PixelRect& area,
                                              bool coveredWhole, Framebuffer& fb, FragmentCounts& counts) {
-    const FragmentLanes<L> lanes(t.fragment, fb.height());
     if constexpr (L::kTwoRowBlocks) {
         if (key.samplesLod()) {
+            const FragmentLanes<L> lanes(t.fragment, fb.height());
             if (!coveredWhole && shadeNarrowQuads<L>(key, lanes, t, area, fb, counts)) return;
             return shadeRowPairs<L>(key, lanes, t, area, coveredWhole, fb, counts);
         }
     }
+    const bool narrow = !coveredWhole && area.maxX - area.minX < NarrowRows<8>::kMaxColumns;
+    if constexpr (!L::kNarrowBlocks && L::kCount > 1) {
+        if (!coveredWhole && area.maxX - area.minX < L::kCount && shadeNarrowRows<L>(key, t, area, fb, counts)) return;
+    }
+    const FragmentLanes<L> lanes(t.fragment, fb.height());
     // (Widths with narrow blocks draw such areas in them: measured slower with this walk too.)
     if constexpr (!L::kNarrowBlocks) {
-        if constexpr (L::kCount > 1) {
-            if (!coveredWhole && area.maxX - area.minX < L::kCount &&
-                shadeNarrowRows<L>(key, lanes, t, area, fb, counts)) {
-                return;
-            }
-        }
-        if (!coveredWhole && area.maxX - area.minX < NarrowRows<8>::kMaxColumns) {
+        if (narrow) {
             if (area.maxX - area.minX < NarrowRows<4>::kMaxColumns)
                 return shadeWalkedRows<L>(key, lanes, NarrowRows<4>(t, area.minX, area.maxX, area.minY), area, fb,
                                           counts);

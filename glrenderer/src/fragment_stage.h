@@ -25,7 +25,9 @@ typename L::Int fragmentToUnorm8(typename L::Float v) {
 
 // A primitive's fragment inputs broadcast to the lanes, and what the stage computes from them
 // for a block of pixels at (x, y).
-template <class L>
+// `ColumnsFixed`: its colour, depth and fog planes for blocks that all lie on one set of columns
+// (PlaneLanes; fixColumns).
+template <class L, bool ColumnsFixed = false>
 class FragmentLanes {
 public:
     using Float = typename L::Float;
@@ -69,6 +71,14 @@ public:
         flat_ = L::select(lanes, L::ints(static_cast<int>(in.flatColor)), flat_);
         depthOffset_ = L::select(lanes, L::floats(in.depthOffset), depthOffset_);
         texture_.take(in, lanes);
+    }
+
+    // The columns of every later block (ColumnsFixed only).
+    [[gnu::always_inline]] void fixColumns(Float x) {
+        for (auto* plane : {&depth_, &invW_, &red_, &green_, &blue_, &alpha_, &secondaryRed_, &secondaryGreen_,
+                            &secondaryBlue_, &fogCoord_}) {
+            plane->fixColumns(x);
+        }
     }
 
     // The per-fragment operations' constants (issue 16).
@@ -146,9 +156,10 @@ public:
     }
 
 private:
-    PlaneLanes<L> depth_, invW_, red_, green_, blue_, alpha_, secondaryRed_, secondaryGreen_, secondaryBlue_;
+    PlaneLanes<L, ColumnsFixed> depth_, invW_, red_, green_, blue_, alpha_, secondaryRed_, secondaryGreen_,
+        secondaryBlue_;
     Int flat_;
-    PlaneLanes<L> fogCoord_;
+    PlaneLanes<L, ColumnsFixed> fogCoord_;
     FogLanes<L> fog_;
     Float depthOffset_;
     Int alphaRef_, stencilRef_, stencilValueMask_, stencilWriteMask_, colorMask_;
@@ -203,8 +214,9 @@ struct PixelBuffers {
 
 // The stencil test of a block: the lanes of `live` that pass, and into `updated` the stored
 // values changed by the stencil-fail operation.
-template <class L>
-[[gnu::always_inline]] inline typename L::Mask stencilTest(const FragmentKey& key, const FragmentLanes<L>& in,
+template <class L, bool ColumnsFixed>
+[[gnu::always_inline]] inline typename L::Mask stencilTest(const FragmentKey& key,
+                                                           const FragmentLanes<L, ColumnsFixed>& in,
                                                            typename L::Mask live, typename L::Int ref,
                                                            typename L::Int stored, typename L::Int& updated) {
     const typename L::Int mask = in.stencilValueMask();
@@ -217,8 +229,9 @@ template <class L>
 
 // The stored colour words `dst` under the colour `src` of the fragments: blending, the logic op
 // and the colour mask of the key.
-template <class L>
-[[gnu::always_inline]] inline typename L::Int combineWithStored(const FragmentKey& key, const FragmentLanes<L>& in,
+template <class L, bool ColumnsFixed>
+[[gnu::always_inline]] inline typename L::Int combineWithStored(const FragmentKey& key,
+                                                                const FragmentLanes<L, ColumnsFixed>& in,
                                                                 typename L::Int src, typename L::Int dst) {
     if (key.blendSrc != BlendFactor::One || key.blendDst != BlendFactor::Zero) {
         src = blend<L>(key.blendSrc, key.blendDst, src, dst);
@@ -232,11 +245,11 @@ template <class L>
 // The fragment stage on one block of pixels at (x, y), `covered` the lanes the primitive covers,
 // in GL's order. Returns the lanes written. Colour is computed after the tests unless the alpha
 // test needs it: the fragments that fail need none.
-template <class L, class Block>
-[[gnu::always_inline]] inline typename L::Mask shadeBlock(const FragmentKey& key, const FragmentLanes<L>& in,
-                                                          typename L::Float x, typename L::Float y,
-                                                          typename L::Mask covered, const Block& block,
-                                                          const PixelBuffers& buffers) {
+template <class L, class Block, bool ColumnsFixed>
+[[gnu::always_inline]] inline typename L::Mask shadeBlock(const FragmentKey& key,
+                                                          const FragmentLanes<L, ColumnsFixed>& in, typename L::Float x,
+                                                          typename L::Float y, typename L::Mask covered,
+                                                          const Block& block, const PixelBuffers& buffers) {
     using Int = typename L::Int;
     typename L::Mask live = key.polygonStipple ? in.polygonStippled(x, y, covered) : covered;
     // The texture environment, then fog (FragmentLanes::rgba) make the colour.

@@ -155,7 +155,7 @@ bool edgeValuesFit32(const RasterTriangle& triangle, const PixelRect& area);
 // outside the vertices' span, so |E(P)| = |dx (P.x - a.x) + dy (P.y - a.y) + bias|
 // <= 2 * 2^13 * (2^13 + 2^8) + 1 < 2^28. (An OR of the steps offset by the limit: below twice
 // it, a power of two, iff each is.)
-inline bool smallEdgeSteps(const RasterTriangle& t) {
+[[gnu::always_inline]] inline bool smallEdgeSteps(const RasterTriangle& t) {
     constexpr std::int64_t kLimit = std::int64_t{1} << 21;
     std::uint64_t offsetSteps = 0;
     for (const EdgeFunction& edge : t.edges) {
