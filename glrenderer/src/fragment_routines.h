@@ -311,9 +311,11 @@ template <class L>
             return shadeRowPairs<L>(key, lanes, t, area, coveredWhole, fb, counts);
         }
     }
+    // Areas under 8 columns wide: at AVX2's width one block a row, else (the scalar width, or edge
+    // values beyond 32 bits) NarrowRows' spans.
     const bool narrow = !coveredWhole && area.maxX - area.minX < NarrowRows<8>::kMaxColumns;
-    if constexpr (!L::kNarrowBlocks && L::kCount > 1) {
-        if (!coveredWhole && area.maxX - area.minX < L::kCount && shadeNarrowRows<L>(key, t, area, fb, counts)) return;
+    if constexpr (!L::kNarrowBlocks && L::kCount == NarrowRows<8>::kMaxColumns) {
+        if (narrow && shadeNarrowRows<L>(key, t, area, fb, counts)) return;
     }
     const FragmentLanes<L> lanes(t.fragment, fb.height());
     // (Widths with narrow blocks draw such areas in them: measured slower with this walk too.)
