@@ -255,49 +255,72 @@ template <class L, class Rows>
     }
 }
 
-// An area at most L::kCount columns wide, one row at a time in one block of lanes over all its
-// columns, each lane's coverage taken from the edge functions in 32-bit lanes: no span to find
-// and turn back into lanes (NarrowRows' walk and the span's set-up were a third of the rows
-// routine's instructions in the torus). The block lies on the L::kCount-aligned group of columns
-// that holds the area where one does (in one tile: plain loads and stores, blockInOneTile, on
-// one cache line), else from the area's first column; its planes' terms in x are formed once
-// (FragmentLanes' ColumnsFixed). Returns false, drawing nothing, where the edge values do not fit
-// 32 bits (shadeNarrowQuads' wrapping arithmetic).
+// A part of an area at most L::kCount columns wide, one row at a time in one block of lanes
+// from column `left` over all its columns, each lane's coverage taken from the edge functions in
+// 32-bit lanes: no span to find and turn back into lanes (NarrowRows' walk and the span's set-up
+// were a third of the rows routine's instructions in the torus). The block's planes' terms in x
+// are formed once (FragmentLanes' ColumnsFixed). For edge values that fit 32 bits over the area
+// (shadeNarrowQuads' wrapping arithmetic: narrowRowsFit).
 template <class L>
-[[gnu::always_inline]] inline bool shadeNarrowRows(const FragmentKey& key, const RasterTriangle& t,
-                                                   const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
+[[gnu::always_inline]] inline void shadeNarrowRows(const FragmentKey& key, const RasterTriangle& t,
+                                                   const PixelRect& part, int left, Framebuffer& fb,
+                                                   std::uint64_t& fragments, std::uint64_t& passed) {
     using Int = typename L::Int;
     using Mask = typename L::Mask;
-    if (!smallEdgeSteps(t) && !edgeValuesFit32(t, area)) return false;
-    const int aligned = area.minX & ~(L::kCount - 1);
-    const int left = area.maxX - aligned < L::kCount ? aligned : area.minX;
-    const Mask inArea = L::lanesBetween(area.minX - left, area.maxX - left);
+    const Mask inPart = L::lanesBetween(part.minX - left, part.maxX - left);
     const typename L::Float x = L::toFloat(L::add(L::ints(left), L::laneIndex()));
     FragmentLanes<L, true> lanes(t.fragment, fb.height());
     lanes.fixColumns(x);
     Int edges[3], down[3];
     for (int k = 0; k < 3; ++k) {
         const EdgeFunction& edge = t.edges[k];
-        edges[k] = L::add(L::ints(static_cast<int>(edge.at(left, area.minY))),
+        edges[k] = L::add(L::ints(static_cast<int>(edge.at(left, part.minY))),
                           L::mul(L::laneIndex(), L::ints(static_cast<int>(edge.stepX))));
         down[k] = L::ints(static_cast<int>(edge.stepY));
     }
     const bool whole = blockInOneTile(left, L::kCount, fb.width());
     const std::ptrdiff_t fbWidth = fb.width();
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
-    std::uint64_t fragments = 0, passed = 0;
-    for (int row = area.minY; row <= area.maxY; ++row) {
+    for (int row = part.minY; row <= part.maxY; ++row) {
         const Int outside = L::bitOr(L::bitOr(edges[0], edges[1]), edges[2]);  // sign bit: outside an edge
         for (int k = 0; k < 3; ++k) edges[k] = L::add(edges[k], down[k]);
-        const Mask covered = L::both(inArea, L::notNegative(outside));
+        const Mask covered = L::both(inPart, L::notNegative(outside));
         if (L::none(covered)) continue;
         fragments += L::count(covered);
         const RowBlock<L> block((fb.height() - 1 - row) * fbWidth + left, whole);
         passed += L::count(shadeBlock<L>(key, lanes, x, L::floats(static_cast<float>(row)), covered, block, buffers));
     }
+}
+
+// Whether shadeNarrowParts may draw a triangle's part in `area`.
+[[gnu::always_inline]] inline bool narrowRowsFit(const RasterTriangle& t, const PixelRect& area) {
+    return smallEdgeSteps(t) || edgeValuesFit32(t, area);
+}
+
+// An area up to two blocks of lanes wide, a part of up to L::kCount columns at a time in
+// shadeNarrowRows' blocks: on the L::kCount-aligned groups of columns that hold the area where
+// as few do (in one tile: plain loads and stores, blockInOneTile, a cache line a row), else from
+// the area's first column. (A lit torus's triangles up to 13 pixels across took a span search a
+// row, over 2,000 instructions a triangle.)
+template <class L>
+[[gnu::always_inline]] inline void shadeNarrowParts(const FragmentKey& key, const RasterTriangle& t,
+                                                    const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
+    const int aligned = area.minX & ~(L::kCount - 1);
+    std::uint64_t fragments = 0, passed = 0;
+    if (area.maxX - area.minX < L::kCount) {
+        // One part, apart from the loop: a loop of one cost the torus's calls 27 instructions each.
+        shadeNarrowRows<L>(key, t, area, area.maxX - aligned < L::kCount ? aligned : area.minX, fb, fragments, passed);
+    } else {
+        int left = area.maxX - aligned < 2 * L::kCount ? aligned : area.minX;
+#pragma GCC unroll 1
+        for (int part = 0; part < 2; ++part, left += L::kCount) {
+            const PixelRect columns{std::max(left, area.minX), std::min(left + L::kCount - 1, area.maxX), area.minY,
+                                    area.maxY};
+            shadeNarrowRows<L>(key, t, columns, left, fb, fragments, passed);
+        }
+    }
     counts.fragments += fragments;
     counts.passed += passed;
-    return true;
 }
 
 // The rows of a triangle's part in `area` (FragmentRoutine::Rows).
@@ -311,11 +334,14 @@ template <class L>
             return shadeRowPairs<L>(key, lanes, t, area, coveredWhole, fb, counts);
         }
     }
-    // Areas under 8 columns wide: at AVX2's width one block a row, else (the scalar width, or edge
-    // values beyond 32 bits) NarrowRows' spans.
+    // At AVX2's width, areas up to two blocks wide one block a row per part (shadeNarrowParts);
+    // areas under 8 columns wide at the scalar width, or with edge values beyond 32 bits,
+    // NarrowRows' spans.
     const bool narrow = !coveredWhole && area.maxX - area.minX < NarrowRows<8>::kMaxColumns;
     if constexpr (!L::kNarrowBlocks && L::kCount == NarrowRows<8>::kMaxColumns) {
-        if (narrow && shadeNarrowRows<L>(key, t, area, fb, counts)) return;
+        if (!coveredWhole && area.maxX - area.minX < 2 * L::kCount && narrowRowsFit(t, area)) {
+            return shadeNarrowParts<L>(key, t, area, fb, counts);
+        }
     }
     const FragmentLanes<L> lanes(t.fragment, fb.height());
     // (Widths with narrow blocks draw such areas in them: measured slower with this walk too.)
