@@ -127,39 +127,28 @@ void TileRasterizer::queue(const TiledPrimitive& primitive) {
     binInto(BinEntry(&primitive), r.minX >> shift, r.maxX >> shift, r.minY >> shift, r.maxY >> shift);
 }
 
-void TileRasterizer::bin(const RasterTriangle& triangle) {
-    ++queued_;
-    const int shift = tileShift_;
-    const bool defersColor = triangle.method == RasterMethod::Exact && triangle.fragment.routine->shade;
-    const int firstX = triangle.minX >> shift, lastX = triangle.maxX >> shift;
-    const int firstY = triangle.minY >> shift, lastY = triangle.maxY >> shift;
-    const bool packs = triangle.method == RasterMethod::Exact && triangle.fragment.routine->packed;
-    binInto(BinEntry(&triangle, defersColor, packs), firstX, lastX, firstY, lastY);
-    if (!defersColor) return;
+void TileRasterizer::binSpread(const RasterTriangle& triangle, BinEntry entry, int firstX, int lastX, int firstY,
+                               int lastY) {
+    binInto(entry, firstX, lastX, firstY, lastY);
+    if (!entry.defersColor()) return;
     // The triangle's bounds in each tile, for drawTile's choice (here, where they are in cache).
     const int size = tileSize();
     for (int ty = firstY; ty <= lastY; ++ty) {
         const int rows = std::min(triangle.maxY, (ty + 1) * size - 1) - std::max(triangle.minY, ty * size) + 1;
         for (int tx = firstX; tx <= lastX; ++tx) {
             const int columns = std::min(triangle.maxX, (tx + 1) * size - 1) - std::max(triangle.minX, tx * size) + 1;
-            deferringCover_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX_) +
-                            static_cast<std::size_t>(tx)] += std::int64_t{rows} * columns;
+            deferringCover_[tileAt(tx, ty)] += std::int64_t{rows} * columns;
         }
     }
 }
 
 void TileRasterizer::binInto(BinEntry entry, int firstX, int lastX, int firstY, int lastY) {
-    const auto tileAt = [this](int tx, int ty) {
-        return static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX_) + static_cast<std::size_t>(tx);
-    };
-    const auto add = [&](std::size_t tile) {
-        bins_[tile].push_back(entry);
-        ++binnedSinceFlush_[tile];
-    };
-    // Most of a mesh's triangles lie in one tile.
-    if (firstX == lastX && firstY == lastY) return add(tileAt(firstX, firstY));
     for (int ty = firstY; ty <= lastY; ++ty) {
-        for (int tx = firstX; tx <= lastX; ++tx) add(tileAt(tx, ty));
+        for (int tx = firstX; tx <= lastX; ++tx) {
+            const std::size_t tile = tileAt(tx, ty);
+            bins_[tile].push_back(entry);
+            ++binnedSinceFlush_[tile];
+        }
     }
 }
 

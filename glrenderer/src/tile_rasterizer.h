@@ -97,7 +97,31 @@ private:
         if (binnedWidth_ != framebuffer_.width() || binnedHeight_ != framebuffer_.height()) refitTiles();
     }
     void refitTiles();
-    void bin(const RasterTriangle& triangle);
+    std::size_t tileAt(int tx, int ty) const {
+        return static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX_) + static_cast<std::size_t>(tx);
+    }
+    // Adds a kept triangle to the bins of the tiles its bounds touch. Inline for most of a mesh's
+    // triangles, in one tile and not deferring their colour; the rest out of line (binSpread),
+    // whose stack frame every triangle paid when all of it was.
+    void bin(const RasterTriangle& triangle) {
+        ++queued_;
+        const int shift = tileShift_;
+        const int firstX = triangle.minX >> shift, lastX = triangle.maxX >> shift;
+        const int firstY = triangle.minY >> shift, lastY = triangle.maxY >> shift;
+        const bool exact = triangle.method == RasterMethod::Exact;
+        const FragmentRoutine& routine = *triangle.fragment.routine;
+        const BinEntry entry(&triangle, exact && routine.shade, exact && routine.packed);
+        if (firstX == lastX && firstY == lastY && !entry.defersColor()) [[likely]] {
+            const std::size_t tile = tileAt(firstX, firstY);
+            bins_[tile].push_back(entry);
+            ++binnedSinceFlush_[tile];
+            return;
+        }
+        binSpread(triangle, entry, firstX, lastX, firstY, lastY);
+    }
+    // bin() for the other triangles: each tile's bin, and where the colour is deferred, the
+    // triangle's cover of each tile.
+    void binSpread(const RasterTriangle& triangle, BinEntry entry, int firstX, int lastX, int firstY, int lastY);
     // Adds `entry` to the bins of the tiles from (firstX, firstY) to (lastX, lastY).
     void binInto(BinEntry entry, int firstX, int lastX, int firstY, int lastY);
     // Clears the tile if a clear is pending for it, draws its queued triangles, empties its bin.
