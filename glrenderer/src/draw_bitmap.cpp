@@ -59,7 +59,7 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     fragment.fog = state.fog;
     fragment.invW = {1.0f, 0.0f, 0.0f};
     fragment.fogCoord = {0.0f, 0.0f, 0.0f};
-    if (fragment.key.textureEnv != TextureEnv::Off) setBitmapTexture(fragment, fragments, bitmap, fb.height());
+    if (fragment.key().textureEnv != TextureEnv::Off) setBitmapTexture(fragment, fragments, bitmap, fb.height());
     FragmentCounts counts;
     for (std::int64_t y = y0; y < y1; ++y) {
         const std::uint8_t* row = bitmap.rows.data() + static_cast<std::size_t>(y - bottom) * bitmap.rowStride;

@@ -6,6 +6,7 @@ namespace glrenderer {
 
 void FragmentInputs::setFlatColor(const glm::vec4& c, const glm::vec3& secondary) {
     flatColor = fragmentRgba8(c);
+    const FragmentKey& key = this->key();  // (the path is set)
     // Fog, the texture environment and the colour sum mix in float before the conversion: the
     // planes a * 0 + c give c at every pixel.
     if (key.fog != FogMode::Off || key.textureEnv != TextureEnv::Off || key.colorSum) {

@@ -65,6 +65,9 @@ struct FragmentRoutine {
     // The passes of deferred shading (DeferredPass), for a fast key that defersColor().
     const FragmentRoutine* visibility = nullptr;
     const FragmentRoutine* shade = nullptr;
+    // A fast path's own key; null for the routine of any key, which reads the primitive's
+    // (FragmentInputs::key).
+    const FragmentKey* key = nullptr;
 };
 
 // A key and the routine that serves it on this CPU.
@@ -77,22 +80,22 @@ struct FragmentPath {
 // evaluated at pixel (x, y) in internal rows, and the path that draws them. Only the planes the
 // key reads are set.
 struct FragmentInputs {
-    // The path's key and routine, as two fields so that the flat colour packs between them.
-    // (The fields every key reads come first, then the planes most keys read: a triangle's
-    // setup writes and its tiles read the cache lines it uses, RasterTriangle.)
-    FragmentKey key;
-    std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
+    // The routine first, then the planes most keys read, then the rest: a triangle's setup
+    // writes and its tiles read only the cache lines its key uses (RasterTriangle).
     const FragmentRoutine* routine = nullptr;
-    FragmentOpsConstants ops;                               // (issue 16)
-    const PolygonStipplePattern* polygonStipple = nullptr;  // with a key that has it (interned)
-    AttributePlane color[4];                                // colour, or colour / w under perspective shading
-    AttributePlane invW;                                    // 1 / w, under perspective shading
-    AttributePlane depth;                                   // window z, with the depth test
+    FragmentOpsConstants ops;     // (issue 16)
+    AttributePlane color[4];      // colour, or colour / w under perspective shading
+    AttributePlane invW;          // 1 / w, under perspective shading
+    AttributePlane depth;         // window z, with the depth test
+    std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
+    float depthOffset = 0.0f;     // polygon offset, with a key that has it
     // Fog (issue 16), with a key that has it: the fog coordinate's plane, divided by w as a
     // perspective colour's is (invW and the colour planes are set too, constant under flat
     // shading), and the draw's constants.
     AttributePlane fogCoord;
-    float depthOffset = 0.0f;          // polygon offset, with a key that has it
+    // The key, with the routine of any key only (a fast path's routine has its own: key()).
+    FragmentKey anyKey;
+    const PolygonStipplePattern* polygonStipple = nullptr;  // with a key that has it (interned)
     AttributePlane secondaryColor[3];  // the same of the secondary colour, with a key that has the colour sum
     FogState fog;
     // Texturing (issue 16), with a key that has it: planes of s, t and q divided by w (invW is
@@ -117,10 +120,15 @@ struct FragmentInputs {
     // constant planes (and the secondary colour's).
     void setFlatColor(const glm::vec4& color, const glm::vec3& secondary = glm::vec3(0.0f));
 
+    // The routine, and the key where the routine does not carry it: the record of a fast path's
+    // triangle is one cache line shorter without it.
     void setPath(const FragmentPath& path) {
-        key = path.key;
         routine = path.routine;
+        if (!routine->key) anyKey = path.key;
     }
+    // The key of the routine that draws the primitive (a fast path serves a flat key that reads
+    // its colour planes with its linear key's routine, bit for bit: routineKey).
+    const FragmentKey& key() const { return routine->key ? *routine->key : anyKey; }
     // Draws the pixels [begin, end] of `row` with the primitive's routine.
     void shadeSpan(int row, int begin, int end, Framebuffer& framebuffer, FragmentCounts& counts) const {
         routine->span(*this, row, begin, end, framebuffer, counts);

@@ -435,6 +435,10 @@ constexpr auto fastKeyIndices() {
     return indices;
 }
 
+// A key with an address, for its fast paths' FragmentRoutine::key.
+template <FragmentKey Key>
+inline constexpr FragmentKey kKeyObject = Key;
+
 // The routines of lane type L: per key of kFastFragmentKeys, the key a constant (a fast path),
 // and for any key, read from the primitive at run time.
 template <class L>
@@ -445,7 +449,7 @@ struct RoutinesOf {
     }
     static void anyKeySpan(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb,
                            FragmentCounts& counts) {
-        shadeSpan<L>(in.key, FragmentLanes<L>(in, fb.height()), row, begin, end, fb, counts);
+        shadeSpan<L>(in.key(), FragmentLanes<L>(in, fb.height()), row, begin, end, fb, counts);
     }
     template <FragmentKey Key>
     static void rows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole, Framebuffer& fb,
@@ -454,7 +458,7 @@ struct RoutinesOf {
     }
     static void anyKeyRows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole, Framebuffer& fb,
                            FragmentCounts& counts) {
-        shadeRows<L>(t.fragment.key, t, area, coveredWhole, fb, counts);
+        shadeRows<L>(t.fragment.key(), t, area, coveredWhole, fb, counts);
     }
     template <FragmentKey Key>
     static bool narrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
@@ -466,13 +470,14 @@ struct RoutinesOf {
         return shadePackedRun<L>(Key, run, area, fb, counts);
     }
     static bool anyKeyNarrow(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts) {
-        return shadeNarrowTriangle<L>(t.fragment.key, t, area, fb, counts);
+        return shadeNarrowTriangle<L>(t.fragment.key(), t, area, fb, counts);
     }
 
     // The fast path of `Key`, with its deferred shading's if the key defers its colour.
     template <FragmentKey Key>
     static constexpr FragmentRoutine fastRoutine() {
         FragmentRoutine routine{&span<Key>, &rows<Key>, nullptr};
+        routine.key = &kKeyObject<Key>;
         if constexpr (L::kNarrowBlocks) routine.narrow = &narrow<Key>;
         if constexpr (L::kPackedBlocks && packsTinyTriangles(Key)) routine.packed = &packed<Key>;
         if constexpr (Key.defersColor()) {

@@ -79,7 +79,7 @@ public:
           t_(in.texCoord[1]),
           q_(in.texCoord[2]),
           invW_(in.invW),
-          texture_(in.key.textureEnv != TextureEnv::Off ? in.texture : nullptr),
+          texture_(in.key().textureEnv != TextureEnv::Off ? in.texture : nullptr),
           envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]),
                     L::floats(in.textureEnvColor[2]), L::floats(in.textureEnvColor[3])},
           width0_(L::floats(texture_ ? static_cast<float>(texture_->width[0]) : 0.0f)),

@@ -1,5 +1,6 @@
 #include "image_texturing.h"
 
+#include "fragment_paths.h"
 #include "fragment_stage.h"
 #include "triangle_setup.h"
 
@@ -11,7 +12,7 @@ ImageTexturing::ImageTexturing(const DrawState& state, const glm::vec4& texCoord
       fog_(state.fog),
       fogFactor_(fog_.factor(state.fog.mode, 0.0f)) {
     FragmentInputs in;
-    in.key = key_;
+    in.setPath({key_, &generalFragmentRoutine()});  // (the texture lanes read the key)
     WindowVertex constant;
     constant.texCoord = texCoord;
     in.setTexture(state.texture.texture.get(), state.texture.envColor, state.texture.borderColor, ConstantPlanes{},

@@ -11,12 +11,13 @@
 namespace glrenderer {
 namespace {
 
-// prepareTriangle stores the planes of 1 / w, z and the fog coordinate as three in a row, and
-// loads a vertex's position and its secondary colour with the fog coordinate as four floats.
-static_assert(offsetof(FragmentInputs, depth) == offsetof(FragmentInputs, invW) + sizeof(AttributePlane) &&
-              offsetof(FragmentInputs, fogCoord) == offsetof(FragmentInputs, depth) + sizeof(AttributePlane));
+// prepareTriangle stores the planes of 1 / w and z as two in a row, and loads a vertex's
+// position and its secondary colour with the fog coordinate as four floats.
+static_assert(offsetof(FragmentInputs, depth) == offsetof(FragmentInputs, invW) + sizeof(AttributePlane));
 static_assert(offsetof(WindowVertex, fogCoord) == offsetof(WindowVertex, secondaryColor) + 3 * sizeof(float));
 static_assert(offsetof(WindowVertex, z) == 2 * sizeof(float) && offsetof(WindowVertex, invW) == 3 * sizeof(float));
+// A depth-tested triangle of perspective colour (most meshes') is set up in three cache lines.
+static_assert(offsetof(RasterTriangle, fragment) + offsetof(FragmentInputs, fogCoord) <= 3 * 64);
 
 // Twice the area of a pixel, in fixed point (the unit of SetupTriangle::area).
 constexpr std::int64_t kTwicePixelArea = std::int64_t{2} << (2 * kSubpixelBits);
@@ -112,7 +113,8 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
     const bool perspective = key.shading == Shading::Perspective;
     if (!perspective) in.setPath(fragments.varyingW);  // (perspective shading's comes with the plane of 1 / w)
     in.ops = fragments.ops;
-    in.polygonStipple = fragments.polygonStipple;
+    // (Past the first three cache lines, only what the key reads is written: RasterTriangle.)
+    if (key.polygonStipple) in.polygonStipple = fragments.polygonStipple;
     // Flat shading is a constant in the reference, not an interpolation of equal colors.
     if (key.shading == Shading::Flat) {
         in.setFlatColor(*t.flatColor, t.v[2]->secondaryColor);  // every vertex has the flat secondary colour
@@ -133,15 +135,16 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
             }).store(in.secondaryColor, 0, 3);
         }
     }
-    // 1 / w, z and the fog coordinate / w: the planes invW, depth and fogCoord, which follow
-    // each other in FragmentInputs.
+    // 1 / w, z and the fog coordinate / w: the planes invW and depth, which follow each other in
+    // FragmentInputs, and fogCoord (in the next cache line: written only when read).
     if (perspective || key.depthTest || key.fog != FogMode::Off || key.textureEnv != TextureEnv::Off) {
         const FourPlanes depth = lanes([&](const WindowVertex& v) {
             const __m128 position = _mm_loadu_ps(&v.x);                                          // x, y, z, 1 / w
             const __m128 fogOverW = _mm_mul_ps(_mm_loadu_ps(&v.secondaryColor.x), oneOverW(v));  // in lane 3
             return _mm_shuffle_ps(position, fogOverW, _MM_SHUFFLE(3, 3, 2, 3));
         });
-        depth.store(&in.invW, 0, 3);
+        depth.store(&in.invW, 0, 2);
+        if (key.fog != FogMode::Off) depth.store(&in.fogCoord, 2, 1);
         // The path from the plane of 1 / w in registers: read back from the record just written, it
         // waited for the stores (a third of this function's time in the torus).
         if (perspective) {
@@ -166,7 +169,7 @@ void rasterizeTriangleExact(const RasterTriangle& t, const PixelRect& rect, Fram
     const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
     const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
     // One pixel at a time all through: the scalar routine of the triangle's key.
-    const FragmentRoutine& scalar = scalarFragmentPaths().routine(t.fragment.key);
+    const FragmentRoutine& scalar = scalarFragmentPaths().routine(t.fragment.key());
     for (int py = minY; py <= maxY; ++py) {
         std::int64_t e0 = t.edges[0].at(minX, py), e1 = t.edges[1].at(minX, py), e2 = t.edges[2].at(minX, py);
         int runBegin = -1;  // the first pixel of the covered run being walked

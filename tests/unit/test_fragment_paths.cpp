@@ -207,7 +207,7 @@ void expectSpansMatch(const Target& expected, const RasterTriangle& triangle, co
     for (const FragmentRoutine* routine : {triangle.fragment.routine, &paths.anyKey()}) {
         Target actual(color, depth);
         rasterizeTriangleSpans(triangle, rect, actual.framebuffer, actual.counts, *routine);
-        EXPECT_TRUE(same(expected, actual)) << paths.name() << " key " << describe(triangle.fragment.key)
+        EXPECT_TRUE(same(expected, actual)) << paths.name() << " key " << describe(triangle.fragment.key())
                                             << (routine == &paths.anyKey() ? " any key" : "") << " triangle " << i;
     }
 }
@@ -286,7 +286,7 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
             inputs.textureEnvColor = {0.2f, 0.4f, 0.6f, 0.8f};
             inputs.setPath({tested.anyKey ? randomKey(random) : tested.key, tested.routine});
             FragmentInputs general = inputs;
-            general.routine = &generalFragmentRoutine();
+            general.setPath({inputs.key(), &generalFragmentRoutine()});
 
             const std::vector<std::uint32_t> color = randomPixels(random, 0xFFFFFFFF);
             const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
@@ -301,7 +301,7 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
                 inputs.shadeSpan(y, begin, end, actual.framebuffer, actual.counts);
                 ++spans;
             }
-            ASSERT_TRUE(same(expected, actual)) << tested.name << " key " << describe(inputs.key) << " inputs " << i;
+            ASSERT_TRUE(same(expected, actual)) << tested.name << " key " << describe(inputs.key()) << " inputs " << i;
         }
     }
     EXPECT_GT(spans, 10000);
@@ -587,7 +587,7 @@ TEST(FragmentPaths, PackedRunsOfTinyTrianglesMatchThePerPixelReference) {
             for (const RasterTriangle* t : run) rasterizeTriangleExact(*t, rect, expected.framebuffer, expected.counts);
             rasterizePackedRun(run, rect, actual.framebuffer, actual.counts);
             ASSERT_TRUE(same(expected, actual))
-                << paths->name() << " key " << describe(run.front()->fragment.key) << " run " << i;
+                << paths->name() << " key " << describe(run.front()->fragment.key()) << " run " << i;
             ++packedRuns;
         }
     }
