@@ -16,8 +16,6 @@ namespace {
 static_assert(offsetof(FragmentInputs, depth) == offsetof(FragmentInputs, invW) + sizeof(AttributePlane));
 static_assert(offsetof(WindowVertex, fogCoord) == offsetof(WindowVertex, secondaryColor) + 3 * sizeof(float));
 static_assert(offsetof(WindowVertex, z) == 2 * sizeof(float) && offsetof(WindowVertex, invW) == 3 * sizeof(float));
-// A depth-tested triangle of perspective colour (most meshes') is set up in three cache lines.
-static_assert(offsetof(RasterTriangle, fragment) + offsetof(FragmentInputs, fogCoord) <= 3 * 64);
 
 // Twice the area of a pixel, in fixed point (the unit of SetupTriangle::area).
 constexpr std::int64_t kTwicePixelArea = std::int64_t{2} << (2 * kSubpixelBits);

@@ -37,8 +37,8 @@ struct EdgeFunction {
 
 // Everything the kernel needs, computed once per triangle so that any tile can draw its part.
 // What every triangle uses comes first: a mesh triangle's setup writes, and its tile reads, only
-// the first three cache lines (FragmentInputs keeps its common fields first likewise; a fifth
-// line written per triangle cost the torus 3% of its CPU time).
+// the first three cache lines, kCommonTriangleBytes (FragmentInputs keeps its common fields first
+// likewise; a fifth line written per triangle cost the torus 3% of its CPU time).
 struct alignas(64) RasterTriangle {
     EdgeFunction edges[3];
     int minX = 0, maxX = -1, minY = 0, maxY = -1;  // inclusive pixel bounds, internal rows

@@ -10,17 +10,20 @@
 namespace glrenderer {
 
 // The bytes of a triangle record that every key's setup writes and its tiles read (RasterTriangle's
-// first fields): its first four cache lines.
+// first fields, up to the fog coordinate's plane): its first three cache lines.
 inline constexpr std::size_t kCommonTriangleBytes =
-    offsetof(RasterTriangle, fragment) + offsetof(FragmentInputs, secondaryColor);
+    offsetof(RasterTriangle, fragment) + offsetof(FragmentInputs, fogCoord);
+static_assert(kCommonTriangleBytes <= 3 * 64);
 
-// The bytes of a triangle record that the routine of `key` reads: the common ones, and those of
-// the secondary colour, the fog and the texture after them where the key has them.
+// The bytes of a triangle record that the fast path of `key` reads: the common ones, and those of
+// the stipple pattern, the secondary colour, the fog and the texture after them where the key has
+// them. (The routine of any key reads its key after the common ones too.)
 constexpr std::size_t triangleBytesRead(const FragmentKey& key) {
     constexpr std::size_t inputs = offsetof(RasterTriangle, fragment);
     if (key.texturesColor()) return inputs + offsetof(FragmentInputs, textureBorderColor) + sizeof(glm::vec4);
     if (key.fog != FogMode::Off) return inputs + offsetof(FragmentInputs, fog) + sizeof(FogState);
     if (key.colorSum) return inputs + offsetof(FragmentInputs, fog);
+    if (key.polygonStipple) return inputs + offsetof(FragmentInputs, secondaryColor);
     return kCommonTriangleBytes;
 }
 
