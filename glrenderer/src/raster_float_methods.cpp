@@ -59,7 +59,8 @@ void rasterizeBoundingBoxFloat(const RasterTriangle& t, const PixelRect& rect, F
     }
 }
 
-void rasterizeWithMethod(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts) {
+void rasterizeWithSlowerMethod(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb,
+                               FragmentCounts& counts) {
     switch (t.method) {
     case RasterMethod::Exact: rasterizeTriangleSpans(t, rect, fb, counts, *t.fragment.routine); break;
     case RasterMethod::ExactPerPixel: rasterizeTriangleExact(t, rect, fb, counts); break;

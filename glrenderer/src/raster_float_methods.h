@@ -17,8 +17,16 @@ void rasterizeScanline(const RasterTriangle& triangle, const PixelRect& rect, Fr
 void rasterizeBoundingBoxFloat(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
                                FragmentCounts& counts);
 
-// Draws `triangle` with the method it was prepared for.
-void rasterizeWithMethod(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
-                         FragmentCounts& counts);
+// Draws `triangle` with a method other than the exact one (RasterMethod::Exact).
+void rasterizeWithSlowerMethod(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
+                               FragmentCounts& counts);
+
+// Draws `triangle` with the method it was prepared for: the exact one inline.
+inline void rasterizeWithMethod(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
+                                FragmentCounts& counts) {
+    if (triangle.method == RasterMethod::Exact) [[likely]]
+        return rasterizeTriangleSpans(triangle, rect, framebuffer, counts, *triangle.fragment.routine);
+    rasterizeWithSlowerMethod(triangle, rect, framebuffer, counts);
+}
 
 }  // namespace glrenderer

@@ -85,30 +85,19 @@ bool edgeValuesFit32(const RasterTriangle& t, const PixelRect& area) {
     return true;
 }
 
-void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect, Framebuffer& fb, FragmentCounts& counts,
-                            const FragmentRoutine& routine) {
-    // A tile's rectangle lies inside the framebuffer, so an area cut from it does too.
-    MYGL_INVARIANT(rect.minX >= 0 && rect.minY >= 0 && rect.maxX < fb.width() && rect.maxY < fb.height());
-    const int minX = std::max(t.minX, rect.minX), maxX = std::min(t.maxX, rect.maxX);
-    const int minY = std::max(t.minY, rect.minY), maxY = std::min(t.maxY, rect.maxY);
-    if (minX > maxX || minY > maxY) return;
-    if (routine.narrow && routine.narrow(t, {minX, maxX, minY, maxY}, fb, counts)) return;
+void rasterizeTallArea(const RasterTriangle& t, const PixelRect& area, Framebuffer& fb, FragmentCounts& counts,
+                       const FragmentRoutine& routine) {
     // The edge functions are linear: if the four corners of the area are inside an edge, all of
     // it is; if they are all outside one edge, none of it is. A tile a large triangle covers
-    // whole then needs no span search, and one it misses needs nothing. (Not worth testing for
-    // a few rows.)
-    constexpr int kCornerTestRows = 8;
-    bool coveredWhole = false;
-    if (maxY - minY + 1 >= kCornerTestRows) {
-        coveredWhole = true;
-        for (const EdgeFunction& edge : t.edges) {
-            const std::int64_t corners[4] = {edge.at(minX, minY), edge.at(maxX, minY), edge.at(minX, maxY),
-                                             edge.at(maxX, maxY)};
-            if (corners[0] < 0 && corners[1] < 0 && corners[2] < 0 && corners[3] < 0) return;
-            if ((corners[0] | corners[1] | corners[2] | corners[3]) < 0) coveredWhole = false;
-        }
+    // whole then needs no span search, and one it misses needs nothing.
+    bool coveredWhole = true;
+    for (const EdgeFunction& edge : t.edges) {
+        const std::int64_t corners[4] = {edge.at(area.minX, area.minY), edge.at(area.maxX, area.minY),
+                                         edge.at(area.minX, area.maxY), edge.at(area.maxX, area.maxY)};
+        if (corners[0] < 0 && corners[1] < 0 && corners[2] < 0 && corners[3] < 0) return;
+        if ((corners[0] | corners[1] | corners[2] | corners[3]) < 0) coveredWhole = false;
     }
-    routine.rows(t, {minX, maxX, minY, maxY}, coveredWhole, fb, counts);
+    routine.rows(t, area, coveredWhole, fb, counts);
 }
 
 }  // namespace glrenderer

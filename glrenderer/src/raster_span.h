@@ -9,6 +9,7 @@
 #include <span>
 
 #include "fragment_inputs.h"
+#include "glrenderer/invariant.h"
 #include "raster_triangle.h"
 
 // The row walkers below are inlined into the fragment routines of every instruction set: each
@@ -165,11 +166,31 @@ bool edgeValuesFit32(const RasterTriangle& triangle, const PixelRect& area);
     return offsetSteps < static_cast<std::uint64_t>(2 * kLimit);
 }
 
+// From this many rows, an area's corners are tested first (rasterizeTallArea): not worth it for a few.
+inline constexpr int kCornerTestRows = 8;
+
+// rasterizeTriangleSpans for an area of many rows: the routine's rows after a test of the area's
+// corners (none of it covered, or all of it).
+void rasterizeTallArea(const RasterTriangle& triangle, const PixelRect& area, Framebuffer& framebuffer,
+                       FragmentCounts& counts, const FragmentRoutine& routine);
+
 // The fast exact method: spans from the edge functions, or the narrow blocks of `routine` where
 // it has them, shaded by `routine` (the triangle's own, or another width's for the same key).
 // Bit-for-bit the same pixels, depths and counts as rasterizeTriangleExact.
-void rasterizeTriangleSpans(const RasterTriangle& triangle, const PixelRect& rect, Framebuffer& framebuffer,
-                            FragmentCounts& counts, const FragmentRoutine& routine);
+// Inline: every triangle of every tile passes here, and as a call of its own it took a tenth of
+// a dense mesh's per-triangle instructions between the tile's loop and the routine.
+[[gnu::always_inline]] inline void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect,
+                                                          Framebuffer& fb, FragmentCounts& counts,
+                                                          const FragmentRoutine& routine) {
+    // A tile's rectangle lies inside the framebuffer, so an area cut from it does too.
+    MYGL_INVARIANT(rect.minX >= 0 && rect.minY >= 0 && rect.maxX < fb.width() && rect.maxY < fb.height());
+    const PixelRect area{std::max(t.minX, rect.minX), std::min(t.maxX, rect.maxX), std::max(t.minY, rect.minY),
+                         std::min(t.maxY, rect.maxY)};
+    if (area.minX > area.maxX || area.minY > area.maxY) return;
+    if (routine.narrow && routine.narrow(t, area, fb, counts)) return;
+    if (area.maxY - area.minY + 1 >= kCornerTestRows) return rasterizeTallArea(t, area, fb, counts, routine);
+    routine.rows(t, area, false, fb, counts);
+}
 
 // Consecutive triangles of routines that pack tiny triangles (FragmentRoutine::packed), in
 // order, their parts in tile `rect`: each routine draws its own from the front.

@@ -92,9 +92,7 @@ void TileRasterizer::refitTiles() {
     tilesY_ = tilesAlong(binnedHeight_, tileShift_);
     const auto tiles = static_cast<std::size_t>(tilesX_) * static_cast<std::size_t>(tilesY_);
     queued_ = 0;  // queued for a framebuffer of another size
-    bins_.resize(tiles);
-    for (auto& bin : bins_) bin.clear();
-    binnedSinceFlush_.assign(tiles, 0);
+    bins_.assign(tiles, TileBin());
     deferringCover_.assign(tiles, 0);
     clearPending_.assign(tiles, clear_.color || clear_.depth);
     holdsClear_.assign(tiles, 0);
@@ -127,8 +125,10 @@ void TileRasterizer::queue(const TiledPrimitive& primitive) {
     binInto(BinEntry(&primitive), r.minX >> shift, r.maxX >> shift, r.minY >> shift, r.maxY >> shift);
 }
 
-void TileRasterizer::binSpread(const RasterTriangle& triangle, BinEntry entry, int firstX, int lastX, int firstY,
-                               int lastY) {
+void TileRasterizer::binSpread(const RasterTriangle& triangle, BinEntry entry) {
+    const int shift = tileShift_;
+    const int firstX = triangle.minX >> shift, lastX = triangle.maxX >> shift;
+    const int firstY = triangle.minY >> shift, lastY = triangle.maxY >> shift;
     binInto(entry, firstX, lastX, firstY, lastY);
     if (!entry.defersColor()) return;
     // The triangle's bounds in each tile, for drawTile's choice (here, where they are in cache).
@@ -144,11 +144,7 @@ void TileRasterizer::binSpread(const RasterTriangle& triangle, BinEntry entry, i
 
 void TileRasterizer::binInto(BinEntry entry, int firstX, int lastX, int firstY, int lastY) {
     for (int ty = firstY; ty <= lastY; ++ty) {
-        for (int tx = firstX; tx <= lastX; ++tx) {
-            const std::size_t tile = tileAt(tx, ty);
-            bins_[tile].push_back(entry);
-            ++binnedSinceFlush_[tile];
-        }
+        for (int tx = firstX; tx <= lastX; ++tx) bins_[tileAt(tx, ty)].add(entry);
     }
 }
 
@@ -234,7 +230,7 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     const int size = tileSize();
     const PixelRect rect{tx * size, std::min((tx + 1) * size, binnedWidth_) - 1, ty * size,
                          std::min((ty + 1) * size, binnedHeight_) - 1};
-    std::vector<BinEntry>& bin = bins_[tile];
+    const std::span<BinEntry> bin = bins_[tile].entries();
     if (paintersSort) {
         std::stable_sort(bin.begin(), bin.end(),
                          [](const BinEntry& a, const BinEntry& b) { return a.meanDepth() > b.meanDepth(); });
@@ -253,14 +249,14 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
         const bool defers = bin[first].defersColor();
         std::size_t end = first + 1;
         while (end < bin.size() && bin[end].defersColor() == defers) ++end;
-        const std::span<const BinEntry> run = std::span(bin).subspan(first, end - first);
+        const std::span<const BinEntry> run = bin.subspan(first, end - first);
         if (defers && deferring)
             drawDeferred(run, rect, counts);
         else
             drawInOrder(run, rect, counts);
         first = end;
     }
-    bin.clear();
+    bins_[tile].clear();
 }
 
 void TileRasterizer::flush(Stats& stats, bool paintersSort) {
@@ -281,11 +277,7 @@ void TileRasterizer::flush(Stats& stats, bool paintersSort) {
     for (const ThreadCounts& c : threadCounts_) addFragmentCounts(stats, c.counts);
     queued_ = 0;
     clear_ = {};
-    // Steady state allocates nothing even if the next frame draws fewer tiles early.
-    for (std::size_t tile = 0; tile < bins_.size(); ++tile) {
-        bins_[tile].reserve(binnedSinceFlush_[tile]);
-        binnedSinceFlush_[tile] = 0;
-    }
+    for (TileBin& bin : bins_) bin.makeRoomForNextFlush();
 }
 
 }  // namespace glrenderer

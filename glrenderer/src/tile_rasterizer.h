@@ -75,6 +75,7 @@ private:
         BinEntry(const RasterTriangle* triangle, bool defersColor, bool packs)
             : bits_(reinterpret_cast<std::uintptr_t>(triangle) | (defersColor ? kDefers : 0) | (packs ? kPacks : 0)) {}
         explicit BinEntry(const TiledPrimitive* other) : bits_(reinterpret_cast<std::uintptr_t>(other) | kOther) {}
+        BinEntry() = default;  // a free place in a bin's storage
         const RasterTriangle* triangle() const {
             return bits_ & kOther ? nullptr : reinterpret_cast<const RasterTriangle*>(bits_ & ~(kDefers | kPacks));
         }
@@ -85,7 +86,36 @@ private:
 
     private:
         static constexpr std::uintptr_t kOther = 1, kDefers = 2, kPacks = 4;
-        std::uintptr_t bits_;
+        std::uintptr_t bits_ = kOther;
+    };
+
+    // A tile's queued entries, in submission order. The storage only grows: adding where it has
+    // room is a store, inline and without a call, so that keep()'s common path saves no registers
+    // (std::vector::push_back's growth path made every triangle's keep() save six).
+    class TileBin {
+    public:
+        bool hasRoom() const { return count_ < storage_.size(); }
+        void addWithRoom(BinEntry entry) {
+            storage_[count_++] = entry;
+            ++addedSinceFlush_;
+        }
+        void add(BinEntry entry) {
+            if (!hasRoom()) storage_.resize(std::max<std::size_t>(2 * storage_.size(), 16));
+            addWithRoom(entry);
+        }
+        std::span<BinEntry> entries() { return {storage_.data(), count_}; }
+        bool empty() const { return count_ == 0; }
+        void clear() { count_ = 0; }
+        // At a flush: room for as many entries as were added since the last one, however many
+        // were drawn early (which depends on timing), so that steady state allocates nothing.
+        void makeRoomForNextFlush() {
+            if (storage_.size() < addedSinceFlush_) storage_.resize(addedSinceFlush_);
+            addedSinceFlush_ = 0;
+        }
+
+    private:
+        std::vector<BinEntry> storage_;
+        std::size_t count_ = 0, addedSinceFlush_ = 0;
     };
 
     void* allocate(std::size_t bytes, std::size_t alignment) override { return records_.allocate(bytes, alignment); }
@@ -101,8 +131,8 @@ private:
         return static_cast<std::size_t>(ty) * static_cast<std::size_t>(tilesX_) + static_cast<std::size_t>(tx);
     }
     // Adds a kept triangle to the bins of the tiles its bounds touch. Inline for most of a mesh's
-    // triangles, in one tile and not deferring their colour; the rest out of line (binSpread),
-    // whose stack frame every triangle paid when all of it was.
+    // triangles, in one tile whose bin has room and not deferring their colour; the rest out of
+    // line (binSpread), whose stack frame every triangle paid when all of it was.
     void bin(const RasterTriangle& triangle) {
         ++queued_;
         const int shift = tileShift_;
@@ -112,16 +142,15 @@ private:
         const FragmentRoutine& routine = *triangle.fragment.routine;
         const BinEntry entry(&triangle, exact && routine.shade, exact && routine.packed);
         if (firstX == lastX && firstY == lastY && !entry.defersColor()) [[likely]] {
-            const std::size_t tile = tileAt(firstX, firstY);
-            bins_[tile].push_back(entry);
-            ++binnedSinceFlush_[tile];
-            return;
+            TileBin& bin = bins_[tileAt(firstX, firstY)];
+            if (bin.hasRoom()) [[likely]]
+                return bin.addWithRoom(entry);
         }
-        binSpread(triangle, entry, firstX, lastX, firstY, lastY);
+        binSpread(triangle, entry);
     }
     // bin() for the other triangles: each tile's bin, and where the colour is deferred, the
-    // triangle's cover of each tile.
-    void binSpread(const RasterTriangle& triangle, BinEntry entry, int firstX, int lastX, int firstY, int lastY);
+    // triangle's cover of each tile. (Two arguments: a tail call from bin().)
+    [[gnu::noinline]] void binSpread(const RasterTriangle& triangle, BinEntry entry);
     // Adds `entry` to the bins of the tiles from (firstX, firstY) to (lastX, lastY).
     void binInto(BinEntry entry, int firstX, int lastX, int firstY, int lastY);
     // Clears the tile if a clear is pending for it, draws its queued triangles, empties its bin.
@@ -159,13 +188,10 @@ private:
     std::uint32_t heldRgba_ = 0, heldDepth24_ = 0;
     std::uint64_t heldGeneration_ = 0;
     TriangleArena arena_;
-    ArenaWriter writer_{arena_};               // for slot() and keep()
-    RecordPool records_;                       // of the queued points and lines
-    std::size_t queued_ = 0;                   // binned and not drawn yet
-    std::vector<std::vector<BinEntry>> bins_;  // per tile, in submission order
-    // Per tile, triangles binned since the last flush: what its bin may have to hold next time,
-    // however much of it is drawn early (which depends on timing).
-    std::vector<std::uint32_t> binnedSinceFlush_;
+    ArenaWriter writer_{arena_};  // for slot() and keep()
+    RecordPool records_;          // of the queued points and lines
+    std::size_t queued_ = 0;      // binned and not drawn yet
+    std::vector<TileBin> bins_;   // per tile
     // Per tile, the pixels of the bounds of the triangles queued there that defer their colour.
     std::vector<std::int64_t> deferringCover_;
     int tileShift_ = 7;
