@@ -269,7 +269,7 @@ template <class L>
     using Mask = typename L::Mask;
     const Mask inPart = L::lanesBetween(part.minX - left, part.maxX - left);
     const typename L::Float x = L::toFloat(L::add(L::ints(left), L::laneIndex()));
-    FragmentLanes<L, true> lanes(t.fragment, fb.height());
+    FragmentLanes<L, true> lanes(key, t.fragment, fb.height());
     lanes.fixColumns(x);
     Int edges[3], down[3];
     for (int k = 0; k < 3; ++k) {
@@ -329,7 +329,7 @@ template <class L>
                                              bool coveredWhole, Framebuffer& fb, FragmentCounts& counts) {
     if constexpr (L::kTwoRowBlocks) {
         if (key.samplesLod()) {
-            const FragmentLanes<L> lanes(t.fragment, fb.height());
+            const FragmentLanes<L> lanes(key, t.fragment, fb.height());
             if (!coveredWhole && shadeNarrowQuads<L>(key, lanes, t, area, fb, counts)) return;
             return shadeRowPairs<L>(key, lanes, t, area, coveredWhole, fb, counts);
         }
@@ -343,7 +343,7 @@ template <class L>
             return shadeNarrowParts<L>(key, t, area, fb, counts);
         }
     }
-    const FragmentLanes<L> lanes(t.fragment, fb.height());
+    const FragmentLanes<L> lanes(key, t.fragment, fb.height());
     // (Widths with narrow blocks draw such areas in them: measured slower with this walk too.)
     if constexpr (!L::kNarrowBlocks) {
         if (narrow) {
@@ -384,7 +384,7 @@ template <class L>
     }
     const std::size_t fbWidth = static_cast<std::size_t>(fb.width());
     const PixelBuffers buffers{fb.color().data(), fb.depth().data(), fb.stencil().data()};
-    const FragmentLanes<L> lanes(t.fragment, fb.height());
+    const FragmentLanes<L> lanes(key, t.fragment, fb.height());
     std::uint64_t fragments = 0, passed = 0;
     for (int top = area.minY; top <= area.maxY; top += blockRows) {
         const int rows = std::min(blockRows, area.maxY - top + 1);
@@ -445,11 +445,11 @@ template <class L>
 struct RoutinesOf {
     template <FragmentKey Key>
     static void span(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb, FragmentCounts& counts) {
-        shadeSpan<L>(Key, FragmentLanes<L>(in, fb.height()), row, begin, end, fb, counts);
+        shadeSpan<L>(Key, FragmentLanes<L>(Key, in, fb.height()), row, begin, end, fb, counts);
     }
     static void anyKeySpan(const FragmentInputs& in, int row, int begin, int end, Framebuffer& fb,
                            FragmentCounts& counts) {
-        shadeSpan<L>(in.key(), FragmentLanes<L>(in, fb.height()), row, begin, end, fb, counts);
+        shadeSpan<L>(in.key(), FragmentLanes<L>(in.key(), in, fb.height()), row, begin, end, fb, counts);
     }
     template <FragmentKey Key>
     static void rows(const RasterTriangle& t, const PixelRect& area, bool coveredWhole, Framebuffer& fb,

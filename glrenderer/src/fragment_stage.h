@@ -33,10 +33,11 @@ public:
     using Float = typename L::Float;
     using Int = typename L::Int;
 
-    // `framebufferHeight` turns internal rows into the window rows the polygon stipple reads.
-    // Inlined into each routine, where the planes its key never reads are not broadcast (called
-    // out of line, from the fifth routine calling it, it was 14% of a mesh's CPU).
-    [[gnu::always_inline]] FragmentLanes(const FragmentInputs& in, int framebufferHeight)
+    // `key`: the routine's (a fast path's constant). `framebufferHeight` turns internal rows into
+    // the window rows the polygon stipple reads. Inlined into each routine, where the planes its
+    // key never reads are not broadcast (called out of line, from the fifth routine calling it, it
+    // was 14% of a mesh's CPU).
+    [[gnu::always_inline]] FragmentLanes(const FragmentKey& key, const FragmentInputs& in, int framebufferHeight)
         : depth_(in.depth),
           invW_(in.invW),
           red_(in.color[0]),
@@ -55,7 +56,7 @@ public:
           stencilValueMask_(L::ints(in.ops.stencilValueMask)),
           stencilWriteMask_(L::ints(in.ops.stencilWriteMask)),
           colorMask_(L::ints(static_cast<int>(in.ops.colorMask))),
-          texture_(in),
+          texture_(key, in),
           polygonStipple_(in.polygonStipple),
           lastRow_(framebufferHeight - 1) {}
 

@@ -73,13 +73,14 @@ public:
     using Mask = typename L::Mask;
 
     // Only a textured key's texture is read: an untextured primitive's record may still point at
-    // the texture of the draw it last served, freed since.
-    [[gnu::always_inline]] explicit TextureLanes(const FragmentInputs& in)
+    // the texture of the draw it last served, freed since. (`key` the routine's: a fast path's
+    // constant, not read from the record.)
+    [[gnu::always_inline]] TextureLanes(const FragmentKey& key, const FragmentInputs& in)
         : s_(in.texCoord[0]),
           t_(in.texCoord[1]),
           q_(in.texCoord[2]),
           invW_(in.invW),
-          texture_(in.key().textureEnv != TextureEnv::Off ? in.texture : nullptr),
+          texture_(key.textureEnv != TextureEnv::Off ? in.texture : nullptr),
           envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]),
                     L::floats(in.textureEnvColor[2]), L::floats(in.textureEnvColor[3])},
           width0_(L::floats(texture_ ? static_cast<float>(texture_->width[0]) : 0.0f)),

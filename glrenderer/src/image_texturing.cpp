@@ -1,6 +1,5 @@
 #include "image_texturing.h"
 
-#include "fragment_paths.h"
 #include "fragment_stage.h"
 #include "triangle_setup.h"
 
@@ -12,12 +11,11 @@ ImageTexturing::ImageTexturing(const DrawState& state, const glm::vec4& texCoord
       fog_(state.fog),
       fogFactor_(fog_.factor(state.fog.mode, 0.0f)) {
     FragmentInputs in;
-    in.setPath({key_, &generalFragmentRoutine()});  // (the texture lanes read the key)
     WindowVertex constant;
     constant.texCoord = texCoord;
     in.setTexture(state.texture.texture.get(), state.texture.envColor, state.texture.borderColor, ConstantPlanes{},
                   constant);
-    const TextureLanes<ScalarLanes> texture(in);
+    const TextureLanes<ScalarLanes> texture(key_, in);
     texture.sample<QuadLanes::PerLane>(key_, 0.0f, 0.0f, 1.0f, true, texel_);
     for (int i = 0; i < 4; ++i) envColor_[i] = state.texture.envColor[i];
 }

@@ -151,7 +151,7 @@ template <class L>
             continue;
         }
         if (c.count == 0) continue;
-        FragmentLanes<L> lanes(first.fragment, fb.height());
+        FragmentLanes<L> lanes(key, first.fragment, fb.height());
         Int at = placeCoverage<L>(L::ints(0), 0, c);
         Mask group = L::lanesBetween(0, c.count - 1);
         int used = c.count;
