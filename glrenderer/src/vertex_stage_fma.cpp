@@ -3,20 +3,27 @@
 // float operations in the same order, so the bits match theirs.
 #include <immintrin.h>
 
+#include <array>
+
 #include "column_transform.h"
 #include "vertex_stage.h"
 
 namespace glrenderer {
 namespace {
 
-// clipOutcode's plane bits from the lanes (x, y, z) of w - p and of p + w that are outside
-// (not >= 0, so NaN is outside): planes 0, 2, 5 are w - x, w - y, w - z; 1, 3, 4 are x + w,
-// y + w, z + w.
-Outcode outcodeFromLanes(int outsideMinus, int outsidePlus) {
-    const int minus = (outsideMinus & 1) | (outsideMinus & 2) << 1 | (outsideMinus & 4) << 3;
-    const int plus = (outsidePlus & 1) << 1 | (outsidePlus & 2) << 2 | (outsidePlus & 4) << 2;
-    return static_cast<Outcode>(minus | plus);
-}
+// clipOutcode's plane bits from the lanes (x, y, z) of w - p (index bits 0-2) and of p + w
+// (bits 3-5) that are outside (not >= 0, so NaN is outside): planes 0, 2, 5 are w - x, w - y,
+// w - z; 1, 3, 4 are x + w, y + w, z + w. A table: the bits moved one by one were a sixth of the
+// stage's instructions.
+constexpr std::array<Outcode, 64> kOutcodeOfLanes = [] {
+    std::array<Outcode, 64> outcodes{};
+    for (int lanes = 0; lanes < 64; ++lanes) {
+        const int minus = lanes & 7, plus = lanes >> 3;
+        outcodes[static_cast<std::size_t>(lanes)] = static_cast<Outcode>(
+            (minus & 1) | (minus & 2) << 1 | (minus & 4) << 3 | (plus & 1) << 1 | (plus & 2) << 2 | (plus & 4) << 2);
+    }
+    return outcodes;
+}();
 
 }  // namespace
 
@@ -32,10 +39,12 @@ Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelvi
         const __m128 p = toClip.apply(vertices[i].position);
         _mm_storeu_ps(&out.clipPositions[i].x, p);
         const __m128 w = _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 3, 3, 3));
-        const int outsideMinus = ~_mm_movemask_ps(_mm_cmpge_ps(_mm_sub_ps(w, p), zero)) & 7;
-        const int outsidePlus = ~_mm_movemask_ps(_mm_cmpge_ps(_mm_add_ps(p, w), zero)) & 7;
-        out.outcodes[i] = outcodeFromLanes(outsideMinus, outsidePlus);
-        anyOutside |= out.outcodes[i];
+        const int insideMinus = _mm_movemask_ps(_mm_cmpge_ps(_mm_sub_ps(w, p), zero));
+        const int insidePlus = _mm_movemask_ps(_mm_cmpge_ps(_mm_add_ps(p, w), zero));
+        const Outcode outcode =
+            kOutcodeOfLanes[static_cast<std::size_t>(~((insideMinus & 7) | (insidePlus & 7) << 3) & 63)];
+        out.outcodes[i] = outcode;
+        anyOutside |= outcode;
 
         const __m128 invW = _mm_div_ps(one, w);
         const __m128 window = _mm_fmadd_ps(_mm_mul_ps(p, invW), scale, translate);
