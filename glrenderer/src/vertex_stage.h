@@ -59,7 +59,7 @@ void lightChunk(BatchChunk& chunk);
 
 // The pass itself, into arrays as long as `vertices`: clip position (the MVP applied by
 // ColumnTransform), clipOutcode and ViewportTransform::apply. Returns the union of the outcodes.
-// CPUs with FMA take a version that works on a vertex's four coordinates at once (without FMA,
+// CPUs with FMA take a version that works on two vertices' coordinates at once (without FMA,
 // apply()'s fused multiply-adds are library calls); the bits are the same.
 struct StagedVertices {
     glm::vec4* clipPositions;

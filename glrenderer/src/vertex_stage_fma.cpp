@@ -1,11 +1,11 @@
-// The vertex stage for CPUs with FMA, compiled with -mfma -msse4.1 and called only after
-// cpuHasFma(). Each lane performs ColumnTransform's, clipOutcode's and ViewportTransform::apply's
+// The vertex stage for CPUs with FMA, compiled with -mfma (and so AVX) -msse4.1 and called only
+// after cpuHasFma(). Each lane performs ColumnTransform's, clipOutcode's and ViewportTransform::apply's
 // float operations in the same order, so the bits match theirs.
 #include <immintrin.h>
 
+#include <algorithm>
 #include <array>
 
-#include "column_transform.h"
 #include "vertex_stage.h"
 
 namespace glrenderer {
@@ -25,33 +25,65 @@ constexpr std::array<Outcode, 64> kOutcodeOfLanes = [] {
     return outcodes;
 }();
 
+// A vertex's outcode from the masks of the lanes of w - p and p + w that are inside, its lanes
+// from bit `first` (0 or 4: the half of a 256-bit register it is in).
+Outcode outcodeOf(int insideMinus, int insidePlus, int first) {
+    const int inside = (insideMinus >> first & 7) | (insidePlus >> first & 7) << 3;
+    return kOutcodeOfLanes[static_cast<std::size_t>(~inside & 63)];
+}
+
 }  // namespace
 
+// Two vertices a step, one in each 128-bit half (AVX, which every FMA CPU has): the same
+// operations on each as on one in four lanes (half the instructions a vertex). An odd count's
+// last vertex is staged in both halves, its second results written over its first.
 Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
                          const ViewportTransform& viewport, const StagedVertices& out) {
-    const ColumnTransform toClip(modelviewProjection);
-    const __m128 scale = _mm_setr_ps(viewport.scaleX(), viewport.scaleY(), viewport.scaleZ(), 0.0f);
-    const __m128 translate = _mm_setr_ps(viewport.translateX(), viewport.translateY(), viewport.translateZ(), 0.0f);
-    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+    const auto column = [&](int k) {
+        return _mm256_broadcast_ps(reinterpret_cast<const __m128*>(&modelviewProjection[4 * k]));
+    };
+    const __m256 c0 = column(0), c1 = column(1), c2 = column(2), c3 = column(3);
+    const __m256 scale = _mm256_setr_ps(viewport.scaleX(), viewport.scaleY(), viewport.scaleZ(), 0.0f,
+                                        viewport.scaleX(), viewport.scaleY(), viewport.scaleZ(), 0.0f);
+    const __m256 translate = _mm256_setr_ps(viewport.translateX(), viewport.translateY(), viewport.translateZ(), 0.0f,
+                                            viewport.translateX(), viewport.translateY(), viewport.translateZ(), 0.0f);
+    const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+    // (The arrays in locals: stored through, they could be `out` itself, read again each time.)
+    glm::vec4* const clipPositions = out.clipPositions;
+    Outcode* const outcodes = out.outcodes;
+    WindowVertex* const windowVertices = out.windowVertices;
     Outcode anyOutside = 0;
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-        if (i + kVertexFetchAhead < vertices.size()) __builtin_prefetch(&vertices[i + kVertexFetchAhead]);
-        const __m128 p = toClip.apply(vertices[i].position);
-        _mm_storeu_ps(&out.clipPositions[i].x, p);
-        const __m128 w = _mm_shuffle_ps(p, p, _MM_SHUFFLE(3, 3, 3, 3));
-        const int insideMinus = _mm_movemask_ps(_mm_cmpge_ps(_mm_sub_ps(w, p), zero));
-        const int insidePlus = _mm_movemask_ps(_mm_cmpge_ps(_mm_add_ps(p, w), zero));
-        const Outcode outcode =
-            kOutcodeOfLanes[static_cast<std::size_t>(~((insideMinus & 7) | (insidePlus & 7) << 3) & 63)];
-        out.outcodes[i] = outcode;
-        anyOutside |= outcode;
+    for (std::size_t i = 0; i < vertices.size(); i += 2) {
+        const std::size_t j = std::min(i + 1, vertices.size() - 1);
+        if (i + kVertexFetchAhead + 1 < vertices.size()) {
+            __builtin_prefetch(&vertices[i + kVertexFetchAhead]);
+            __builtin_prefetch(&vertices[i + kVertexFetchAhead + 1]);
+        }
+        const __m256 v = _mm256_loadu2_m128(&vertices[j].position.x, &vertices[i].position.x);
+        // ColumnTransform::apply's products and sums, in its order.
+        __m256 p =
+            _mm256_add_ps(_mm256_mul_ps(c0, _mm256_permute_ps(v, 0x00)), _mm256_mul_ps(c1, _mm256_permute_ps(v, 0x55)));
+        p = _mm256_add_ps(p, _mm256_mul_ps(c2, _mm256_permute_ps(v, 0xAA)));
+        p = _mm256_add_ps(p, _mm256_mul_ps(c3, _mm256_permute_ps(v, 0xFF)));
+        _mm256_storeu2_m128(&clipPositions[j].x, &clipPositions[i].x, p);
+        const __m256 w = _mm256_permute_ps(p, 0xFF);
+        // Not >= 0 (ordered: NaN is outside) is outside.
+        const int insideMinus = _mm256_movemask_ps(_mm256_cmp_ps(_mm256_sub_ps(w, p), zero, _CMP_GE_OS));
+        const int insidePlus = _mm256_movemask_ps(_mm256_cmp_ps(_mm256_add_ps(p, w), zero, _CMP_GE_OS));
+        const Outcode first = outcodeOf(insideMinus, insidePlus, 0), second = outcodeOf(insideMinus, insidePlus, 4);
+        outcodes[i] = first;
+        outcodes[j] = second;
+        anyOutside |= first | second;
 
-        const __m128 invW = _mm_div_ps(one, w);
-        const __m128 window = _mm_fmadd_ps(_mm_mul_ps(p, invW), scale, translate);
-        WindowVertex& windowVertex = out.windowVertices[i];
-        _mm_storeu_ps(&windowVertex.x, _mm_blend_ps(window, invW, 0b1000));  // x, y, z, invW
-        _mm_storeu_ps(&windowVertex.color.x, _mm_loadu_ps(&vertices[i].color.x));
-        windowVertex.fogCoord = 0.0f;  // (the stage sets it after the pass when fog is on)
+        const __m256 invW = _mm256_div_ps(one, w);
+        const __m256 window = _mm256_fmadd_ps(_mm256_mul_ps(p, invW), scale, translate);
+        const __m256 xyzInvW = _mm256_blend_ps(window, invW, 0b10001000);
+        for (const std::size_t k : {i, j}) {
+            WindowVertex& windowVertex = windowVertices[k];
+            _mm_storeu_ps(&windowVertex.color.x, _mm_loadu_ps(&vertices[k].color.x));
+            windowVertex.fogCoord = 0.0f;  // (the stage sets it after the pass when fog is on)
+        }
+        _mm256_storeu2_m128(&windowVertices[j].x, &windowVertices[i].x, xyzInvW);  // x, y, z, invW
     }
     return anyOutside;
 }
