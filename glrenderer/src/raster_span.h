@@ -9,7 +9,6 @@
 #include <span>
 
 #include "fragment_inputs.h"
-#include "glrenderer/invariant.h"
 #include "raster_triangle.h"
 
 // The row walkers below are inlined into the fragment routines of every instruction set: each
@@ -182,8 +181,8 @@ void rasterizeTallArea(const RasterTriangle& triangle, const PixelRect& area, Fr
 [[gnu::always_inline]] inline void rasterizeTriangleSpans(const RasterTriangle& t, const PixelRect& rect,
                                                           Framebuffer& fb, FragmentCounts& counts,
                                                           const FragmentRoutine& routine) {
-    // A tile's rectangle lies inside the framebuffer, so an area cut from it does too.
-    MYGL_INVARIANT(rect.minX >= 0 && rect.minY >= 0 && rect.maxX < fb.width() && rect.maxY < fb.height());
+    // (`rect` is a tile's, inside the framebuffer: drawTile. No invariant check here: this is
+    // inlined into the ISA files, which must share no function with the rest, IsaObjectsShareNoCode.)
     const PixelRect area{std::max(t.minX, rect.minX), std::min(t.maxX, rect.maxX), std::max(t.minY, rect.minY),
                          std::min(t.maxY, rect.maxY)};
     if (area.minX > area.maxX || area.minY > area.maxY) return;

@@ -230,6 +230,8 @@ void TileRasterizer::drawTile(std::size_t tile, FragmentCounts& counts, bool pai
     const int size = tileSize();
     const PixelRect rect{tx * size, std::min((tx + 1) * size, binnedWidth_) - 1, ty * size,
                          std::min((ty + 1) * size, binnedHeight_) - 1};
+    // The routines write the areas they cut from the tile through raw pointers.
+    MYGL_INVARIANT(rect.maxX < framebuffer_.width() && rect.maxY < framebuffer_.height());
     const std::span<BinEntry> bin = bins_[tile].entries();
     if (paintersSort) {
         std::stable_sort(bin.begin(), bin.end(),
