@@ -95,6 +95,8 @@ void BatchSetup::setUp(const SubmittedBatch& batch, TriangleTarget& target, Stat
         (batch.state->shadeModel == ShadeModel::Flat && batch.colorsPerVertex) || batch.quadSplit == QuadSplit::V1V3;
     const bool drawModuleFills = fillsThroughDrawModule(*batch.state);
     FragmentKey key = triangleFragmentKey(*batch.state, batch.methods);
+    // (Two-sided lighting gives back faces other colours, unchecked.)
+    if (vertexStage_.alphaOne() && !batch.state->twoSidedColors) key = withAlphaOne(key);
     const bool drawModuleOffsets = drawModuleFills && key.depthOffset;
     key.depthOffset = key.depthOffset && !drawModuleOffsets;
     const FragmentChoice fragments(bestFragmentPaths(), key, *batch.state);

@@ -82,6 +82,11 @@ struct FragmentKey {
 
     DeferredPass deferredPass = DeferredPass::None;
 
+    // Every vertex colour of the draw has alpha 1 (glColor3, an opaque material) and the alpha
+    // goes to the colour word untouched (withAlphaOne): the fragments' alpha byte is 255, what
+    // interpolating the ones and converting them gives, so alpha is not interpolated.
+    bool alphaOne = false;
+
     // Whether the texture environment colours the fragments.
     constexpr bool texturesColor() const { return textureEnv != TextureEnv::Off && texelUse == TexelUse::Color; }
 
@@ -176,6 +181,15 @@ inline FragmentKey withTexture(FragmentKey key, const TextureState& t) {
     }
     return withTexture(key, t.env, t.oneDimensional, t.base, t.minFilter, t.magFilter, t.mipFilter, t.wrapS, t.wrapT,
                        t.use);
+}
+
+// `key` for a draw whose vertex colours all have alpha 1: alphaOne where the alpha would only be
+// interpolated and stored, under smooth shading (a flat colour is one word already) and with
+// nothing that reads it: no texturing, alpha test, blending, logic op or colour mask.
+constexpr FragmentKey withAlphaOne(FragmentKey key) {
+    key.alphaOne = key.shading != Shading::Flat && !key.texturesColor() && key.alphaFunc == CompareFunc::Always &&
+                   !key.readsColor();
+    return key;
 }
 
 // The key of a draw's state for primitives that interpolate their colour (triangles, lines).

@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <array>
 #include <span>
 #include <string_view>
 
@@ -17,11 +19,9 @@ constexpr FragmentKey modulatedTexture(Shading shading, TextureBase base, bool m
                        TextureWrap::Repeat, TextureWrap::Repeat);
 }
 
-// The keys with fast paths of their own at every vector width: what scenes draw with nearly
-// always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in each shading), smooth
-// depth-tested LINEAR fog, the usual alpha blending and the common textures. Each is
-// compiled with its key as a constant, so that it holds only the steps the key turns on.
-inline constexpr FragmentKey kFastFragmentKeys[] = {
+// What scenes draw with nearly always (no depth test, or GL_LESS / GL_LEQUAL with depth writes, in
+// each shading), smooth depth-tested LINEAR fog, the usual alpha blending and the common textures.
+inline constexpr FragmentKey kCommonFragmentKeys[] = {
     makeFragmentKey(Shading::Flat, false, CompareFunc::Always, false),
     makeFragmentKey(Shading::Linear, false, CompareFunc::Always, false),
     makeFragmentKey(Shading::Perspective, false, CompareFunc::Always, false),
@@ -60,6 +60,22 @@ inline constexpr FragmentKey kFastFragmentKeys[] = {
                 TextureBase::Rgba, TextureFilter::Nearest, TextureFilter::Nearest, MipmapFilter::None,
                 TextureWrap::ClampToEdge, TextureWrap::ClampToEdge),
 };
+
+// The keys with fast paths of their own at every vector width: the common keys, then the alphaOne
+// key of each that has one (withAlphaOne), so that a draw of alpha-one colours never loses its
+// fast path. Each is compiled with its key as a constant, so that it holds only the steps the
+// key turns on.
+inline constexpr auto kFastFragmentKeys = [] {
+    constexpr auto hasAlphaOneKey = [](const FragmentKey& key) { return withAlphaOne(key).alphaOne; };
+    std::array<FragmentKey, std::size(kCommonFragmentKeys) + std::ranges::count_if(kCommonFragmentKeys, hasAlphaOneKey)>
+        keys{};
+    std::size_t next = 0;
+    for (const FragmentKey& key : kCommonFragmentKeys) keys[next++] = key;
+    for (const FragmentKey& key : kCommonFragmentKeys) {
+        if (hasAlphaOneKey(key)) keys[next++] = withAlphaOne(key);
+    }
+    return keys;
+}();
 
 // The fragment routines of one vector width: a fast path per key of kFastFragmentKeys, and one
 // routine that reads any key at run time (per block of lanes) for the others. The scalar

@@ -151,9 +151,10 @@ public:
             const Float f = fog_.factor(key.fog, L::mul(fogCoord_.at(x, y), w));
             r = fog_.apply(0, f, r), g = fog_.apply(1, f, g), b = fog_.apply(2, f, b);
         }
+        const Int alpha =
+            key.alphaOne ? L::ints(static_cast<int>(0xFF000000u)) : L::template shiftLeft<24>(fragmentToUnorm8<L>(a));
         return L::bitOr(L::bitOr(fragmentToUnorm8<L>(r), L::template shiftLeft<8>(fragmentToUnorm8<L>(g))),
-                        L::bitOr(L::template shiftLeft<16>(fragmentToUnorm8<L>(b)),
-                                 L::template shiftLeft<24>(fragmentToUnorm8<L>(a))));
+                        L::bitOr(L::template shiftLeft<16>(fragmentToUnorm8<L>(b)), alpha));
     }
 
 private:

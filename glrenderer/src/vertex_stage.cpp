@@ -36,8 +36,10 @@ Outcode VertexStage::run(const SubmittedBatch& batch, const ViewportTransform& v
     windowVertices_.resize(count);
     const StagedVertices out{clipPositions_.data(), outcodes_.data(), windowVertices_.data()};
     const Matrix& mvp = batch.transform.modelviewProjection;
-    Outcode anyOutside = cpuHasFma() ? stageVerticesFma(batch.vertices, mvp, viewport, out)
-                                     : stageVertices(batch.vertices, mvp, viewport, out);
+    const StagedSummary staged = cpuHasFma() ? stageVerticesFma(batch.vertices, mvp, viewport, out)
+                                             : stageVertices(batch.vertices, mvp, viewport, out);
+    Outcode anyOutside = staged.anyOutside;
+    alphaOne_ = staged.alphaOne;
     snapped_.resize(count);
     for (std::size_t i = 0; i < count; ++i) snapped_[i] = snapVertex(windowVertices_[i]);
     fogCoordinates_.clear();
@@ -116,19 +118,20 @@ void lightChunk(BatchChunk& chunk) {
     }
 }
 
-Outcode stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
-                      const ViewportTransform& viewport, const StagedVertices& out) {
+StagedSummary stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+                            const ViewportTransform& viewport, const StagedVertices& out) {
     const ColumnTransform toClip(modelviewProjection);
-    Outcode anyOutside = 0;
+    StagedSummary summary;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         if (i + kVertexFetchAhead < vertices.size()) __builtin_prefetch(&vertices[i + kVertexFetchAhead]);
         glm::vec4& clip = out.clipPositions[i];
         _mm_storeu_ps(&clip.x, toClip.apply(vertices[i].position));
         out.outcodes[i] = clipOutcode(clip);
-        anyOutside |= out.outcodes[i];
+        summary.anyOutside |= out.outcodes[i];
+        summary.alphaOne &= vertices[i].color.a == 1.0f;
         out.windowVertices[i] = viewport.apply(clip, vertices[i].color);
     }
-    return anyOutside;
+    return summary;
 }
 
 }  // namespace glrenderer

@@ -29,6 +29,8 @@ public:
     std::span<const WindowVertex> windowVertices() const { return windowVertices_; }
     // Each window vertex snapped, and whether it can be set up (snapVertex).
     std::span<const SnappedVertex> snapped() const { return snapped_; }
+    // Whether every window vertex's colour has alpha 1 (FragmentKey::alphaOne).
+    bool alphaOne() const { return alphaOne_; }
 
     // Vertex i's back and secondary colours in the batch last run: zeros when its state has none.
     const LightingOutputs& lightingOutputsOf(std::size_t i) const {
@@ -48,6 +50,7 @@ private:
     std::vector<Outcode> outcodes_;
     std::vector<WindowVertex> windowVertices_;
     std::vector<SnappedVertex> snapped_;
+    bool alphaOne_ = false;
     std::vector<ClipVertex> clipVertices_;
     std::span<const LightingOutputs> outputs_;   // the batch's, with needsLightingOutputs
     std::vector<LightingOutputs> unlitOutputs_;  // zeros, for such a batch left unlit
@@ -58,7 +61,8 @@ private:
 void lightChunk(BatchChunk& chunk);
 
 // The pass itself, into arrays as long as `vertices`: clip position (the MVP applied by
-// ColumnTransform), clipOutcode and ViewportTransform::apply. Returns the union of the outcodes.
+// ColumnTransform), clipOutcode and ViewportTransform::apply. Returns the union of the outcodes
+// and whether every colour has alpha 1 (VertexStage::alphaOne).
 // CPUs with FMA take a version that works on two vertices' coordinates at once (without FMA,
 // apply()'s fused multiply-adds are library calls); the bits are the same.
 struct StagedVertices {
@@ -66,11 +70,15 @@ struct StagedVertices {
     Outcode* outcodes;
     WindowVertex* windowVertices;
 };
-Outcode stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
-                      const ViewportTransform& viewport, const StagedVertices& out);
+struct StagedSummary {
+    Outcode anyOutside = 0;
+    bool alphaOne = true;
+};
+StagedSummary stageVertices(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+                            const ViewportTransform& viewport, const StagedVertices& out);
 
 // The version for CPUs with FMA, compiled for them; only call it after cpuHasFma().
-Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
-                         const ViewportTransform& viewport, const StagedVertices& out);
+StagedSummary stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+                               const ViewportTransform& viewport, const StagedVertices& out);
 
 }  // namespace glrenderer

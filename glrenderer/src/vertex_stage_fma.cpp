@@ -37,8 +37,8 @@ Outcode outcodeOf(int insideMinus, int insidePlus, int first) {
 // Two vertices a step, one in each 128-bit half (AVX, which every FMA CPU has): the same
 // operations on each as on one in four lanes (half the instructions a vertex). An odd count's
 // last vertex is staged in both halves, its second results written over its first.
-Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
-                         const ViewportTransform& viewport, const StagedVertices& out) {
+StagedSummary stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelviewProjection,
+                               const ViewportTransform& viewport, const StagedVertices& out) {
     const auto column = [&](int k) {
         return _mm256_broadcast_ps(reinterpret_cast<const __m128*>(&modelviewProjection[4 * k]));
     };
@@ -53,6 +53,7 @@ Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelvi
     Outcode* const outcodes = out.outcodes;
     WindowVertex* const windowVertices = out.windowVertices;
     Outcode anyOutside = 0;
+    __m256 colorsOne = _mm256_castsi256_ps(_mm256_set1_epi32(-1));  // the lanes of colours equal to 1 so far
     for (std::size_t i = 0; i < vertices.size(); i += 2) {
         const std::size_t j = std::min(i + 1, vertices.size() - 1);
         if (i + kVertexFetchAhead + 1 < vertices.size()) {
@@ -78,14 +79,14 @@ Outcode stageVerticesFma(std::span<const Vertex> vertices, const Matrix& modelvi
         const __m256 invW = _mm256_div_ps(one, w);
         const __m256 window = _mm256_fmadd_ps(_mm256_mul_ps(p, invW), scale, translate);
         const __m256 xyzInvW = _mm256_blend_ps(window, invW, 0b10001000);
-        for (const std::size_t k : {i, j}) {
-            WindowVertex& windowVertex = windowVertices[k];
-            _mm_storeu_ps(&windowVertex.color.x, _mm_loadu_ps(&vertices[k].color.x));
-            windowVertex.fogCoord = 0.0f;  // (the stage sets it after the pass when fog is on)
-        }
+        const __m256 colors = _mm256_loadu2_m128(&vertices[j].color.x, &vertices[i].color.x);
+        colorsOne = _mm256_and_ps(colorsOne, _mm256_cmp_ps(colors, one, _CMP_EQ_OQ));
+        _mm256_storeu2_m128(&windowVertices[j].color.x, &windowVertices[i].color.x, colors);
+        windowVertices[i].fogCoord = windowVertices[j].fogCoord = 0.0f;  // (set after the pass when fog is on)
         _mm256_storeu2_m128(&windowVertices[j].x, &windowVertices[i].x, xyzInvW);  // x, y, z, invW
     }
-    return anyOutside;
+    constexpr int kAlphaLanes = 0b10001000;
+    return {anyOutside, (_mm256_movemask_ps(colorsOne) & kAlphaLanes) == kAlphaLanes};
 }
 
 }  // namespace glrenderer

@@ -62,6 +62,7 @@ std::string describe(const FragmentKey& key) {
     if (key.logicOp != LogicOp::Copy) text += " logic op " + std::to_string(static_cast<int>(key.logicOp));
     if (key.colorMask) text += " colour mask";
     if (key.colorSum) text += " colour sum";
+    if (key.alphaOne) text += " alpha one";
     return text;
 }
 
@@ -121,7 +122,7 @@ FragmentKey randomKey(std::mt19937& random) {
                           static_cast<TextureFilter>(coin(random)), static_cast<MipmapFilter>(mip(random)),
                           static_cast<TextureWrap>(coin(random)), static_cast<TextureWrap>(coin(random)));
     }
-    return key;
+    return coin(random) ? withAlphaOne(key) : key;
 }
 
 // A texture of width x height texels and its mipmaps, random texels.
@@ -241,6 +242,8 @@ TEST(FragmentPaths, FastKeysFindTheirPathsAndOtherKeysTheRoutineForAnyKey) {
             const bool elsewhere = paths->lodPaths() && fast.key.samplesLod();
             const FragmentRoutine& expected = elsewhere ? paths->lodPaths()().routine(fast.key) : fast.routine;
             EXPECT_EQ(&paths->routine(fast.key), &expected) << paths->name();
+            // A draw of alpha-one colours keeps a fast path.
+            EXPECT_NE(&paths->routine(withAlphaOne(fast.key)), &paths->anyKey()) << describe(fast.key);
         }
         const FragmentKey greater = makeFragmentKey(Shading::Perspective, true, CompareFunc::Greater, true);
         EXPECT_EQ(&paths->routine(greater), &paths->anyKey()) << paths->name();
@@ -249,7 +252,7 @@ TEST(FragmentPaths, FastKeysFindTheirPathsAndOtherKeysTheRoutineForAnyKey) {
     EXPECT_EQ(makeFragmentKey(Shading::Flat, false, CompareFunc::Less, true),
               makeFragmentKey(Shading::Flat, false, CompareFunc::Greater, false));
     // A flat key that textures takes its linear key's routine (routineKey), keeping its own key.
-    const FragmentKey textured = kFastFragmentKeys[std::size(kFastFragmentKeys) - 3];
+    const FragmentKey textured = kCommonFragmentKeys[std::size(kCommonFragmentKeys) - 3];
     ASSERT_TRUE(textured.texturesColor() && textured.shading == Shading::Linear);
     FragmentKey flatTextured = textured;
     flatTextured.shading = Shading::Flat;
@@ -390,6 +393,61 @@ TEST(FragmentPaths, TrianglesMatchThePerPixelReferenceInEveryPath) {
 
 TEST(FragmentPaths, TrianglesWithALevelOfDetailMatchThePerPixelReferenceInEveryPath) {
     checkTrianglesAgainstThePerPixelReference(6, true);
+}
+
+// A draw whose vertex colours all have alpha 1 takes its key's alphaOne paths (FragmentKey::alphaOne),
+// which store alpha 255 without interpolating it: the same bits as interpolating the ones, in
+// perspective (where alpha / w is the plane of 1 / w) and in the orthographic case, from every
+// path, with depth tests, fog and the colour sum that leave alpha alone.
+TEST(FragmentPaths, AlphaOneTrianglesMatchTheirInterpolatedAlphaInEveryPath) {
+    std::mt19937 random(12);
+    std::uniform_int_distribution<int> depthFunc(0, 7), coin(0, 1), fourth(0, 3);
+    const std::vector<const FragmentPaths*> allPaths = pathsOfThisCpu();
+    const PixelRect whole{0, kWidth - 1, 0, kHeight - 1};
+    const glm::vec4 flatColor{0.3f, 0.6f, 0.9f, 1.0f};
+    int drawn = 0, fastAlphaOne = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const float spread = i % 3 == 0 ? 3.0f : (i % 3 == 1 ? 30.0f : 400.0f);
+        WindowVertex vertices[3] = {randomVertex(random, spread), randomVertex(random, spread),
+                                    randomVertex(random, spread)};
+        for (WindowVertex& v : vertices) {
+            v.color.a = 1.0f;
+            if (i % 4 == 3) v.invW = 1.0f;
+        }
+        SetupTriangle setup{{&vertices[0], &vertices[1], &vertices[2]}, {}, 0, &flatColor};
+        for (int k = 0; k < 3; ++k) setup.fixed[k] = snap(vertices[k]);
+        setup.area = fixedArea(setup.fixed[0], setup.fixed[1], setup.fixed[2]);
+        if (setup.area == 0) continue;
+        DrawState state;
+        state.depthTest = coin(random);
+        state.depthFunc = coin(random) ? CompareFunc::Less : static_cast<CompareFunc>(depthFunc(random));
+        state.depthWrite = state.depthFunc == CompareFunc::Less || coin(random);
+        state.secondaryColors = fourth(random) == 0;
+        if (fourth(random) == 0) state.fog = randomFog(random);
+        const FragmentKey key = triangleFragmentKey(state, Methods{});
+        ASSERT_TRUE(withAlphaOne(key).alphaOne) << describe(key);
+        const std::vector<std::uint32_t> color = randomPixels(random, 0xFFFFFFFF);
+        const std::vector<std::uint32_t> depth = randomPixels(random, kDepthMax24);
+        RasterTriangle interpolated;
+        if (!prepareTriangle(setup, FragmentChoice(scalarFragmentPaths(), key, state), RasterMethod::Exact, whole,
+                             interpolated)) {
+            continue;
+        }
+        ++drawn;
+        Target expected(color, depth);
+        rasterizeTriangleExact(interpolated, whole, expected.framebuffer, expected.counts);
+        for (const FragmentPaths* paths : allPaths) {
+            RasterTriangle alphaOne;
+            ASSERT_TRUE(prepareTriangle(setup, FragmentChoice(*paths, withAlphaOne(key), state), RasterMethod::Exact,
+                                        whole, alphaOne));
+            ASSERT_TRUE(alphaOne.fragment.key().alphaOne);
+            fastAlphaOne += alphaOne.fragment.routine != &paths->anyKey();
+            expectSpansMatch(expected, alphaOne, whole, *paths, color, depth, i);
+        }
+    }
+    EXPECT_GT(drawn, 1500);
+    // Fast paths drew a good part (not other depth functions, the colour sum, or most fog).
+    EXPECT_GT(fastAlphaOne, drawn * static_cast<int>(allPaths.size()) / 3);
 }
 
 // Larger textures, whose levels of detail stay on one pair of levels over most blocks (the

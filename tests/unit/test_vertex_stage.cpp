@@ -60,7 +60,8 @@ TEST(VertexStage, FmaVersionMatchesTheScalarOperationsBitForBit) {
     std::vector<glm::vec4> clip(vertices.size());
     std::vector<Outcode> outcodes(vertices.size());
     std::vector<WindowVertex> window(vertices.size());
-    const Outcode anyOutside = stageVerticesFma(vertices, mvp, viewport, {clip.data(), outcodes.data(), window.data()});
+    const StagedSummary staged =
+        stageVerticesFma(vertices, mvp, viewport, {clip.data(), outcodes.data(), window.data()});
     Outcode expectedAnyOutside = 0;
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         glm::vec4 expectedClip;
@@ -78,5 +79,48 @@ TEST(VertexStage, FmaVersionMatchesTheScalarOperationsBitForBit) {
                 << "vertex " << i << " component " << k << ": " << got[k] << " vs " << want[k];
         }
     }
-    EXPECT_EQ(anyOutside, expectedAnyOutside);
+    EXPECT_EQ(staged.anyOutside, expectedAnyOutside);
+    EXPECT_TRUE(staged.alphaOne);  // every test vertex's alpha is 1
+}
+
+// Whether every colour of a batch has alpha 1 (what lets its triangles store alpha 255 without
+// interpolating it, FragmentKey::alphaOne): one vertex a hair below, or NaN, makes it false.
+TEST(VertexStage, FindsWhetherEveryColourHasAlphaOne) {
+    Framebuffer framebuffer(8, 8);
+    Pipeline pipeline(framebuffer);
+    DrawState state;
+    state.viewport = {0, 0, 8, 8};
+    std::vector<Vertex> vertices(9, Vertex{{0.5f, -0.25f, 0.0f, 1.0f}, {0.2f, 0.4f, 0.6f, 1.0f}});
+    SubmittedBatch batch;
+    batch.state = pipeline.intern(state);
+    batch.mode = PrimitiveMode::Triangles;
+    batch.vertices = vertices;
+    VertexStage stage(vertices.size());
+    const ViewportTransform viewport(state, framebuffer.height());
+    std::vector<glm::vec4> clip(vertices.size());
+    std::vector<Outcode> outcodes(vertices.size());
+    std::vector<WindowVertex> window(vertices.size());
+    // The stage's answer, which each version of the pass gives too.
+    const auto alphaOne = [&] {
+        const StagedVertices out{clip.data(), outcodes.data(), window.data()};
+        const bool scalar = stageVertices(vertices, kIdentity, viewport, out).alphaOne;
+        if (cpuHasFma()) {
+            EXPECT_EQ(stageVerticesFma(vertices, kIdentity, viewport, out).alphaOne, scalar);
+        }
+        stage.run(batch, viewport);
+        EXPECT_EQ(stage.alphaOne(), scalar);
+        return scalar;
+    };
+    EXPECT_TRUE(alphaOne());
+    // Each place (the FMA version's two halves, and the odd count's last vertex, staged in both).
+    for (Vertex& v : vertices) {
+        for (const float alpha : {std::nextafter(1.0f, 0.0f), std::numeric_limits<float>::quiet_NaN(), 0.0f}) {
+            v.color.a = alpha;
+            EXPECT_FALSE(alphaOne()) << alpha << " at vertex " << &v - vertices.data();
+        }
+        v.color.a = 1.0f;
+    }
+    EXPECT_TRUE(alphaOne());
+    vertices[4].color = {1.0f, 1.0f, 1.0f, 0.5f};  // ones, but not in alpha
+    EXPECT_FALSE(alphaOne());
 }
