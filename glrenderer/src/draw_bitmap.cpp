@@ -53,11 +53,11 @@ void Pipeline::drawBitmap(const DrawState& state, const Bitmap& bitmap) {
     fragment.setPath(fragments.varyingW);
     fragment.ops = fragments.ops;
     fragment.setFlatColor(bitmap.color);
-    fragment.depth = {bitmap.z, 0.0f, 0.0f};  // z at every pixel: 0 * x + z is z
+    fragment.setDepth({bitmap.z, 0.0f, 0.0f});  // z at every pixel: 0 * x + z is z
     // Fog: the reference's bitmap quad carries no fog coordinate, so its fragments read 0 (not
     // the raster distance): LINEAR fog gives the factor of distance 0, EXP and EXP2 none.
     fragment.fog = state.fog;
-    fragment.invW = {1.0f, 0.0f, 0.0f};
+    fragment.setInvW({1.0f, 0.0f, 0.0f});
     fragment.fogCoord = {0.0f, 0.0f, 0.0f};
     if (fragment.key().textureEnv != TextureEnv::Off) setBitmapTexture(fragment, fragments, bitmap, fb.height());
     FragmentCounts counts;

@@ -83,10 +83,11 @@ struct FragmentInputs {
     // The routine first, then the planes most keys read, then the rest: a triangle's setup
     // writes and its tiles read only the cache lines its key uses (RasterTriangle).
     const FragmentRoutine* routine = nullptr;
-    FragmentOpsConstants ops;     // (issue 16)
-    AttributePlane color[4];      // colour, or colour / w under perspective shading
-    AttributePlane invW;          // 1 / w, under perspective shading
-    AttributePlane depth;         // window z, with the depth test
+    FragmentOpsConstants ops;  // (issue 16)
+    AttributePlanes<4> color;  // colour, or colour / w under perspective shading
+    // 1 / w under perspective shading, and window z with the depth test (invW(), depth()): side
+    // by side, as a triangle's setup computes them.
+    AttributePlanes<2> invWAndDepth;
     std::uint32_t flatColor = 0;  // the fragment colour word under flat shading
     float depthOffset = 0.0f;     // polygon offset, with a key that has it
     // Fog (issue 16), with a key that has it: the fog coordinate's plane, divided by w as a
@@ -129,6 +130,10 @@ struct FragmentInputs {
     // The key of the routine that draws the primitive (a fast path serves a flat key that reads
     // its colour planes with its linear key's routine, bit for bit: routineKey).
     const FragmentKey& key() const { return routine->key ? *routine->key : anyKey; }
+    AttributePlane invW() const { return invWAndDepth[0]; }
+    AttributePlane depth() const { return invWAndDepth[1]; }
+    void setInvW(const AttributePlane& plane) { invWAndDepth.set(0, plane); }
+    void setDepth(const AttributePlane& plane) { invWAndDepth.set(1, plane); }
     // Draws the pixels [begin, end] of `row` with the primitive's routine.
     void shadeSpan(int row, int begin, int end, Framebuffer& framebuffer, FragmentCounts& counts) const {
         routine->span(*this, row, begin, end, framebuffer, counts);
@@ -155,7 +160,7 @@ template <class Planes, class... Vertices>
 void FragmentInputs::setTexture(const Texture* image, const glm::vec4& envColor, const glm::vec4& borderColor,
                                 const Planes& planes, const Vertices&... v) {
     setTextureImage(image, envColor, borderColor);
-    invW = planes.plane(v.invW...);
+    setInvW(planes.plane(v.invW...));
     texCoord[0] = planes.plane((v.texCoord.s * v.invW)...);
     texCoord[1] = planes.plane((v.texCoord.t * v.invW)...);
     texCoord[2] = planes.plane((v.texCoord.q * v.invW)...);

@@ -38,8 +38,8 @@ public:
     // key never reads are not broadcast (called out of line, from the fifth routine calling it, it
     // was 14% of a mesh's CPU).
     [[gnu::always_inline]] FragmentLanes(const FragmentKey& key, const FragmentInputs& in, int framebufferHeight)
-        : depth_(in.depth),
-          invW_(in.invW),
+        : depth_(in.depth()),
+          invW_(in.invW()),
           red_(in.color[0]),
           green_(in.color[1]),
           blue_(in.color[2]),
@@ -64,7 +64,7 @@ public:
     // `lanes` only: its planes, flat colour and depth offset, for a block that holds fragments of
     // several primitives (shadePackedRun).
     [[gnu::always_inline]] void take(const FragmentInputs& in, typename L::Mask lanes) {
-        depth_.take(in.depth, lanes), invW_.take(in.invW, lanes);
+        depth_.take(in.depth(), lanes), invW_.take(in.invW(), lanes);
         red_.take(in.color[0], lanes), green_.take(in.color[1], lanes);
         blue_.take(in.color[2], lanes), alpha_.take(in.color[3], lanes);
         secondaryRed_.take(in.secondaryColor[0], lanes), secondaryGreen_.take(in.secondaryColor[1], lanes);

@@ -79,7 +79,7 @@ public:
         : s_(in.texCoord[0]),
           t_(in.texCoord[1]),
           q_(in.texCoord[2]),
-          invW_(in.invW),
+          invW_(in.invW()),
           texture_(key.textureEnv != TextureEnv::Off ? in.texture : nullptr),
           envColor_{L::floats(in.textureEnvColor[0]), L::floats(in.textureEnvColor[1]),
                     L::floats(in.textureEnvColor[2]), L::floats(in.textureEnvColor[3])},
@@ -91,7 +91,7 @@ public:
     // The planes of `in` in the lanes `lanes` only (FragmentLanes::take).
     [[gnu::always_inline]] void take(const FragmentInputs& in, Mask lanes) {
         s_.take(in.texCoord[0], lanes), t_.take(in.texCoord[1], lanes), q_.take(in.texCoord[2], lanes);
-        invW_.take(in.invW, lanes);
+        invW_.take(in.invW(), lanes);
     }
 
     // The texel colour of the fragments at (x, y) (w their interpolated w), each channel in

@@ -288,7 +288,7 @@ void queueLine(const WindowVertex& start, const WindowVertex& end, const glm::ve
         fragment.setFlatColor(flatColor, start.secondaryColor);  // both ends carry the flat secondary colour
     } else {
         for (int c = 0; c < 4; ++c) {
-            fragment.color[c] = builder.plane(start.color[c] * start.invW, end.color[c] * end.invW);
+            fragment.color.set(c, builder.plane(start.color[c] * start.invW, end.color[c] * end.invW));
         }
         if (key.colorSum) {
             for (int c = 0; c < 3; ++c) {
@@ -296,13 +296,13 @@ void queueLine(const WindowVertex& start, const WindowVertex& end, const glm::ve
                     builder.plane(start.secondaryColor[c] * start.invW, end.secondaryColor[c] * end.invW);
             }
         }
-        fragment.invW = builder.plane(start.invW, end.invW);
-        fragment.setPath(fragments.path(fragment.invW));
+        fragment.setInvW(builder.plane(start.invW, end.invW));
+        fragment.setPath(fragments.path(fragment.invW()));
     }
-    if (key.depthTest) fragment.depth = builder.plane(start.z, end.z);
+    if (key.depthTest) fragment.setDepth(builder.plane(start.z, end.z));
     if (key.fog != FogMode::Off) {
         fragment.fog = fragments.fog;
-        fragment.invW = builder.plane(start.invW, end.invW);
+        fragment.setInvW(builder.plane(start.invW, end.invW));
         fragment.fogCoord = builder.plane(start.fogCoord * start.invW, end.fogCoord * end.invW);
     }
     if (key.textureEnv != TextureEnv::Off) {

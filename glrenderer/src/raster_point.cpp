@@ -86,10 +86,10 @@ void queuePoint(const WindowVertex& point, const DrawState& state, const Fragmen
     fragment.ops = fragments.ops;
     fragment.polygonStipple = fragments.polygonStipple;  // with a key that has it (unfilled faces')
     fragment.setFlatColor(c, secondary);
-    fragment.depth = {point.z, 0.0f, 0.0f};    // z at every pixel: 0 * x + z is z
+    fragment.setDepth({point.z, 0.0f, 0.0f});  // z at every pixel: 0 * x + z is z
     if (fragment.key().fog != FogMode::Off) {  // the fog coordinate as a perspective attribute, as the colour
         fragment.fog = fragments.fog;
-        fragment.invW = {point.invW, 0.0f, 0.0f};
+        fragment.setInvW({point.invW, 0.0f, 0.0f});
         fragment.fogCoord = {point.fogCoord * point.invW, 0.0f, 0.0f};
     }
     if (fragment.key().textureEnv != TextureEnv::Off) {

@@ -11,9 +11,8 @@
 namespace glrenderer {
 namespace {
 
-// prepareTriangle stores the planes of 1 / w and z as two in a row, and loads a vertex's
-// position and its secondary colour with the fog coordinate as four floats.
-static_assert(offsetof(FragmentInputs, depth) == offsetof(FragmentInputs, invW) + sizeof(AttributePlane));
+// prepareTriangle loads a vertex's position and its secondary colour with the fog coordinate as
+// four floats.
 static_assert(offsetof(WindowVertex, fogCoord) == offsetof(WindowVertex, secondaryColor) + 3 * sizeof(float));
 static_assert(offsetof(WindowVertex, z) == 2 * sizeof(float) && offsetof(WindowVertex, invW) == 3 * sizeof(float));
 
@@ -125,7 +124,7 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
         lanes([&](const WindowVertex& v) {
             const __m128 color = _mm_loadu_ps(&v.color.x);
             return perspective ? _mm_mul_ps(color, oneOverW(v)) : color;
-        }).store(in.color, 0, 4);
+        }).store(in.color);
         if (key.colorSum) {  // (the fourth lane is the fog coordinate, left unused)
             lanes([&](const WindowVertex& v) {
                 const __m128 secondary = _mm_loadu_ps(&v.secondaryColor.x);
@@ -133,15 +132,15 @@ bool prepareTriangle(const SetupTriangle& t, const FragmentChoice& fragments, Ra
             }).store(in.secondaryColor, 0, 3);
         }
     }
-    // 1 / w, z and the fog coordinate / w: the planes invW and depth, which follow each other in
-    // FragmentInputs, and fogCoord (in the next cache line: written only when read).
+    // 1 / w, z and the fog coordinate / w: the planes invWAndDepth, and fogCoord (in the next
+    // cache line: written only when read).
     if (perspective || key.depthTest || key.fog != FogMode::Off || key.textureEnv != TextureEnv::Off) {
         const FourPlanes depth = lanes([&](const WindowVertex& v) {
             const __m128 position = _mm_loadu_ps(&v.x);                                          // x, y, z, 1 / w
             const __m128 fogOverW = _mm_mul_ps(_mm_loadu_ps(&v.secondaryColor.x), oneOverW(v));  // in lane 3
             return _mm_shuffle_ps(position, fogOverW, _MM_SHUFFLE(3, 3, 2, 3));
         });
-        depth.store(&in.invW, 0, 2);
+        depth.store(in.invWAndDepth);
         if (key.fog != FogMode::Off) depth.store(&in.fogCoord, 2, 1);
         // The path from the plane of 1 / w in registers: read back from the record just written, it
         // waited for the stores (a third of this function's time in the torus).

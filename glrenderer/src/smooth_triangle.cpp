@@ -80,10 +80,10 @@ void drawSmoothTriangle(const SmoothVertex& a, const SmoothVertex& b, const Smoo
     fragment.ops = fragments.ops;
     fragment.polygonStipple = fragments.polygonStipple;  // with a key that has it (unfilled faces')
     const FragmentKey& key = fragments.varyingW.key;
-    if (key.depthTest) fragment.depth = planes.plane(v0.z, v1.z, v2.z);
+    if (key.depthTest) fragment.setDepth(planes.plane(v0.z, v1.z, v2.z));
     if (key.fog != FogMode::Off) {
         fragment.fog = fragments.fog;
-        fragment.invW = invW;
+        fragment.setInvW(invW);
         fragment.fogCoord = perspective(v0.fogCoord, v1.fogCoord, v2.fogCoord);
     }
     if (key.textureEnv != TextureEnv::Off) {

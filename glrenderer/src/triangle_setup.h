@@ -96,9 +96,31 @@ struct AttributePlane {
     float at(float x, float y) const { return std::fma(dady, y, std::fma(dadx, x, a0)); }
 };
 
+// N planes side by side, plane i in element i of each array: four of them are FourPlanes'
+// lanes stored as they are, without transposing them into AttributePlanes.
+template <int N>
+struct AttributePlanes {
+    float a0[N] = {}, dadx[N] = {}, dady[N] = {};
+
+    AttributePlane operator[](int i) const { return {a0[i], dadx[i], dady[i]}; }
+    void set(int i, const AttributePlane& p) { a0[i] = p.a0, dadx[i] = p.dadx, dady[i] = p.dady; }
+};
+
 // Four planes at once, lane i of each vector for plane i (a0, dadx, dady as AttributePlane's).
 struct FourPlanes {
     __m128 a0, dadx, dady;
+
+    void store(AttributePlanes<4>& out) const {
+        _mm_storeu_ps(out.a0, a0);
+        _mm_storeu_ps(out.dadx, dadx);
+        _mm_storeu_ps(out.dady, dady);
+    }
+    // The planes of the first two lanes.
+    void store(AttributePlanes<2>& out) const {
+        _mm_storel_pi(reinterpret_cast<__m64*>(out.a0), a0);
+        _mm_storel_pi(reinterpret_cast<__m64*>(out.dadx), dadx);
+        _mm_storel_pi(reinterpret_cast<__m64*>(out.dady), dady);
+    }
 
     // Planes `first` .. `first + count - 1` (count <= 4) to consecutive AttributePlanes, writing
     // nothing past the last one.

@@ -274,10 +274,10 @@ TEST(FragmentPaths, EveryPathMatchesTheGeneralPathOnRandomSpans) {
     for (const NamedRoutine& tested : routinesOfThisCpu()) {
         for (int i = 0; i < 300; ++i) {
             FragmentInputs inputs;
-            for (AttributePlane& c : inputs.color) c = randomPlane(random, -0.1f, 1.1f);
+            for (int c = 0; c < 4; ++c) inputs.color.set(c, randomPlane(random, -0.1f, 1.1f));
             for (AttributePlane& c : inputs.secondaryColor) c = randomPlane(random, -0.1f, 1.1f);
-            inputs.invW = randomPlane(random, 0.25f, 4.0f);
-            inputs.depth = randomPlane(random, -0.1f, 1.1f);
+            inputs.setInvW(randomPlane(random, 0.25f, 4.0f));
+            inputs.setDepth(randomPlane(random, -0.1f, 1.1f));
             inputs.flatColor = word(random);
             inputs.fogCoord = randomPlane(random, -2.0f, 40.0f);
             inputs.fog = randomFog(random);
