@@ -96,8 +96,8 @@ struct AttributePlane {
     float at(float x, float y) const { return std::fma(dady, y, std::fma(dadx, x, a0)); }
 };
 
-// N planes side by side, plane i in element i of each array: four of them are FourPlanes'
-// lanes stored as they are, without transposing them into AttributePlanes.
+// N planes side by side, plane i in element i of each array: FourPlanes stores its lanes into
+// them as they are (into AttributePlanes it transposes them).
 template <int N>
 struct AttributePlanes {
     float a0[N] = {}, dadx[N] = {}, dady[N] = {};
